@@ -1,0 +1,158 @@
+"""Print a DerivedModel as a numba module: cse'd straight-line code.
+
+Each generated module holds two kernels with plain float-array signatures:
+
+``rhs(t, y, p, dydt)``            state derivative (δẋ, δẏ, θ̇, δẍ, δÿ, θ̈)
+``family_forces(y, p, out)``      out[f, k]: generalized force of family f on q_k
+
+and, beside them, ``generated/layout.py`` holds the index tables shared by all
+models.  Output is deterministic: orders come from explicit tuples, cse
+symbols from fixed prefixes, and the header has no timestamp.
+"""
+from __future__ import annotations
+
+import sympy as sp
+from sympy.printing.pycode import PythonCodePrinter
+
+from .energy import InverseCubeMinusOne
+from .pipeline import Q_SYMBOLS, DerivedModel
+from .symbols import (PARAMETERS, STATE_NAMES, STATE_SYMBOLS, STATE_UNITS,
+                      TETHER_LENGTHS, TETHER_REST, P)
+
+INDENT = "    "
+_SIN, _COS = sp.Symbol("sin_theta", real=True), sp.Symbol("cos_theta", real=True)
+_CODE_NAMES = {p.symbol: sp.Symbol(p.name, positive=True) for p in PARAMETERS}
+
+
+class NumbaPrinter(PythonCodePrinter):
+    """Python printer for scalar numba code (math module, no numpy)."""
+
+    def __init__(self):
+        super().__init__({"fully_qualified_modules": True, "standard": "python3"})
+
+    def _print_InverseCubeMinusOne(self, expr):
+        return f"math.expm1(-1.5*math.log1p({self._print(expr.args[0])}))"
+
+
+def _prepare(expr):
+    """Code names for parameters, named sin θ / cos θ."""
+    th = STATE_SYMBOLS[2]
+    e = sp.sympify(expr).xreplace(_CODE_NAMES)
+    return e.xreplace({sp.sin(th): _SIN, sp.cos(th): _COS})
+
+
+def _block(targets, exprs, prefix, indent, op="="):
+    """cse a group of expressions; return code lines assigning them to targets."""
+    printer = NumbaPrinter()
+    exprs = [_prepare(e) for e in exprs]
+    repl, reduced = sp.cse(exprs, symbols=sp.numbered_symbols(prefix), order="canonical")
+    lines = [f"{indent}{s} = {printer.doprint(v)}" for s, v in repl]
+    for tgt, e in zip(targets, reduced):
+        lines.append(f"{indent}{tgt} {op} {printer.doprint(e)}")
+    return lines
+
+
+def _unpack(indent) -> list:
+    lines = [f"{indent}{n} = y[{i}]" for i, n in enumerate(STATE_NAMES)]
+    lines += [f"{indent}{p.name} = p[{i}]" for i, p in enumerate(PARAMETERS)]
+    lines += [f"{indent}sin_theta = math.sin(theta)", f"{indent}cos_theta = math.cos(theta)"]
+    return lines
+
+
+def _tether_length_line(j: int, indent: str, defs) -> str:
+    lam = TETHER_LENGTHS[j]
+    return f"{indent}{lam} = {NumbaPrinter().doprint(_prepare(defs[lam]))}"
+
+
+def _gate(j: int) -> str:
+    return f"{TETHER_LENGTHS[j]} > {_CODE_NAMES[TETHER_REST[j]]}"
+
+
+def _sum_families(model: DerivedModel, tether):
+    fams = [f for f in model.families if f.tether == tether]
+    return tuple(sum(f.Q[k] for f in fams) for k in range(3)), fams
+
+
+def rhs_source(model: DerivedModel, length_defs) -> list:
+    i1, i2 = INDENT, INDENT * 2
+    out = ["@njit(cache=True)", "def rhs(t, y, p, dydt):",
+           f'{i1}"""State derivative dy/dt of model {model.name!r} (SI; layout in generated/layout.py)."""']
+    out += _unpack(i1)
+    qnames = [str(q) for q in Q_SYMBOLS]
+    drag, fams = _sum_families(model, None)
+    out.append(f"{i1}# air drag on the three bodies ({fams[0].equation})")
+    out += _block(qnames, drag, "d", i1)
+    for j in range(2):
+        tq, fams = _sum_families(model, j + 1)
+        names = ", ".join(f.name for f in fams)
+        out.append(_tether_length_line(j, i1, length_defs))
+        out.append(f"{i1}if {_gate(j)}:  # tether {j + 1} taut: {names}")
+        out += _block(qnames, tq, f"t{j + 1}_", i2, op="+=")
+    acc = [_prepare(e) for e in model.qdd]
+    out.append(f"{i1}# accelerations from M q'' + f(q, q') = Q (Lagrange, 3.26-3.30)")
+    out += [f"{i1}dydt[{k}] = {STATE_NAMES[k + 3]}" for k in range(3)]
+    out += _block([f"dydt[{k + 3}]" for k in range(3)], acc, "a", i1)
+    return out
+
+
+def family_forces_source(model: DerivedModel, length_defs) -> list:
+    i1, i2 = INDENT, INDENT * 2
+    out = ["@njit(cache=True)", "def family_forces(y, p, out):",
+           f'{i1}"""out[f, k] = generalized force of family FAMILIES[f] on q_k (N, N, N m)."""']
+    out += _unpack(i1)
+    out += [_tether_length_line(j, i1, length_defs) for j in range(2)]
+    out.append(f"{i1}out[:, :] = 0.0")
+    for f_idx, fam in enumerate(model.families):
+        targets = [f"out[{f_idx}, {k}]" for k in range(3)]
+        out.append(f"{i1}# {fam.name}: {fam.meaning} ({fam.equation})")
+        if fam.tether is None:
+            out += _block(targets, fam.Q, f"f{f_idx}_", i1)
+        else:
+            out.append(f"{i1}if {_gate(fam.tether - 1)}:")
+            out += _block(targets, fam.Q, f"f{f_idx}_", i2)
+    return out
+
+
+def header(model: DerivedModel) -> list:
+    return [
+        '"""GENERATED FILE - DO NOT EDIT.',
+        "",
+        f"Model {model.name!r}: {model.definition.description}.",
+        "Produced by `make derive` (python -m derive) from derive/; regenerate instead",
+        f"of editing.  sympy {sp.__version__}.  State, parameter and family orders are",
+        "listed in generated/layout.py.",
+        '"""',
+        "import math",
+        "",
+        "from numba import njit",
+        "",
+        f"MODEL = {model.name!r}",
+        f"FAMILIES = {tuple(f.name for f in model.families)!r}",
+    ]
+
+
+def module_source(model: DerivedModel, length_defs) -> str:
+    lines = header(model) + ["", ""] + rhs_source(model, length_defs)
+    lines += ["", ""] + family_forces_source(model, length_defs)
+    return "\n".join(lines) + "\n"
+
+
+def layout_source(families) -> str:
+    """generated/layout.py: the index -> symbol -> unit tables and index constants."""
+    w = max(len(n) for n in STATE_NAMES + tuple(p.name for p in PARAMETERS))
+    lines = ['"""GENERATED FILE - DO NOT EDIT.  Produced by `make derive` from derive/symbols.py.',
+             "", "State vector y (index, name, unit):"]
+    lines += [f"  {i:2d}  {n:<{w}}  {u}" for i, (n, u) in enumerate(zip(STATE_NAMES, STATE_UNITS))]
+    lines += ["", "Parameter vector p (index, name, unit, meaning):"]
+    lines += [f"  {i:2d}  {p.name:<{w}}  {p.unit:<8}  {p.meaning}" for i, p in enumerate(PARAMETERS)]
+    lines += ['"""', "", f"STATE = {STATE_NAMES!r}", f"STATE_UNITS = {STATE_UNITS!r}",
+              f"PARAMETERS = {tuple(p.name for p in PARAMETERS)!r}",
+              f"PARAMETER_UNITS = {tuple(p.unit for p in PARAMETERS)!r}",
+              f"FAMILIES = {tuple(families)!r}", ""]
+    lines += [f"Y_{n.upper()} = {i}" for i, n in enumerate(STATE_NAMES)]
+    lines += [""] + [f"P_{p.name.upper()} = {i}" for i, p in enumerate(PARAMETERS)]
+    return "\n".join(lines) + "\n"
+
+
+def module_filename(name: str) -> str:
+    return name.replace("-", "_") + ".py"
