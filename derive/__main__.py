@@ -32,6 +32,7 @@ def main(argv=None) -> int:
             "from . import layout", *(f"from . import {n}" for n in names), "",
             "MODELS = {", *(f"    {d.name!r}: {n}," for d, n in zip(DEFINITIONS, names)), "}", ""]
     (out / "__init__.py").write_text("\n".join(init))
+    (out / "dispatch.py").write_text(codegen.dispatch_source(DEFINITIONS))
     print(f"derive: {len(names)} models in {time.perf_counter() - t0:.1f} s")
     return 0
 

@@ -30,6 +30,9 @@ class NumbaPrinter(PythonCodePrinter):
     def __init__(self):
         super().__init__({"fully_qualified_modules": True, "standard": "python3"})
 
+    def _print_InverseSqrtMinusOne(self, expr):
+        return f"math.expm1(-0.5*math.log1p({self._print(expr.args[0])}))"
+
     def _print_InverseCubeMinusOne(self, expr):
         return f"math.expm1(-1.5*math.log1p({self._print(expr.args[0])}))"
 
@@ -113,6 +116,25 @@ def family_forces_source(model: DerivedModel, length_defs) -> list:
     return out
 
 
+def jacobi_source(model: DerivedModel, length_defs) -> list:
+    i1, i2 = INDENT, INDENT * 2
+    out = ["@njit(cache=True)", "def jacobi(y, p):",
+           f'{i1}"""Jacobi integral h = Σ q̇ ∂L/∂q̇ − L plus taut-tether spring energy [J].',
+           "",
+           f"{i1}Constant with drag and dampers off; otherwise dh/dt = power of drag and dampers.",
+           f'{i1}"""']
+    out += _unpack(i1)
+    out += _block(["h"], [model.jacobi], "e", i1)
+    for j in range(2):
+        pots = [f.potential for f in model.families if f.tether == j + 1 and f.potential is not None]
+        if pots:
+            out.append(_tether_length_line(j, i1, length_defs))
+            out.append(f"{i1}if {_gate(j)}:")
+            out += _block(["h"], [sum(pots)], f"u{j + 1}_", i2, op="+=")
+    out.append(f"{i1}return h")
+    return out
+
+
 def header(model: DerivedModel) -> list:
     return [
         '"""GENERATED FILE - DO NOT EDIT.',
@@ -134,6 +156,7 @@ def header(model: DerivedModel) -> list:
 def module_source(model: DerivedModel, length_defs) -> str:
     lines = header(model) + ["", ""] + rhs_source(model, length_defs)
     lines += ["", ""] + family_forces_source(model, length_defs)
+    lines += ["", ""] + jacobi_source(model, length_defs)
     return "\n".join(lines) + "\n"
 
 
@@ -156,3 +179,26 @@ def layout_source(families) -> str:
 
 def module_filename(name: str) -> str:
     return name.replace("-", "_") + ".py"
+
+
+def dispatch_source(definitions) -> str:
+    """generated/dispatch.py: one jitted entry point taking a model index.
+
+    Integrator loops call ``rhs(model, ...)`` with an integer model index, so
+    they are ordinary cacheable numba functions (no function arguments).
+    """
+    mods = [module_filename(d.name)[:-3] for d in definitions]
+    lines = ['"""GENERATED FILE - DO NOT EDIT.  Produced by `make derive` from derive/codegen.py."""',
+             "from numba import njit", "",
+             *(f"from . import {m}" for m in mods), "",
+             f"MODEL_NAMES = {tuple(d.name for d in definitions)!r}", ""]
+    for fn, args in (("rhs", "t, y, p, dydt"), ("family_forces", "y, p, out"), ("jacobi", "y, p")):
+        lines += ["", "@njit(cache=True)", f"def {fn}(model, {args}):",
+                  f'    """{fn} of model MODEL_NAMES[model]."""']
+        ret = "return " if fn == "jacobi" else ""
+        for i, m in enumerate(mods):
+            kw = "if" if i == 0 else "elif"
+            lines += [f"    {kw} model == {i}:", f"        {ret}{m}.{fn}({args})"]
+        if ret:
+            lines += ["    return 0.0"]
+    return "\n".join(lines) + "\n"

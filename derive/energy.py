@@ -57,6 +57,19 @@ class InverseSqrt(sp.Function):
         return (1 + u) ** sp.Rational(-1, 2)
 
 
+class InverseSqrtMinusOne(sp.Function):
+    """H(u) − 1 = (1 + u)^(-1/2) − 1, printed as expm1(−0.5 log1p(u)).
+
+    Used in the Jacobi integral so the huge constant −μ m/r0 drops out exactly.
+    """
+
+    def fdiff(self, argindex=1):
+        return -sp.Rational(1, 2) * (1 + InverseCubeMinusOne(self.args[0]))
+
+    def _eval_rewrite_as_Pow(self, u, **kwargs):
+        return (1 + u) ** sp.Rational(-1, 2) - 1
+
+
 def inverse_distance_exact(kin: Kinematics, i: int) -> sp.Expr:
     """1/|r_i| = H(u)/r0 exactly, u = β/r0² (no expansion; Eqs 3.21-3.22 for β)."""
     x, y = _offsets(kin, i)

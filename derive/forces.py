@@ -29,6 +29,7 @@ class ForceFamily:
     tether: int | None
     equation: str
     meaning: str
+    potential: object = None  # J, for conservative families (springs)
 
 
 def generalized_forces(kin: Kinematics, loads) -> tuple:
@@ -94,8 +95,14 @@ def spring_families(kin: Kinematics) -> tuple:
         F = _tether_unit(kin, j) * E * (gamma - 1)  # 3.35-3.36 (taut branch)
         Q = generalized_forces(kin, [(2, F), (end, -F)])
         fams.append(ForceFamily(f"spring{j + 1}", Q, j + 1, f"3.3{5 + j}-3.42",
-                                f"tension of tether {j + 1}"))
+                                f"tension of tether {j + 1}", spring_potential(j)))
     return tuple(fams)
+
+
+def spring_potential(j: int):
+    """½ (E_j / l_j0)(λ_j − l_j0)², the energy stored in taut tether j [J]."""
+    E = (P["E1"], P["E2"])[j]
+    return E / (2 * TETHER_REST[j]) * (TETHER_LENGTHS[j] - TETHER_REST[j]) ** 2
 
 
 def damper_families(kin: Kinematics) -> tuple:

@@ -12,7 +12,7 @@ from __future__ import annotations
 from . import printed
 from .energy import inverse_distance_binomial, inverse_distance_exact
 from .forces import (ForceFamily, damper_families, drag_families,
-                     objective_damper_families, spring_families)
+                     objective_damper_families, spring_families, spring_potential)
 from .kinematics import planar_kinematics
 from .pipeline import ModelDefinition
 
@@ -37,7 +37,8 @@ def objective_families(kin):
 def printed_families(kin):
     """Eqs 3.48-3.50 as printed (the kinematics are not used)."""
     return tuple(ForceFamily(n, printed.FAMILIES[n], printed.FAMILY_TETHER[n],
-                             "3.48-3.50", f"{n} as printed")
+                             "3.48-3.50", f"{n} as printed",
+                             spring_potential(int(n[-1]) - 1) if n.startswith("spring") else None)
                  for n in FAMILY_ORDER)
 
 

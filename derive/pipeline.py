@@ -12,11 +12,12 @@ from typing import Callable
 import sympy as sp
 from sympy.physics.mechanics import LagrangesMethod
 
-from .energy import kinetic_energy, potential_energy
+from .energy import (InverseSqrt, InverseSqrtMinusOne, kinetic_energy,
+                     potential_energy)
 from .forces import ForceFamily
 from .kinematics import Kinematics
-from .symbols import (ACCELERATION_SYMBOLS, COORDINATES, PARAMETERS, P, STATE_SYMBOLS,
-                      TETHER_LENGTHS, state_substitution)
+from .symbols import (ACCELERATION_SYMBOLS, COORDINATES, PARAMETERS, SPEEDS, P,
+                      STATE_SYMBOLS, TETHER_LENGTHS, state_substitution)
 
 
 @dataclass(frozen=True)
@@ -57,6 +58,7 @@ class DerivedModel:
     f: tuple
     families: tuple
     qdd: tuple
+    jacobi: object
 
     @property
     def name(self) -> str:
@@ -99,6 +101,26 @@ def truncate_inverse_r0(expr, order: int):
     return sp.expand(kept.subs(eps, 1 / P["r0"]))
 
 
+def jacobi_integral(kin: Kinematics, defn: ModelDefinition):
+    """h = Σ q̇_k ∂L/∂q̇_k − L of the model's (truncated) Lagrangian [J].
+
+    Truncation commutes with ∂/∂q (q does not involve r0), so the truncated
+    equations derive from V truncated to the same order; h is then their
+    exact first integral without drag and dampers.  Terms free of the state
+    (such as −μ m/r0) are dropped: they are constants of size 1e9 J.
+    """
+    T = kinetic_energy(kin)
+    V = potential_energy(kin, defn.inverse_distance)
+    V = V.replace(InverseSqrt, lambda u: 1 + InverseSqrtMinusOne(u))
+    h = sum(qd * sp.diff(T, qd) for qd in SPEEDS) - T
+    h = sp.expand(to_state_symbols(h)) + sp.expand(to_state_symbols(V))
+    if defn.truncation is not None:
+        h = truncate_inverse_r0(h, defn.truncation)
+    state = set(STATE_SYMBOLS)
+    return sp.Add(*[term for term in sp.Add.make_args(sp.expand(h))
+                    if term.free_symbols & state])
+
+
 def derive(defn: ModelDefinition) -> DerivedModel:
     """Run the pipeline for one model definition."""
     kin = defn.kinematics()
@@ -121,7 +143,8 @@ def derive(defn: ModelDefinition) -> DerivedModel:
     qdd = M.LUsolve(sp.Matrix(Q_SYMBOLS) - sp.Matrix(f))
     qdd = tuple(sp.expand(sp.simplify(e)) for e in qdd)
     _check_symbols(defn.name, lhs + f + qdd + tuple(q for fam in families for q in fam.Q))
-    return DerivedModel(defn, lhs, raw, M, f, families, qdd)
+    jacobi = jacobi_integral(kin, defn)
+    return DerivedModel(defn, lhs, raw, M, f, families, qdd, jacobi)
 
 
 def _check_symbols(name: str, exprs) -> None:

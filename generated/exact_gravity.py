@@ -216,3 +216,63 @@ def family_forces(y, p, out):
         out[6, 0] = -f6_1
         out[6, 1] = -c2*f6_3
         out[6, 2] = a*c2*f6_3*sin_theta - f6_0*f6_1
+
+
+@njit(cache=True)
+def jacobi(y, p):
+    """Jacobi integral h = Σ q̇ ∂L/∂q̇ − L plus taut-tether spring energy [J].
+
+    Constant with drag and dampers off; otherwise dh/dt = power of drag and dampers.
+    """
+    delta_x = y[0]
+    delta_y = y[1]
+    theta = y[2]
+    delta_x_dot = y[3]
+    delta_y_dot = y[4]
+    theta_dot = y[5]
+    m1 = p[0]
+    m2 = p[1]
+    m3 = p[2]
+    A1 = p[3]
+    A2 = p[4]
+    A3 = p[5]
+    a = p[6]
+    b = p[7]
+    l10 = p[8]
+    l20 = p[9]
+    E1 = p[10]
+    E2 = p[11]
+    c1 = p[12]
+    c2 = p[13]
+    CD = p[14]
+    r0 = p[15]
+    mu = p[16]
+    omega = p[17]
+    omega_earth = p[18]
+    rho1 = p[19]
+    rho2 = p[20]
+    rho3 = p[21]
+    sin_theta = math.sin(theta)
+    cos_theta = math.cos(theta)
+    e0 = omega**2
+    e1 = e0*m3
+    e2 = delta_x**2
+    e3 = (1/2)*e0*m3
+    e4 = delta_y**2
+    e5 = cos_theta**2
+    e6 = a**2
+    e7 = (1/2)*e0
+    e8 = e6*e7*m2
+    e9 = theta_dot**2
+    e10 = sin_theta**2
+    e11 = b**2
+    e12 = e11*e7*m1
+    e13 = r0**2
+    e14 = 2/r0
+    e15 = 1/e13
+    e16 = cos_theta*e14
+    e17 = e11*e15
+    e18 = e0*e13
+    e19 = e15*e6
+    h = a*cos_theta*e0*m2*r0 - b*cos_theta*e0*m1*r0 + (1/2)*delta_x_dot**2*m3 - delta_y*e1*r0 + (1/2)*delta_y_dot**2*m3 - e1*e13*math.expm1(-0.5*math.log1p(delta_y*e14 + e15*e2 + e15*e4)) + (1/2)*e10*e11*e9*m1 - e10*e12 + (1/2)*e10*e6*e9*m2 - e10*e8 + (1/2)*e11*e5*e9*m1 - e12*e5 - e18*m1*math.expm1(-0.5*math.log1p(b*e16 + e10*e17 + e17*e5)) - e18*m2*math.expm1(-0.5*math.log1p(-a*e16 + e10*e19 + e19*e5)) - e2*e3 - e3*e4 + (1/2)*e5*e6*e9*m2 - e5*e8
+    return h

@@ -236,3 +236,61 @@ def family_forces(y, p, out):
         out[6, 0] = f6_7
         out[6, 1] = f6_8
         out[6, 2] = -f6_0*f6_8 + f6_4*f6_7
+
+
+@njit(cache=True)
+def jacobi(y, p):
+    """Jacobi integral h = Σ q̇ ∂L/∂q̇ − L plus taut-tether spring energy [J].
+
+    Constant with drag and dampers off; otherwise dh/dt = power of drag and dampers.
+    """
+    delta_x = y[0]
+    delta_y = y[1]
+    theta = y[2]
+    delta_x_dot = y[3]
+    delta_y_dot = y[4]
+    theta_dot = y[5]
+    m1 = p[0]
+    m2 = p[1]
+    m3 = p[2]
+    A1 = p[3]
+    A2 = p[4]
+    A3 = p[5]
+    a = p[6]
+    b = p[7]
+    l10 = p[8]
+    l20 = p[9]
+    E1 = p[10]
+    E2 = p[11]
+    c1 = p[12]
+    c2 = p[13]
+    CD = p[14]
+    r0 = p[15]
+    mu = p[16]
+    omega = p[17]
+    omega_earth = p[18]
+    rho1 = p[19]
+    rho2 = p[20]
+    rho3 = p[21]
+    sin_theta = math.sin(theta)
+    cos_theta = math.cos(theta)
+    e0 = (1/2)*m3
+    e1 = (3/2)*omega**2
+    e2 = e1*m3
+    e3 = a**2*m2
+    e4 = cos_theta**2
+    e5 = e1*e4
+    e6 = (1/2)*theta_dot**2
+    e7 = e4*e6
+    e8 = sin_theta**2
+    e9 = e6*e8
+    e10 = b**2*m1
+    e11 = 1/r0
+    e12 = e11*e2
+    e13 = e1*e11
+    e14 = cos_theta**3*e13
+    e15 = a**3*m2
+    e16 = b**3*m1
+    e17 = cos_theta*e13*e8
+    h = -delta_x**2*delta_y*e12 + delta_x_dot**2*e0 - delta_y**3*e12 - delta_y**2*e2 + delta_y_dot**2*e0 - e10*e5 + e10*e7 + e10*e9 + e14*e15 - e14*e16 + e15*e17 - e16*e17 - e3*e5 + e3*e7 + e3*e9
+    return h

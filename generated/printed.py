@@ -222,3 +222,70 @@ def family_forces(y, p, out):
         out[6, 0] = -c2*(a*cos_theta*theta_dot + delta_x_dot - f6_0 - f6_1*omega)
         out[6, 1] = -c2*(f6_2*omega - f6_2*theta_dot + f6_3)
         out[6, 2] = a*c2*sin_theta*(f6_3 - f6_5*omega + f6_5*theta_dot) - c2*f6_1*(delta_x_dot - f6_0 + f6_4*omega - f6_4*theta_dot)
+
+
+@njit(cache=True)
+def jacobi(y, p):
+    """Jacobi integral h = Σ q̇ ∂L/∂q̇ − L plus taut-tether spring energy [J].
+
+    Constant with drag and dampers off; otherwise dh/dt = power of drag and dampers.
+    """
+    delta_x = y[0]
+    delta_y = y[1]
+    theta = y[2]
+    delta_x_dot = y[3]
+    delta_y_dot = y[4]
+    theta_dot = y[5]
+    m1 = p[0]
+    m2 = p[1]
+    m3 = p[2]
+    A1 = p[3]
+    A2 = p[4]
+    A3 = p[5]
+    a = p[6]
+    b = p[7]
+    l10 = p[8]
+    l20 = p[9]
+    E1 = p[10]
+    E2 = p[11]
+    c1 = p[12]
+    c2 = p[13]
+    CD = p[14]
+    r0 = p[15]
+    mu = p[16]
+    omega = p[17]
+    omega_earth = p[18]
+    rho1 = p[19]
+    rho2 = p[20]
+    rho3 = p[21]
+    sin_theta = math.sin(theta)
+    cos_theta = math.cos(theta)
+    e0 = delta_y**2
+    e1 = omega**2
+    e2 = (3/2)*e1
+    e3 = e2*m3
+    e4 = cos_theta**2
+    e5 = a**2
+    e6 = theta_dot**2
+    e7 = sin_theta**2
+    e8 = b**2
+    e9 = e4*m1
+    e10 = e1/r0**2
+    e11 = e10*m3
+    e12 = (3/8)*e11
+    e13 = 1/r0
+    e14 = e13*e3
+    e15 = delta_x**2
+    e16 = a**3
+    e17 = cos_theta**3
+    e18 = (3/8)*e10
+    e19 = cos_theta**4*e18
+    e20 = a**4*m2
+    e21 = e18*sin_theta**4
+    e22 = e13*e2
+    e23 = b**3*m1
+    e24 = b**4
+    e25 = e24*m1
+    e26 = (3/4)*e10*e7
+    h = (3/2)*cos_theta*e1*e13*e16*e7*m2 - cos_theta*e22*e23*e7 - delta_x**4*e12 + (1/2)*delta_x_dot**2*m3 - delta_y**4*e12 - delta_y**3*e14 - delta_y*e14*e15 + (1/2)*delta_y_dot**2*m3 - 3/4*e0*e11*e15 - e0*e3 + (3/2)*e1*e13*e16*e17*m2 - e17*e22*e23 - e19*e20 - e19*e25 - e2*e4*e5*m2 - e2*e8*e9 - e20*e21 - e20*e26*e4 - e21*e25 - e24*e26*e9 + (1/2)*e4*e5*e6*m2 + (1/2)*e4*e6*e8*m1 + (1/2)*e5*e6*e7*m2 + (1/2)*e6*e7*e8*m1
+    return h

@@ -1,0 +1,47 @@
+"""GENERATED FILE - DO NOT EDIT.  Produced by `make derive` from derive/codegen.py."""
+from numba import njit
+
+from . import derived
+from . import printed
+from . import exact_gravity
+from . import objective_damper
+
+MODEL_NAMES = ('derived', 'printed', 'exact-gravity', 'objective-damper')
+
+
+@njit(cache=True)
+def rhs(model, t, y, p, dydt):
+    """rhs of model MODEL_NAMES[model]."""
+    if model == 0:
+        derived.rhs(t, y, p, dydt)
+    elif model == 1:
+        printed.rhs(t, y, p, dydt)
+    elif model == 2:
+        exact_gravity.rhs(t, y, p, dydt)
+    elif model == 3:
+        objective_damper.rhs(t, y, p, dydt)
+
+@njit(cache=True)
+def family_forces(model, y, p, out):
+    """family_forces of model MODEL_NAMES[model]."""
+    if model == 0:
+        derived.family_forces(y, p, out)
+    elif model == 1:
+        printed.family_forces(y, p, out)
+    elif model == 2:
+        exact_gravity.family_forces(y, p, out)
+    elif model == 3:
+        objective_damper.family_forces(y, p, out)
+
+@njit(cache=True)
+def jacobi(model, y, p):
+    """jacobi of model MODEL_NAMES[model]."""
+    if model == 0:
+        return derived.jacobi(y, p)
+    elif model == 1:
+        return printed.jacobi(y, p)
+    elif model == 2:
+        return exact_gravity.jacobi(y, p)
+    elif model == 3:
+        return objective_damper.jacobi(y, p)
+    return 0.0
