@@ -12,9 +12,26 @@ from .pipeline import derive
 from .symbols import STATE_SYMBOLS, state_substitution
 
 
+def clear_numba_cache(root: Path) -> int:
+    """Delete numba's on-disk caches under root.
+
+    numba's cache=True revalidates a function against its own source file only:
+    tethersim/dynamics.py, which inlines generated kernels, would keep running
+    the old equations after a regeneration.
+    """
+    n = 0
+    for pattern in ("*.nbi", "*.nbc"):
+        for f in root.glob(f"**/__pycache__/{pattern}"):
+            if ".venv" not in f.parts:
+                f.unlink()
+                n += 1
+    return n
+
+
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
-    out = Path(argv[0]) if argv else Path(__file__).resolve().parent.parent / "generated"
+    repo = Path(__file__).resolve().parent.parent
+    out = Path(argv[0]) if argv else repo / "generated"
     out.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
     kin = planar_kinematics()
@@ -33,7 +50,9 @@ def main(argv=None) -> int:
             "MODELS = {", *(f"    {d.name!r}: {n}," for d, n in zip(DEFINITIONS, names)), "}", ""]
     (out / "__init__.py").write_text("\n".join(init))
     (out / "dispatch.py").write_text(codegen.dispatch_source(DEFINITIONS))
-    print(f"derive: {len(names)} models in {time.perf_counter() - t0:.1f} s")
+    cleared = clear_numba_cache(repo) if out.resolve() == repo / "generated" else 0
+    print(f"derive: {len(names)} models in {time.perf_counter() - t0:.1f} s; "
+          f"cleared {cleared} numba cache files")
     return 0
 
 

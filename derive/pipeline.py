@@ -6,7 +6,7 @@ record of plain sympy expressions in the state symbols, ready for codegen.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Callable
 
 import sympy as sp
@@ -14,7 +14,6 @@ from sympy.physics.mechanics import LagrangesMethod
 
 from .energy import (InverseSqrt, InverseSqrtMinusOne, kinetic_energy,
                      potential_energy)
-from .forces import ForceFamily
 from .kinematics import Kinematics
 from .symbols import (ACCELERATION_SYMBOLS, COORDINATES, PARAMETERS, SPEEDS, P,
                       STATE_SYMBOLS, TETHER_LENGTHS, state_substitution)
@@ -137,8 +136,8 @@ def derive(defn: ModelDefinition) -> DerivedModel:
     zero = {s: 0 for s in ACCELERATION_SYMBOLS}
     f = tuple(sp.expand(e.subs(zero)) for e in lhs)
     families = tuple(
-        ForceFamily(fam.name, tuple(to_state_symbols(q) for q in fam.Q), fam.tether,
-                    fam.equation, fam.meaning)
+        replace(fam, Q=tuple(to_state_symbols(q) for q in fam.Q),
+                potential=None if fam.potential is None else to_state_symbols(fam.potential))
         for fam in defn.families(kin))
     qdd = M.LUsolve(sp.Matrix(Q_SYMBOLS) - sp.Matrix(f))
     qdd = tuple(sp.expand(sp.simplify(e)) for e in qdd)

@@ -293,4 +293,10 @@ def jacobi(y, p):
     e16 = b**3*m1
     e17 = cos_theta*e13*e8
     h = -delta_x**2*delta_y*e12 + delta_x_dot**2*e0 - delta_y**3*e12 - delta_y**2*e2 + delta_y_dot**2*e0 - e10*e5 + e10*e7 + e10*e9 + e14*e15 - e14*e16 + e15*e17 - e16*e17 - e3*e5 + e3*e7 + e3*e9
+    lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
+    if lambda1 > l10:
+        h += (1/2)*E1*(-l10 + lambda1)**2/l10
+    lambda2 = math.sqrt((-a*cos_theta - delta_y)**2 + (-a*sin_theta - delta_x)**2)
+    if lambda2 > l20:
+        h += (1/2)*E2*(-l20 + lambda2)**2/l20
     return h

@@ -288,4 +288,10 @@ def jacobi(y, p):
     e25 = e24*m1
     e26 = (3/4)*e10*e7
     h = (3/2)*cos_theta*e1*e13*e16*e7*m2 - cos_theta*e22*e23*e7 - delta_x**4*e12 + (1/2)*delta_x_dot**2*m3 - delta_y**4*e12 - delta_y**3*e14 - delta_y*e14*e15 + (1/2)*delta_y_dot**2*m3 - 3/4*e0*e11*e15 - e0*e3 + (3/2)*e1*e13*e16*e17*m2 - e17*e22*e23 - e19*e20 - e19*e25 - e2*e4*e5*m2 - e2*e8*e9 - e20*e21 - e20*e26*e4 - e21*e25 - e24*e26*e9 + (1/2)*e4*e5*e6*m2 + (1/2)*e4*e6*e8*m1 + (1/2)*e5*e6*e7*m2 + (1/2)*e6*e7*e8*m1
+    lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
+    if lambda1 > l10:
+        h += (1/2)*E1*(-l10 + lambda1)**2/l10
+    lambda2 = math.sqrt((-a*cos_theta - delta_y)**2 + (-a*sin_theta - delta_x)**2)
+    if lambda2 > l20:
+        h += (1/2)*E2*(-l20 + lambda2)**2/l20
     return h

@@ -16,7 +16,7 @@ from .presets import load, load_preset
 from .result import SimResult
 from .satellite import Satellite, SatelliteError, parameter_vector
 from .satellite import parameters as _parameters
-from .simulate import RK4StepWarning, simulate
+from .simulation import RK4StepWarning, simulate
 
 __all__ = ["Satellite", "SatelliteError", "SimResult", "RK4StepWarning", "load", "load_preset",
            "simulate", "accelerations", "generalized_forces", "parameters", "MODELS",

@@ -25,7 +25,7 @@ def _model_names():
 
 def cmd_run(args) -> int:
     from .plots import plot_result
-    from .simulate import STEPS_PER_PERIOD, simulate
+    from .simulation import STEPS_PER_PERIOD, simulate
 
     sat = _sat(args.satellite)
     if args.faithful:

@@ -22,7 +22,7 @@ from scipy.special import ellipk
 
 from .constants import MU_EARTH
 from .satellite import Satellite
-from .simulate import simulate
+from .simulation import simulate
 
 
 @dataclass(frozen=True)
