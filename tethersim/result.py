@@ -134,7 +134,8 @@ class SimResult:
         m = self.metrics
         period = self.satellite.period
         tension = self.tether_tensions().max(axis=0)
-        peak = np.abs(self.forces.sum(axis=1)).max(axis=0)
+        peak = np.abs(self.forces).max(axis=0)  # (family, coordinate)
+        biggest = peak.argmax(axis=0)
         return {
             "label": self.label,
             "mean pitch [rad]": m.mean_pitch,
@@ -143,9 +144,12 @@ class SimResult:
             "settling time [h]": m.settling_time / 3600,
             "largest tension tether 1 [N]": float(tension[0]),
             "largest tension tether 2 [N]": float(tension[1]),
-            "largest |Q_dx| [N]": float(peak[0]),
-            "largest |Q_dy| [N]": float(peak[1]),
-            "largest |Q_theta| [N m]": float(peak[2]),
+            "largest force on dx [N]": float(peak[biggest[0], 0]),
+            "largest force on dx: family": FAMILIES[biggest[0]],
+            "largest force on dy [N]": float(peak[biggest[1], 1]),
+            "largest force on dy: family": FAMILIES[biggest[1]],
+            "largest torque on theta [N m]": float(peak[biggest[2], 2]),
+            "largest torque on theta: family": FAMILIES[biggest[2]],
             "tumbled": m.tumbled,
             "upside down": m.upside_down,
             "final delta_x [m]": float(self.x[-1]),
