@@ -138,9 +138,14 @@ def main(argv=None) -> int:
     from .satellite import SatelliteError
 
     args = build_parser().parse_args(argv)
+
+    def show(message, category, filename, lineno, file=None, line=None):
+        print(f"tethersim: warning: {category.__name__}: {message}", file=sys.stderr, flush=True)
+
     try:
         with warnings.catch_warnings():
-            warnings.simplefilter("default")
+            warnings.simplefilter("always")
+            warnings.showwarning = show
             return args.func(args)
     except (SatelliteError, ValueError) as exc:
         print(f"tethersim: error: {exc}", file=sys.stderr)

@@ -2,7 +2,8 @@
 
 mean pitch         mean of θ over the whole run (thesis p. 5-2)
 steady-state pitch mean of θ over the last ``ss_fraction`` of the run
-settling time      first time after which |θ − θ_ss| stays within ``tol`` (thesis
+settling time      first time after which |θ − θ_ss| stays within ``tol``; NaN
+                   unless the whole steady-state window is within ``tol`` (thesis
                    criterion: ±0.05 rad, within three days ≈ 50 orbits, p. 5-6, 5-18)
 tumbled            θ left the interval (−π, π): the boom went over the top
 upside down        steady-state pitch within π/4 of ±π (tip-mass pointing down)
@@ -32,7 +33,9 @@ class PitchMetrics:
 
 def wrap(angle):
     """Angle(s) wrapped to (−π, π]."""
-    return -np.remainder(-np.asarray(angle) + math.pi, 2 * math.pi) + math.pi
+    w = -np.remainder(-np.asarray(angle, dtype=float) + math.pi, 2 * math.pi) + math.pi
+    # rounding can land exactly on −π (e.g. one ulp above π): map it to +π
+    return np.where(w <= -math.pi, w + 2 * math.pi, w)
 
 
 def pitch_metrics(t, theta, tol: float = SETTLING_TOL,
@@ -49,13 +52,14 @@ def pitch_metrics(t, theta, tol: float = SETTLING_TOL,
     outside = np.nonzero(np.abs(theta - theta_ss) > tol)[0]
     if outside.size == 0:
         settling = float(t[0])
-    elif outside[-1] == t.size - 1:
+    elif np.any(tail[outside]):
+        # a run is settled only if its whole steady-state window stays in the band
         settling = math.nan
     else:
         settling = float(t[outside[-1] + 1])
     return PitchMetrics(
         mean_pitch=float(np.mean(theta)),
-        steady_state_pitch=float(wrap(theta_ss)),
+        steady_state_pitch=float(wrap(theta_ss)),  # 0-d array -> float
         settling_time=settling,
         tumbled=bool(np.any(np.abs(theta) >= math.pi)),
         upside_down=bool(abs(wrap(theta_ss)) > 3 * math.pi / 4),
