@@ -4,6 +4,8 @@ Each generated module holds two kernels with plain float-array signatures:
 
 ``rhs(t, y, p, dydt)``            state derivative (δẋ, δẏ, θ̇, δẍ, δÿ, θ̈)
 ``family_forces(y, p, out)``      out[f, k]: generalized force of family f on q_k
+``jacobi(y, p)``                  Jacobi integral + spring energy [J]
+``jacobian(t, y, p, J)``          ∂(dy/dt)/∂y, 6x6
 
 and, beside them, ``generated/layout.py`` holds the index tables shared by all
 models.  Output is deterministic: orders come from explicit tuples, cse
@@ -116,6 +118,57 @@ def family_forces_source(model: DerivedModel, length_defs) -> list:
     return out
 
 
+def _d_dy(exprs, length_defs):
+    """Rows of ∂expr/∂y (6 columns), with λ_j differentiated through Eqs 3.41-3.42.
+
+    The result is written back in terms of the λ symbols so the generated code
+    reuses the tether lengths computed for the taut/slack gate.
+    """
+    y = STATE_SYMBOLS
+    back = {v: k for k, v in length_defs.items()}
+    rows = []
+    for e in exprs:
+        full = sp.sympify(e).xreplace(length_defs)
+        rows.append([sp.sympify(full.diff(s)).xreplace(back) for s in y])
+    return rows
+
+
+def jacobian_source(model: DerivedModel, length_defs) -> list:
+    """J = ∂(dy/dt)/∂y (6x6), taut/slack branches as in rhs.
+
+    q̈ = M⁻¹(Q − f) is linear in Q, so ∂q̈/∂y = ∂q̈/∂y|_Q + Σ_k ∂q̈/∂Q_k ∂Q_k/∂y;
+    the ∂Q/∂y of each family block is accumulated inside its gate.
+    """
+    i1, i2 = INDENT, INDENT * 2
+    out = ["@njit(cache=True)", "def jacobian(t, y, p, J):",
+           f'{i1}"""J[i, j] = ∂(dy_i/dt)/∂y_j of model {model.name!r} (units of y_i/s per y_j)."""']
+    out += _unpack(i1)
+    dq = [[f"dQ{k}_{j}" for j in range(6)] for k in range(3)]
+    drag, _ = _sum_families(model, None)
+    rows = _d_dy(drag, length_defs)
+    out += _block([dq[k][j] for k in range(3) for j in range(6)],
+                  [rows[k][j] for k in range(3) for j in range(6)], "jd", i1)
+    for j in range(2):
+        tq, _ = _sum_families(model, j + 1)
+        rows = _d_dy(tq, length_defs)
+        out.append(_tether_length_line(j, i1, length_defs))
+        out.append(f"{i1}if {_gate(j)}:")
+        out += _block([dq[k][c] for k in range(3) for c in range(6)],
+                      [rows[k][c] for k in range(3) for c in range(6)], f"jt{j + 1}_", i2, op="+=")
+    out.append(f"{i1}J[:, :] = 0.0")
+    out += [f"{i1}J[{k}, {k + 3}] = 1.0" for k in range(3)]
+    exprs, targets = [], []
+    qsyms = sp.symbols("dQ0_0:6 dQ1_0:6 dQ2_0:6", real=True)
+    for k, acc in enumerate(model.qdd):
+        for c, ys in enumerate(STATE_SYMBOLS):
+            e = sp.diff(acc, ys) + sum(sp.diff(acc, Q_SYMBOLS[m]) * qsyms[6 * m + c]
+                                       for m in range(3))
+            exprs.append(e)
+            targets.append(f"J[{k + 3}, {c}]")
+    out += _block(targets, exprs, "ja", i1)
+    return out
+
+
 def jacobi_source(model: DerivedModel, length_defs) -> list:
     i1, i2 = INDENT, INDENT * 2
     out = ["@njit(cache=True)", "def jacobi(y, p):",
@@ -157,6 +210,7 @@ def module_source(model: DerivedModel, length_defs) -> str:
     lines = header(model) + ["", ""] + rhs_source(model, length_defs)
     lines += ["", ""] + family_forces_source(model, length_defs)
     lines += ["", ""] + jacobi_source(model, length_defs)
+    lines += ["", ""] + jacobian_source(model, length_defs)
     return "\n".join(lines) + "\n"
 
 
@@ -192,7 +246,7 @@ def dispatch_source(definitions) -> str:
              "from numba import njit", "",
              *(f"from . import {m}" for m in mods), "",
              f"MODEL_NAMES = {tuple(d.name for d in definitions)!r}", ""]
-    for fn, args in (("rhs", "t, y, p, dydt"), ("family_forces", "y, p, out"), ("jacobi", "y, p")):
+    for fn, args in (("rhs", "t, y, p, dydt"), ("family_forces", "y, p, out"), ("jacobi", "y, p"), ("jacobian", "t, y, p, J")):
         lines += ["", "@njit(cache=True)", f"def {fn}(model, {args}):",
                   f'    """{fn} of model MODEL_NAMES[model]."""']
         ret = "return " if fn == "jacobi" else ""

@@ -45,3 +45,15 @@ def jacobi(model, y, p):
     elif model == 3:
         return objective_damper.jacobi(y, p)
     return 0.0
+
+@njit(cache=True)
+def jacobian(model, t, y, p, J):
+    """jacobian of model MODEL_NAMES[model]."""
+    if model == 0:
+        derived.jacobian(t, y, p, J)
+    elif model == 1:
+        printed.jacobian(t, y, p, J)
+    elif model == 2:
+        exact_gravity.jacobian(t, y, p, J)
+    elif model == 3:
+        objective_damper.jacobian(t, y, p, J)
