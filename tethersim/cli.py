@@ -1,4 +1,4 @@
-"""Command line: ``tethersim run | validate | show``.  ``tethersim CMD --help`` for each."""
+"""Command line: ``tethersim run | validate | equilibrium | show``.  ``tethersim CMD --help`` for each."""
 from __future__ import annotations
 
 import argparse
@@ -89,6 +89,13 @@ def cmd_show(args) -> int:
     return 0
 
 
+def cmd_equilibrium(args) -> int:
+    from .equilibrium import find_equilibrium, format_equilibrium
+
+    print(format_equilibrium(find_equilibrium(_sat(args.satellite), model=args.model)))
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="tethersim",
@@ -127,6 +134,15 @@ def build_parser() -> argparse.ArgumentParser:
     val.add_argument("satellites", nargs="*", help=PRESET_HELP + " (default: all three presets)")
     val.add_argument("--periods", type=float, default=2.0, help="orbits to simulate (default 2)")
     val.set_defaults(func=cmd_validate)
+
+    eq = sub.add_parser("equilibrium", help="steady configuration, its modes and stability",
+                        description="Solve for the balloon trail and pitch where the "
+                                    "accelerations vanish; print which tethers are taut, the "
+                                    "linear modes and a predicted settling time.")
+    eq.add_argument("satellite", help=PRESET_HELP)
+    eq.add_argument("--model", choices=_model_names(), default=DEFAULT_MODEL,
+                    help=f"model variant (default {DEFAULT_MODEL})")
+    eq.set_defaults(func=cmd_equilibrium)
 
     show = sub.add_parser("show", help="print a preset's parameters with units")
     show.add_argument("satellite", help=PRESET_HELP)
