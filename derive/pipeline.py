@@ -85,10 +85,13 @@ def truncate_inverse_r0(expr, order: int):
 
     With μ = ω² r0³ the binomial-expanded Lagrange equations are a Laurent
     polynomial in r0: an O(r0) centrifugal-gravity balance that cancels, the
-    Hill terms O(1), first-order corrections O(1/r0) and remainders
-    O(1/r0²) ... The thesis's printed left-hand sides 3.28-3.30 are exactly the
-    terms up to O(1/r0) (order=1): the remainders are of the same order as the
-    binomial series' own truncation error, so keeping them is not consistent.
+    Hill terms O(1), corrections O(1/r0) and remainders O(1/r0²).  The thesis's
+    printed left-hand sides 3.28-3.30 are exactly the terms up to O(1/r0)
+    (order=1); this step reproduces them.  Caveat (docs/errata.md, N2): the
+    three-term binomial is itself incomplete at O(1/r0) in the δy and θ
+    equations (the exact potential gives +3 m3 ω² δy²/r0 where 3.29 has
+    −9/2), so those kept 1/r0 terms are not the true gravity terms; the
+    exact-gravity model has them right.  They are ~1e-5 of the Hill terms.
     """
     eps = sp.Dummy("eps", positive=True)
     e = sp.expand(sp.sympify(expr).subs(P["r0"], 1 / eps))
