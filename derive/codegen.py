@@ -188,14 +188,25 @@ def jacobi_source(model: DerivedModel, length_defs) -> list:
     return out
 
 
+def _index_tables() -> list:
+    """index -> symbol -> unit tables of y and p (the same in every generated file)."""
+    w = max(len(n) for n in STATE_NAMES + tuple(p.name for p in PARAMETERS))
+    lines = ["State vector y (index, name, unit):"]
+    lines += [f"  {i:2d}  {n:<{w}}  {u}" for i, (n, u) in enumerate(zip(STATE_NAMES, STATE_UNITS))]
+    lines += ["", "Parameter vector p (index, name, unit, meaning):"]
+    lines += [f"  {i:2d}  {p.name:<{w}}  {p.unit:<8}  {p.meaning}" for i, p in enumerate(PARAMETERS)]
+    return lines
+
+
 def header(model: DerivedModel) -> list:
     return [
         '"""GENERATED FILE - DO NOT EDIT.',
         "",
         f"Model {model.name!r}: {model.definition.description}.",
         "Produced by `make derive` (python -m derive) from derive/; regenerate instead",
-        f"of editing.  sympy {sp.__version__}.  State, parameter and family orders are",
-        "listed in generated/layout.py.",
+        f"of editing.  sympy {sp.__version__}.",
+        "",
+        *_index_tables(),
         '"""',
         "import math",
         "",
@@ -216,12 +227,8 @@ def module_source(model: DerivedModel, length_defs) -> str:
 
 def layout_source(families) -> str:
     """generated/layout.py: the index -> symbol -> unit tables and index constants."""
-    w = max(len(n) for n in STATE_NAMES + tuple(p.name for p in PARAMETERS))
     lines = ['"""GENERATED FILE - DO NOT EDIT.  Produced by `make derive` from derive/symbols.py.',
-             "", "State vector y (index, name, unit):"]
-    lines += [f"  {i:2d}  {n:<{w}}  {u}" for i, (n, u) in enumerate(zip(STATE_NAMES, STATE_UNITS))]
-    lines += ["", "Parameter vector p (index, name, unit, meaning):"]
-    lines += [f"  {i:2d}  {p.name:<{w}}  {p.unit:<8}  {p.meaning}" for i, p in enumerate(PARAMETERS)]
+             "", *_index_tables()]
     lines += ['"""', "", f"STATE = {STATE_NAMES!r}", f"STATE_UNITS = {STATE_UNITS!r}",
               f"PARAMETERS = {tuple(p.name for p in PARAMETERS)!r}",
               f"PARAMETER_UNITS = {tuple(p.unit for p in PARAMETERS)!r}",

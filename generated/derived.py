@@ -2,8 +2,39 @@
 
 Model 'derived': clean derivation of the thesis model, truncated to the order of Eqs 3.28-3.30.
 Produced by `make derive` (python -m derive) from derive/; regenerate instead
-of editing.  sympy 1.14.0.  State, parameter and family orders are
-listed in generated/layout.py.
+of editing.  sympy 1.14.0.
+
+State vector y (index, name, unit):
+   0  delta_x      m
+   1  delta_y      m
+   2  theta        rad
+   3  delta_x_dot  m/s
+   4  delta_y_dot  m/s
+   5  theta_dot    rad/s
+
+Parameter vector p (index, name, unit, meaning):
+   0  m1           kg        tip-mass
+   1  m2           kg        main bus
+   2  m3           kg        balloon
+   3  A1           m^2       frontal area of the tip-mass
+   4  A2           m^2       frontal area of the main bus
+   5  A3           m^2       frontal area of the balloon
+   6  a            m         COM to main bus distance
+   7  b            m         COM to tip-mass distance
+   8  l10          m         rest (taut) length of tether 1, tip-mass to balloon
+   9  l20          m         rest (taut) length of tether 2, bus to balloon
+  10  E1           N         tether 1 modulus x 1 mm^2 cross-section (N/mm^2 x mm^2)
+  11  E2           N         tether 2 modulus x 1 mm^2 cross-section (N/mm^2 x mm^2)
+  12  c1           N s/m     tether 1 damping coefficient
+  13  c2           N s/m     tether 2 damping coefficient
+  14  CD           1         drag coefficient (all bodies, thesis p. 3-9)
+  15  r0           m         orbit radius of the COM
+  16  mu           m^3/s^2   Earth's gravitational parameter
+  17  omega        rad/s     orbital rate sqrt(mu/r0^3), Eq 3.14
+  18  omega_earth  rad/s     Earth's rotation rate (atmosphere co-rotates)
+  19  rho1         kg/m^3    air density at the tip-mass
+  20  rho2         kg/m^3    air density at the main bus
+  21  rho3         kg/m^3    air density at the balloon
 """
 import math
 

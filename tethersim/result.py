@@ -115,6 +115,27 @@ class SimResult:
         return np.column_stack([s.E1 * np.maximum(lam1 / s.l10 - 1, 0),
                                 s.E2 * np.maximum(lam2 / s.l20 - 1, 0)])
 
+    def inertial_positions(self) -> dict:
+        """Inertial (GCE-plane) positions [m] of "tip-mass", "bus", "balloon": (n, 2) each.
+
+        Local axes in inertial coordinates follow Eq 3.34 with φ the propagated
+        COM's polar angle: local y = (cos φ, sin φ) (radial), local x =
+        (sin φ, −cos φ); a body at local offset (x, y − r0) from the COM sits at
+        R_COM + x x̂ + (y − r0) ŷ.
+        """
+        s = self.satellite
+        X, Y = self.orbit[:, 0], self.orbit[:, 1]
+        phi = np.arctan2(Y, X)
+        xhat = np.column_stack([np.sin(phi), -np.cos(phi)])
+        yhat = np.column_stack([np.cos(phi), np.sin(phi)])
+        com = np.column_stack([X, Y])
+        th = self.theta
+        offsets = {"tip-mass": (s.b * np.sin(th), s.b * np.cos(th)),
+                   "bus": (-s.a * np.sin(th), -s.a * np.cos(th)),
+                   "balloon": (self.x, self.y)}
+        return {k: com + ox[:, None] * xhat + oy[:, None] * yhat
+                for k, (ox, oy) in offsets.items()}
+
     def energy_budget(self) -> dict:
         """Jacobi integral h(t) [J], dissipated work W(t) [J] and residual h − h0 − W.
 
