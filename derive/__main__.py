@@ -12,26 +12,39 @@ from .pipeline import derive
 from .symbols import STATE_SYMBOLS, state_substitution
 
 
-def clear_numba_cache(root: Path) -> int:
-    """Delete numba's on-disk caches under root.
+CACHE_PRELUDE = r'''import hashlib
+import os
+from pathlib import Path
 
-    numba's cache=True revalidates a function against its own source file only:
-    tethersim/dynamics.py, which inlines generated kernels, would keep running
-    the old equations after a regeneration.
+import numba
+
+
+def _source_keyed_cache_dir() -> str:
+    """numba's on-disk cache folder, keyed on every kernel source file.
+
+    numba revalidates a cached function against its own file only, so a loop in
+    tethersim/ that inlines an edited generated kernel (or an edited tethersim
+    helper) would keep running the old code.  Hashing all of generated/ and
+    tethersim/ into the folder name makes any edit start a fresh cache.
     """
-    n = 0
-    for pattern in ("*.nbi", "*.nbc"):
-        for f in root.glob(f"**/__pycache__/{pattern}"):
-            if ".venv" not in f.parts:
-                f.unlink()
-                n += 1
-    return n
+    here = Path(__file__).resolve().parent
+    digest = hashlib.sha1()
+    for folder in (here, here.parent / "tethersim"):
+        for f in sorted(folder.rglob("*.py")):
+            digest.update(f.read_bytes())
+    base = os.environ.get("NUMBA_CACHE_DIR") or os.path.join(
+        os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"),
+        "tethersim", "numba")
+    return os.path.join(base, digest.hexdigest()[:16])
+
+
+numba.config.CACHE_DIR = _source_keyed_cache_dir()
+'''.splitlines()
 
 
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
-    repo = Path(__file__).resolve().parent.parent
-    out = Path(argv[0]) if argv else repo / "generated"
+    out = Path(argv[0]) if argv else Path(__file__).resolve().parent.parent / "generated"
     out.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
     kin = planar_kinematics()
@@ -46,13 +59,12 @@ def main(argv=None) -> int:
         print(f"  {defn.name:<17} -> {out.name}/{fname}")
     (out / "layout.py").write_text(codegen.layout_source(FAMILY_ORDER))
     init = ['"""GENERATED FILE - DO NOT EDIT.  Numba kernels of every model variant."""',
-            "from . import layout", *(f"from . import {n}" for n in names), "",
+            *CACHE_PRELUDE,
+            "from . import layout  # noqa: E402", *(f"from . import {n}  # noqa: E402" for n in names), "",
             "MODELS = {", *(f"    {d.name!r}: {n}," for d, n in zip(DEFINITIONS, names)), "}", ""]
     (out / "__init__.py").write_text("\n".join(init))
     (out / "dispatch.py").write_text(codegen.dispatch_source(DEFINITIONS))
-    cleared = clear_numba_cache(repo) if out.resolve() == repo / "generated" else 0
-    print(f"derive: {len(names)} models in {time.perf_counter() - t0:.1f} s; "
-          f"cleared {cleared} numba cache files")
+    print(f"derive: {len(names)} models in {time.perf_counter() - t0:.1f} s")
     return 0
 
 

@@ -80,7 +80,7 @@ def _sum_families(model: DerivedModel, tether):
 
 def rhs_source(model: DerivedModel, length_defs) -> list:
     i1, i2 = INDENT, INDENT * 2
-    out = ["@njit(cache=True)", "def rhs(t, y, p, dydt):",
+    out = ["@njit(cache=True, inline=\"always\")", "def rhs(t, y, p, dydt):",
            f'{i1}"""State derivative dy/dt of model {model.name!r} (SI; layout in generated/layout.py)."""']
     out += _unpack(i1)
     qnames = [str(q) for q in Q_SYMBOLS]

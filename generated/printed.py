@@ -44,7 +44,7 @@ MODEL = 'printed'
 FAMILIES = ('drag1', 'drag2', 'drag3', 'spring1', 'spring2', 'damper1', 'damper2')
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def rhs(t, y, p, dydt):
     """State derivative dy/dt of model 'printed' (SI; layout in generated/layout.py)."""
     delta_x = y[0]

@@ -47,10 +47,12 @@ def derivative(cfg, t, y, p, pw, dydt):
     if cfg[CFG_PER_BODY] == 1:
         body_densities(y, p, pw)
         par = pw
-    dispatch.rhs(cfg[CFG_MODEL], t, y[:N_ATTITUDE], par, dydt[:N_ATTITUDE])
+    # the generated rhs reads y[0:6] and writes dydt[0:6] only: passing the whole
+    # arrays avoids building two slice views per call (~10 % of an RK4 run)
+    dispatch.rhs(cfg[CFG_MODEL], t, y, par, dydt)
     X, Y = y[6], y[7]
-    r = math.hypot(X, Y)
-    k = -p[P_MU] / (r * r * r)
+    r2 = X * X + Y * Y  # hypot's overflow guard is not needed at orbit scale
+    k = -p[P_MU] / (r2 * math.sqrt(r2))
     dydt[6] = y[8]
     dydt[7] = y[9]
     dydt[8] = k * X
