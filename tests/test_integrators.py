@@ -145,3 +145,20 @@ def test_interrupted_run_keeps_every_finished_step(sat, monkeypatch):
     n = part.t.size
     assert 1 < n < full.t.size
     assert np.array_equal(part.states, full.states[:n])
+
+
+def test_nonfinite_start_returns_at_once_instead_of_hanging(sat):
+    """A NaN derivative at t = 0 must end the run with a status, not loop forever."""
+    from tethersim.dynamics import initial_state
+    from tethersim.integrators.dop853 import STATUS_NONFINITE, dop853_run
+    from tethersim.satellite import parameter_vector
+
+    p = parameter_vector(sat)
+    p[5] = np.nan  # A3: the Satellite record refuses this, the kernel must still stop
+    y = initial_state(sat.initial, sat.r0, sat.r0 * sat.omega)
+    out_t = np.array([100.0])
+    out_y = np.empty((1, 10))
+    t, h, i_out, status = dop853_run(np.zeros(2, np.int64), 0.0, 100.0, y, 0.0, p, p.copy(),
+                                     1e-10, 1e-12, True, out_t, out_y, 0, 1000,
+                                     np.zeros(5, np.int64))
+    assert status == STATUS_NONFINITE and t == 0.0

@@ -32,21 +32,26 @@ def cmd_run(args) -> int:
         method, locate = "rk4", False
     else:
         method, locate = args.method, (True if args.locate_switches else None)
+    out = Path(args.out)
+    try:  # before the run, so a bad folder costs nothing
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ValueError(f"--out {args.out}: cannot create the output folder: {exc.strerror}") from None
     steps = args.steps
     if method == "rk4" and steps is None:
         steps = max(1, round(STEPS_PER_PERIOD * args.periods))
     res = simulate(sat, periods=args.periods, steps=steps, method=method, model=args.model,
                    rtol=args.rtol, locate_switches=locate, check=not args.no_check,
                    progress=None if not args.quiet else False)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
     res.to_csv(out / "timeseries.csv")
     res.to_netcdf(out / "timeseries.nc")
     written = [out / "timeseries.csv", out / "timeseries.nc"]
     if not args.no_plots:
         written += plot_result(res, out)
     summary = res.summary()
-    (out / "summary.json").write_text(json.dumps(summary, indent=2, default=str) + "\n")
+    strict = {k: (None if isinstance(v, float) and not math.isfinite(v) else v)
+              for k, v in summary.items()}  # NaN is not JSON: null means "never settled"
+    (out / "summary.json").write_text(json.dumps(strict, indent=2, default=str) + "\n")
     written.append(out / "summary.json")
     if method == "rk4":
         print(f"step size: {res.step:.4g} s ({res.step:.2f} sec/step), "
@@ -163,7 +168,7 @@ def main(argv=None) -> int:
             warnings.simplefilter("always")
             warnings.showwarning = show
             return args.func(args)
-    except (SatelliteError, ValueError) as exc:
+    except (SatelliteError, ValueError, OSError) as exc:
         print(f"tethersim: error: {exc}", file=sys.stderr)
         return 2
 

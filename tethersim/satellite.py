@@ -100,6 +100,16 @@ class Satellite:
         if self.density_mode not in DENSITY_MODES:
             raise SatelliteError(f"{self._where()}density = {self.density_mode!r}: "
                                  f"allowed values {DENSITY_MODES}")
+        if self.density_mode == "per-body":
+            # every body must stay inside the atmosphere model: allow the boom and
+            # the balloon at up to twice the longer tether (or its start) from the COM
+            reach = max(self.a, self.b) + 2 * max(self.l10, self.l20, math.hypot(*init[:2]))
+            lo, hi = atmosphere.H_MIN + reach, atmosphere.H_MAX - reach
+            if not lo <= self.altitude <= hi:
+                raise SatelliteError(
+                    f"{self._where()}altitude = {self.altitude / 1e3:g} km with density = "
+                    f"'per-body': allowed range {lo / 1e3:.3f}-{hi / 1e3:.3f} km, so that every "
+                    f"body (within {reach:.4g} m of the COM) stays inside 0-1000 km")
 
     def _where(self) -> str:
         return f"{self.source}: " if self.source else ""

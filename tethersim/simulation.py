@@ -88,9 +88,12 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
     atol = _check_positive("atol", atol)
     if rtol < 1e-14:
         raise ValueError(f"rtol = {rtol:g}: allowed range >= 1e-14 (double precision)")
-    n_out = samples if samples is not None else steps
-    n_out = _check_positive("samples", n_out if n_out is not None
-                            else max(2, round(SAMPLES_PER_PERIOD * periods)), integer=True)
+    if samples is not None:
+        n_out = _check_positive("samples", samples, integer=True)
+    elif steps is not None:
+        n_out = _check_positive("steps", steps, integer=True)
+    else:
+        n_out = max(2, round(SAMPLES_PER_PERIOD * periods))
     locate = True if locate_switches is None else bool(locate_switches)
     run = _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress)
     if check and run.status == "ok":

@@ -78,9 +78,14 @@ def dop853_run(cfg, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y, i_
     t = t0
     derivative(cfg, t, y, p, pw, f)
     counters[0] += 1
+    for i in range(n):
+        if not math.isfinite(f[i]):
+            return t, h, i_out, STATUS_NONFINITE
     if h <= 0.0:
         h = initial_step(cfg, t, y, f, p, pw, rtol, atol, t_end)
         counters[0] += 1
+    if not math.isfinite(h):
+        return t, h, i_out, STATUS_NONFINITE
     steps = 0
     while t < t_end:
         if steps >= max_steps:
@@ -89,12 +94,14 @@ def dop853_run(cfg, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y, i_
         min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
         rejected = False
         while True:
-            if h < min_step:
+            if not (h >= min_step):  # written so that a NaN step also stops
                 return t, h, i_out, STATUS_STEP_TOO_SMALL
             h_try = min(h, t_end - t)
             dop853_step(cfg, t, y, f, h_try, p, pw, K, ys, y_new)
             counters[0] += 12
             err = dop853_error_norm(K, h_try, y, y_new, rtol, atol)
+            if not math.isfinite(err):
+                err = 1e10  # a NaN/inf stage: reject and shrink the step (MIN_FACTOR)
             if err < 1.0:
                 factor = MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * err ** ERROR_EXPONENT)
                 if rejected:
