@@ -1,0 +1,745 @@
+"""Speed figures of tethersim (`make bench`): `.venv/bin/python bench/run.py [--quick]`.
+
+Every figure is the median of repeats taken after a warm-up (compilation,
+caches); ratios are computed from figures measured in this same run, with the
+two sides of a ratio interleaved (A B A B ...).  The C reference is generated
+from the same derivation at run time (bench/cref.py -> bench/_build/) and built
+with gcc -O3.  Results go to stdout (table at the end) and bench/results.json.
+
+  1. one call of the generated 6-state RHS: numba (in an @njit loop) vs C (in a
+     C loop) vs sympy.lambdify + numpy and PyDy (called from Python)
+  2. RK4, 50 periods in 10,000 steps, 10-state: numba rk4_run vs C
+  3. DOP853 rtol 1e-10 atol 1e-12, 50 periods: numba dop853_run vs C port vs
+     scipy solve_ivp(DOP853) driving the compiled RHS through a Python wrapper
+  4. sympy.lambdify + solve_ivp and PyDy + solve_ivp, same model and tolerance
+  5. `python -m derive <tmpdir>` wall time
+  6. second `tethersim run satI --periods 50` wall time (numba caches warm)
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import platform
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+REPO = HERE.parent
+for path in (str(HERE), str(REPO)):
+    if path not in sys.path:
+        sys.path.insert(0, path)
+
+import numpy as np  # noqa: E402
+
+from timing import clock, interleave, median, spread, wall  # noqa: E402
+
+RTOL, ATOL = 1e-10, 1e-12
+PERIODS = 50
+RK4_STEPS = 10_000
+SAMPLES_PER_PERIOD = 200  # the CLI's adaptive output grid
+
+
+def log(msg=""):
+    print(msg, flush=True)
+
+
+class Report:
+    """Figures, targets and sanity checks, printed as a table and saved as JSON."""
+
+    def __init__(self):
+        self.figures = {}
+        self.targets = []
+        self.checks = []
+        self.notes = []
+
+    def fig(self, key, label, value, unit, samples=None, note=""):
+        d = {"label": label, "value": value, "unit": unit}
+        if samples is not None:
+            d["n"] = len(samples)
+            d["spread"] = spread(samples)
+            d["samples"] = [float(s) for s in samples]
+        if note:
+            d["note"] = note
+        self.figures[key] = d
+        shown = _fmt(value, unit)
+        extra = f"  (n={len(samples)}, ±{100 * d['spread']:.0f}%)" if samples is not None and \
+            len(samples) >= 4 else (f"  (n={len(samples)})" if samples is not None else "")
+        log(f"    {label:<62} {shown:>14}{extra}")
+        return value
+
+    def target(self, key, label, value, op, limit, unit="x", note=""):
+        if op == "info":
+            ok = None
+        elif value is None or (isinstance(value, float) and not math.isfinite(value)):
+            ok = None
+        else:
+            ok = value <= limit if op == "<=" else value >= limit if op == ">=" else value < limit
+        self.targets.append({"key": key, "label": label, "value": value, "op": op,
+                             "limit": limit, "unit": unit,
+                             "status": "info" if op == "info" else
+                             "SKIP" if ok is None else ("PASS" if ok else "MISS"),
+                             "note": note})
+        return ok
+
+    def check(self, label, ok, detail=""):
+        self.checks.append({"label": label, "ok": bool(ok), "detail": detail})
+        log(f"    check: {label}: {'ok' if ok else 'FAILED'}{'  ' + detail if detail else ''}")
+
+
+def _fmt(v, unit):
+    if v is None:
+        return "-"
+    if unit == "s":
+        if v < 1e-6:
+            return f"{v * 1e9:.1f} ns"
+        if v < 1e-3:
+            return f"{v * 1e6:.2f} µs"
+        if v < 1:
+            return f"{v * 1e3:.2f} ms"
+        return f"{v:.2f} s"
+    if unit == "x":
+        return f"{v:.2f}x" if v < 100 else f"{v:.0f}x"
+    if unit == "count":
+        return f"{int(v)}"
+    return f"{v:.4g} {unit}"
+
+
+# --------------------------------------------------------------------------- setup
+def load_satellite():
+    """The SatI preset; the /tmp/t1.py satellite if presets are not available."""
+    try:
+        from tethersim.presets import load_preset
+        return load_preset("satI"), "preset satI"
+    except Exception as exc:  # noqa: BLE001
+        from tethersim.satellite import Satellite
+        sat = Satellite("t", m1=10, m2=105, m3=1, A1=0.25, A2=1.0, A3=11.4, a=1.0, b=10.5,
+                        l10=6, l20=6, E1=0.004, E2=0.042, c1=0.01, c2=0.01, altitude=200e3,
+                        initial=(28.0, 0, math.pi / 6, 0, 0, 0))
+        return sat, f"fallback satellite (presets unavailable: {exc})"
+
+
+def setup(rep: Report):
+    from derive.kinematics import planar_kinematics
+    from derive.models import BY_NAME
+    from derive.pipeline import derive, to_state_symbols
+
+    import cref
+    from tethersim.dynamics import initial_state
+    from tethersim.satellite import parameter_vector
+
+    sat, what = load_satellite()
+    log(f"satellite: {sat.name} ({what}); period {sat.period:.1f} s")
+    t0 = clock()
+    model = derive(BY_NAME["derived"])
+    length_defs = {lam: to_state_symbols(d)
+                   for lam, d in planar_kinematics().tether_length_defs.items()}
+    t_derive = clock() - t0
+    t0 = clock()
+    src, info = cref.c_source(model, length_defs)
+    t_src = clock() - t0
+    current = cref.generated_is_current(model, length_defs, REPO / "generated" / "derived.py")
+    t0 = clock()
+    lib_o3 = cref.CRef(cref.build(src, ("-O3",), "O3"))
+    lib_nat = cref.CRef(cref.build(src, ("-O3", "-march=native"), "native"))
+    t_gcc = clock() - t0
+    log(f"derivation of 'derived' {t_derive:.1f} s, C source {t_src:.1f} s "
+        f"({info['cse_temporaries']} cse temporaries, same cse as derive.codegen), "
+        f"gcc {t_gcc:.1f} s -> {lib_o3.path.relative_to(REPO)}")
+    rep.check("generated/derived.py rhs is what derive/codegen.py prints now", current,
+              "" if current else "generated/ is stale: numba and C kernels differ; run make derive")
+    p = parameter_vector(sat)
+    y0 = initial_state(sat.initial, sat.r0, sat.r0 * sat.omega)
+    cfg = np.zeros(2, dtype=np.int64)  # model 'derived', uniform density
+    return dict(sat=sat, model=model, length_defs=length_defs, c=lib_o3, c_native=lib_nat,
+                p=p, y0=y0, cfg=cfg, setup_s={"derive": t_derive, "c_source": t_src,
+                                              "gcc": t_gcc})
+
+
+def validate_rhs(rep: Report, S, lamb, pydy_f):
+    """The kernels being compared compute the same numbers (incl. slack tethers)."""
+    from generated.derived import rhs
+    rng = np.random.default_rng(1)
+    p, y0 = S["p"], S["y0"]
+    err_c, err_l, err_py, slack = 0.0, 0.0, 0.0, 0
+    for _ in range(40):
+        y = y0[:6] + rng.normal(size=6) * np.array([8.0, 3.0, 0.6, 0.05, 0.05, 1e-3])
+        d = np.empty(6)
+        rhs(0.0, y, p, d)
+        scale = np.abs(d[3:]).max()
+        err_c = max(err_c, np.abs(S["c"].rhs6(y, p)[3:] - d[3:]).max() / scale)
+        err_l = max(err_l, np.abs(np.array(lamb(*y.tolist(), *p.tolist()), float)[3:]
+                                  - d[3:]).max() / scale)
+        g = _tether_margins(y, p)
+        if pydy_f is None:
+            pass
+        elif (g > 0).all():
+            err_py = max(err_py, np.abs(pydy_f(y, 0.0, p)[3:] - d[3:]).max() / scale)
+        else:
+            slack += 1
+    rep.check("C rhs == numba rhs (40 random states)", err_c < 1e-12, f"max rel diff {err_c:.1e}")
+    rep.check("lambdify rhs == numba rhs (40 random states)", err_l < 1e-12,
+              f"max rel diff {err_l:.1e}")
+    if pydy_f is not None:
+        rep.check("PyDy rhs == numba rhs (taut states)", err_py < 1e-12,
+                  f"max rel diff {err_py:.1e}; {slack} of 40 states had a slack tether")
+
+
+def _tether_margins(y, p):
+    from tethersim.dynamics import tether_margins
+    g = np.empty(2)
+    tether_margins(np.ascontiguousarray(y, dtype=float), p, g)
+    return g
+
+
+# --------------------------------------------------------------------------- 1
+def bench_rhs(rep: Report, S, q, lamb, pydy_f, pydy_gen):
+    import nbloops
+    from generated.derived import rhs
+    log("\n[1] one call of the generated 6-state RHS (generated.derived.rhs)")
+    p, y6 = S["p"], S["y0"][:6].copy()
+    y10 = S["y0"].copy()
+    n, eps = q["rhs_calls"], 1e-6
+    cfg, pw = S["cfg"], S["p"].copy()
+    accs = {}
+
+    def loop(name, fn, y):
+        def timer():
+            yy = y.copy()
+            t0 = clock()
+            accs[name] = fn(yy)
+            return (clock() - t0) / n
+        return timer
+
+    res = interleave({
+        "numba": loop("numba", lambda yy: nbloops.rhs6_loop(yy, p, n, eps), y6),
+        "c": loop("c", lambda yy: S["c"].rhs6_loop(yy, p, n, eps), y6),
+        "c_native": loop("c_native", lambda yy: S["c_native"].rhs6_loop(yy, p, n, eps), y6),
+        "numba_deriv10": loop("numba_deriv10",
+                              lambda yy: nbloops.derivative_loop(cfg, yy, p, pw, n, eps), y10),
+        "c_deriv10": loop("c_deriv10", lambda yy: S["c"].derivative_loop(yy, p, n, eps), y10),
+        "numba_deriv10_fixed": loop("numba_deriv10_fixed",
+                                    lambda yy: nbloops.derivative_fixed_loop(yy, p, n, eps), y10),
+    }, q["fast_repeats"])
+    rel = abs(accs["numba"] - accs["c"]) / abs(accs["c"])
+    rep.check("numba and C loops compute the same trajectory", rel < 1e-9,
+              f"checksum rel diff {rel:.1e}")
+    nb = rep.fig("rhs.numba", f"numba rhs, per call in an @njit loop ({n} calls)",
+                 median(res["numba"]), "s", res["numba"])
+    c = rep.fig("rhs.c", "C rhs (gcc -O3), per call in a C loop", median(res["c"]), "s", res["c"])
+    cn = rep.fig("rhs.c_native", "C rhs (gcc -O3 -march=native), per call",
+                 median(res["c_native"]), "s", res["c_native"])
+    nb10 = rep.fig("rhs.numba_deriv10", "numba tethersim.dynamics.derivative (10-state, dispatch)",
+                   median(res["numba_deriv10"]), "s", res["numba_deriv10"])
+    rep.fig("rhs.numba_deriv10_fixed", "  diagnostic: same, model fixed at compile time "
+            "(no dispatch)", median(res["numba_deriv10_fixed"]), "s", res["numba_deriv10_fixed"])
+    c10 = rep.fig("rhs.c_deriv10", "C derivative (10-state), gcc -O3",
+                  median(res["c_deriv10"]), "s", res["c_deriv10"])
+
+    # called from Python, one call at a time
+    yl, pl = y6.tolist(), p.tolist()
+    d = np.empty(6)
+    n_l, n_py, n_nb = q["lambdify_calls"], q["pydy_calls"], q["pycall_calls"]
+
+    def per_call(fn, m):
+        def timer():
+            t0 = clock()
+            for _ in range(m):
+                fn()
+            return (clock() - t0) / m
+        return timer
+
+    timers = {"lambdify": per_call(lambda: lamb(*yl, *pl), n_l),
+              "numba_py": per_call(lambda: rhs(0.0, y6, p, d), n_nb)}
+    if pydy_f is not None:
+        timers["pydy"] = per_call(lambda: pydy_f(y6, 0.0, p), n_py)
+    res2 = interleave(timers, q["fast_repeats"])
+    lam = rep.fig("rhs.lambdify", "sympy.lambdify(numpy) rhs, per call from Python",
+                  median(res2["lambdify"]), "s", res2["lambdify"])
+    nbp = rep.fig("rhs.numba_pycall", "numba rhs called from Python (dispatch overhead incl.)",
+                  median(res2["numba_py"]), "s", res2["numba_py"])
+    r1 = rep.fig("rhs.ratio_numba_c", "ratio numba / C -O3", nb / c, "x")
+    rep.fig("rhs.ratio_numba_c_native", "ratio numba / C -O3 -march=native", nb / cn, "x")
+    rep.fig("rhs.ratio_deriv10_numba_c", "ratio numba / C, 10-state derivative", nb10 / c10, "x")
+    rep.fig("rhs.ratio_lambdify_numba", "ratio lambdify / numba (in-loop)", lam / nb, "x")
+    rep.target("T1", "1. RHS call: numba <= 2x C (gcc -O3)", r1, "<=", 2.0)
+    if pydy_f is None:
+        return
+    py = rep.fig("rhs.pydy", f"PyDy generate_ode_function ({pydy_gen}), per call from Python",
+                 median(res2["pydy"]), "s", res2["pydy"])
+    rp = rep.fig("rhs.ratio_pydy_numba", "ratio PyDy / numba (in-loop)", py / nb, "x")
+    rp2 = rep.fig("rhs.ratio_pydy_numba_pycall", "ratio PyDy / numba (both called from Python)",
+                  py / nbp, "x")
+    rep.target("T4c", "4. RHS call: PyDy / numba (report only)", rp, "info", 0,
+               note=f"{rp2:.1f}x when both are called from Python")
+    return {"numba_in_loop": nb}
+
+
+# --------------------------------------------------------------------------- 2
+def bench_rk4(rep: Report, S, q):
+    from tethersim.integrators.rk4 import rk4_run
+    log(f"\n[2] RK4, {PERIODS} periods in {RK4_STEPS} steps, 10-state (attitude + orbit)")
+    sat, p, y0, cfg = S["sat"], S["p"], S["y0"], S["cfg"]
+    pw = p.copy()
+    N = RK4_STEPS
+    h = PERIODS * sat.period / N
+    bufs = {k: (np.empty(N), np.empty((N, 10))) for k in ("numba", "c", "c_native")}
+    finals = {}
+
+    def timer(name, fn):
+        out_t, out_y = bufs[name]
+
+        def t():
+            y = y0.copy()
+            t0 = clock()
+            r = fn(y, out_t, out_y)
+            dt = clock() - t0
+            finals[name] = (y, r)
+            return dt
+        return t
+
+    res = interleave({
+        "numba": timer("numba", lambda y, ot, oy: rk4_run(cfg, 0.0, y, h, N, 1, p, pw, False,
+                                                           ot, oy, 0)),
+        "c": timer("c", lambda y, ot, oy: S["c"].rk4_run(0.0, y, h, N, 1, p, ot, oy, 0)),
+        "c_native": timer("c_native", lambda y, ot, oy: S["c_native"].rk4_run(
+            0.0, y, h, N, 1, p, ot, oy, 0)),
+    }, q["fast_repeats"])
+    yn, rn = finals["numba"]
+    yc, rc = finals["c"]
+    rel = float(np.max(np.abs(yn - yc) / (np.abs(yc) + 1e-300)))
+    same_out = float(np.max(np.abs(bufs["numba"][1] - bufs["c"][1])
+                            / (np.abs(bufs["c"][1]).max(axis=0) + 1e-300)))
+    rep.check("RK4 numba and C: same status/rows and same trajectory",
+              rn[0] == rc[0] and rn[2] == rc[2] == 0 and same_out < 1e-9,
+              f"rows {rn[0]}/{rc[0]}, final state max rel diff {rel:.1e}, "
+              f"output max diff / range {same_out:.1e}")
+    nb = rep.fig("rk4.numba", "numba rk4_run (whole loop compiled)", median(res["numba"]), "s",
+                 res["numba"])
+    c = rep.fig("rk4.c", "C RK4 (gcc -O3), same cse'd RHS", median(res["c"]), "s", res["c"])
+    cn = rep.fig("rk4.c_native", "C RK4 (gcc -O3 -march=native)", median(res["c_native"]), "s",
+                 res["c_native"])
+    rep.fig("rk4.numba_per_eval", "numba: time per RHS evaluation (4 per step)", nb / (4 * N), "s")
+    rep.fig("rk4.c_per_eval", "C: time per RHS evaluation", c / (4 * N), "s")
+    r = rep.fig("rk4.ratio_numba_c", "ratio numba / C -O3", nb / c, "x")
+    rep.fig("rk4.ratio_numba_c_native", "ratio numba / C -O3 -march=native", nb / cn, "x")
+    rep.target("T2", "2. RK4 50 periods: numba <= 1.5x C (gcc -O3)", r, "<=", 1.5)
+
+
+# --------------------------------------------------------------------------- 3, 4
+def dop853_numba(S, periods, locate=True):
+    """One numba dop853_run from t=0 over `periods`; returns (seconds, counters, y, out_y)."""
+    from tethersim.integrators.dop853 import dop853_run
+    sat, p, y0, cfg = S["sat"], S["p"], S["y0"], S["cfg"]
+    T = periods * sat.period
+    n_out = max(2, round(SAMPLES_PER_PERIOD * periods))
+    out_t = np.linspace(0.0, T, n_out + 1)[1:]
+    out_y = np.empty((n_out, 10))
+    y = y0.copy()
+    cnt = np.zeros(5, dtype=np.int64)
+    pw = p.copy()
+    t0 = clock()
+    r = dop853_run(cfg, 0.0, T, y, 0.0, p, pw, RTOL, ATOL, locate, out_t, out_y, 0, 10**9, cnt)
+    dt = clock() - t0
+    assert r[3] == 0, r
+    return dt, cnt, y, out_y
+
+
+def dop853_c(S, lib, periods, locate=True):
+    sat, p, y0 = S["sat"], S["p"], S["y0"]
+    T = periods * sat.period
+    n_out = max(2, round(SAMPLES_PER_PERIOD * periods))
+    out_t = np.linspace(0.0, T, n_out + 1)[1:]
+    out_y = np.empty((n_out, 10))
+    y = y0.copy()
+    cnt = np.zeros(5, dtype=np.int64)
+    t0 = clock()
+    r = lib.dop853_run(0.0, T, y, 0.0, p, RTOL, ATOL, locate, out_t, out_y, 0, 10**9, cnt)
+    dt = clock() - t0
+    assert r[3] == 0, r
+    return dt, cnt, y, out_y
+
+
+def solve_ivp_run(S, fun, periods):
+    from scipy.integrate import solve_ivp
+    T = periods * S["sat"].period
+    t0 = clock()
+    sol = solve_ivp(fun, (0.0, T), S["y0"].copy(), method="DOP853", rtol=RTOL, atol=ATOL)
+    dt = clock() - t0
+    assert sol.status == 0, sol.message
+    return dt, sol
+
+
+def bench_dop853(rep: Report, S, q):
+    import baselines
+    log(f"\n[3] adaptive DOP853 rtol {RTOL:g} atol {ATOL:g}, {PERIODS} periods, 10-state, "
+        f"switch location on, dense output on {SAMPLES_PER_PERIOD} samples/period")
+    finals = {}
+
+    def t(name, fn):
+        def timer():
+            dt, cnt, y, oy = fn()
+            finals[name] = (cnt, y, oy)
+            return dt
+        return timer
+
+    res = interleave({
+        "numba": t("numba", lambda: dop853_numba(S, PERIODS)),
+        "c": t("c", lambda: dop853_c(S, S["c"], PERIODS)),
+        "c_native": t("c_native", lambda: dop853_c(S, S["c_native"], PERIODS)),
+    }, q["dop_repeats"])
+    cn_, yn, oyn = finals["numba"]
+    cc_, yc, oyc = finals["c"]
+    same_counts = bool(np.array_equal(cn_, cc_))
+    dev = float(np.max(np.abs(oyn - oyc) / (np.abs(oyc).max(axis=0) + 1e-300)))
+    rep.check("DOP853 numba and C: identical nfev/accepted/rejected/switches/steps",
+              same_counts, f"numba {cn_.tolist()}, C {cc_.tolist()}")
+    rep.check("DOP853 numba and C: same dense output", dev < 1e-8,
+              f"max diff / range {dev:.1e}")
+    nb = rep.fig("dop853.numba", "numba dop853_run (whole loop compiled)", median(res["numba"]),
+                 "s", res["numba"])
+    c = rep.fig("dop853.c", "C DOP853 port (gcc -O3), same tableau/control/dense output",
+                median(res["c"]), "s", res["c"])
+    cnat = rep.fig("dop853.c_native", "C DOP853 port (gcc -O3 -march=native)",
+                   median(res["c_native"]), "s", res["c_native"])
+    rep.fig("dop853.nfev", "nfev (numba counter; C identical)", int(cn_[0]), "count")
+    rep.fig("dop853.accepted", "accepted steps", int(cn_[1]), "count")
+    rep.fig("dop853.rejected", "rejected steps", int(cn_[2]), "count")
+    rep.fig("dop853.switches", "tether switches located", int(cn_[3]), "count")
+    rep.fig("dop853.numba_per_eval", "numba: time per RHS evaluation (incl. stepper)",
+            nb / cn_[0], "s")
+    rep.fig("dop853.c_per_eval", "C: time per RHS evaluation (incl. stepper)", c / cc_[0], "s")
+    r = rep.fig("dop853.ratio_numba_c", "ratio numba / C -O3", nb / c, "x")
+    rep.fig("dop853.ratio_numba_c_native", "ratio numba / C -O3 -march=native", nb / cnat, "x")
+    rep.target("T3a", "3. DOP853 50 periods: numba <= 2x C port (gcc -O3)", r, "<=", 2.0)
+    S["dop_counts_full"] = cn_
+    S["dop_numba_full"] = nb
+    # all tethers taut throughout? (validates PyDy's taut-branch forcing below)
+    taut = all((_tether_margins(row, S["p"]) > 0).all() for row in oyn[:: max(1, len(oyn) // 500)])
+    S["always_taut"] = taut and cn_[3] == 0
+
+    # scipy solve_ivp driving the compiled RHS
+    k = q["scipy_numba_periods"]
+    fun = baselines.ivp_fun_numba(S["cfg"], S["p"])
+    solve_ivp_run(S, fun, 0.05)  # warm-up (dispatcher type resolution)
+    sols = {}
+
+    def t_ivp():
+        dt, sol = solve_ivp_run(S, fun, k)
+        sols["s"] = sol
+        return dt
+
+    if k == PERIODS:
+        res_s = interleave({"scipy": t_ivp}, q["slow_repeats"], warmup=0)
+        ref_nb, ref_cnt = nb, cn_
+    else:
+        res_s = interleave({"scipy": t_ivp, "numba": lambda: dop853_numba(S, k)[0]},
+                           q["slow_repeats"], warmup=0)
+        ref_nb = median(res_s["numba"])
+        ref_cnt = dop853_numba(S, k)[1]
+    sol = sols["s"]
+    n_acc = len(sol.t) - 1
+    rep.check(f"solve_ivp(DOP853) takes the same steps as dop853_run ({k:g} periods)",
+              abs(n_acc - ref_cnt[1]) <= 2 + 0.002 * ref_cnt[1],
+              f"accepted {n_acc} vs {int(ref_cnt[1])}; scipy nfev {sol.nfev} (no dense-output "
+              f"stages) vs {int(ref_cnt[0])}")
+    sc = median(res_s["scipy"])
+    label = f"scipy solve_ivp(DOP853) + numba derivative via Python wrapper, {k:g} periods"
+    rep.fig("dop853.scipy_numba_rhs", label, sc, "s", res_s["scipy"])
+    if k != PERIODS:
+        rep.fig("dop853.numba_same_run", f"numba dop853_run, same {k:g} periods", ref_nb, "s",
+                res_s["numba"])
+        est = sc * (S["dop_counts_full"][4] + S["dop_counts_full"][2]) / (ref_cnt[4] + ref_cnt[2])
+        rep.fig("dop853.scipy_numba_rhs_est50", f"  scaled to {PERIODS} periods by step count "
+                "(estimate)", est, "s")
+    rs = rep.fig("dop853.ratio_scipy_numba", "ratio solve_ivp / numba dop853_run (same run)",
+                 sc / ref_nb, "x")
+    rep.target("T3b", "3. DOP853: numba >= 50x faster than solve_ivp (same RHS)", rs, ">=", 50.0,
+               note="" if k == PERIODS else f"measured on {k:g} periods")
+
+
+def bench_tools(rep: Report, S, q, lamb, pydy_f, pydy_gen):
+    import baselines
+    k = q["slow_periods"]
+    log(f"\n[4] the tools people use instead: same model, DOP853 rtol {RTOL:g}, "
+        f"{k:g} period(s) (too slow for {PERIODS}; scaled by step count)")
+    if not S.get("always_taut"):
+        rep.notes.append("a tether went slack in the 50-period run: the PyDy run (taut-branch "
+                         "forcing) is not the same dynamics")
+    fl = baselines.ivp_fun_lambdify(lamb, S["p"])
+    sols = {}
+
+    def t(name, fun):
+        def timer():
+            dt, sol = solve_ivp_run(S, fun, k)
+            sols[name] = sol
+            return dt
+        return timer
+
+    timers = {"lambdify": t("lambdify", fl), "numba": lambda: dop853_numba(S, k)[0]}
+    if pydy_f is not None:
+        timers["pydy"] = t("pydy", baselines.ivp_fun_pydy(pydy_f, S["p"]))
+    res = interleave(timers, q["slow_repeats"], warmup=1)
+    _, cnt, y_nb, _ = dop853_numba(S, k)
+    for name in sols:
+        yk = sols[name].y[:, -1]
+        rel = float(np.max(np.abs(yk[:6] - y_nb[:6]) / (np.abs(y_nb[:6]) + 1e-3)))
+        rep.check(f"{name} + solve_ivp end state == numba dop853_run end state", rel < 1e-6,
+                  f"max rel diff {rel:.1e}; accepted {len(sols[name].t) - 1} vs {int(cnt[1])}")
+    nb = rep.fig("tools.numba", f"numba dop853_run, {k:g} period(s)", median(res["numba"]), "s",
+                 res["numba"])
+    lam = rep.fig("tools.lambdify", f"sympy.lambdify + solve_ivp(DOP853), {k:g} period(s)",
+                  median(res["lambdify"]), "s", res["lambdify"])
+    full = S["dop_counts_full"]
+    scale = (full[4] + full[2]) / (cnt[4] + cnt[2])
+    rep.fig("tools.lambdify_est50", f"  lambdify run scaled to {PERIODS} periods (estimate)",
+            lam * scale, "s")
+    rl = rep.fig("tools.ratio_lambdify_numba", "ratio lambdify+solve_ivp / numba (same run)",
+                 lam / nb, "x")
+    rep.target("T4a", "4. numba >= 100x faster than lambdify + solve_ivp", rl, ">=", 100.0,
+               note=f"measured on {k:g} period(s)")
+    if pydy_f is None:
+        rep.target("T4b", "4. integrated run: PyDy+solve_ivp / numba (report only)", None,
+                   "info", 0, note="skipped: PyDy not installed")
+        return
+    py = rep.fig("tools.pydy", f"PyDy ({pydy_gen}) + solve_ivp(DOP853), {k:g} period(s)",
+                 median(res["pydy"]), "s", res["pydy"])
+    rep.fig("tools.pydy_est50", f"  PyDy run scaled to {PERIODS} periods (estimate)",
+            py * scale, "s")
+    rp = rep.fig("tools.ratio_pydy_numba", "ratio PyDy+solve_ivp / numba (same run)", py / nb, "x")
+    rep.target("T4b", "4. integrated run: PyDy+solve_ivp / numba (report only)", rp, "info", 0,
+               note=f"measured on {k:g} period(s), PyDy generator {pydy_gen}, "
+                    "taut-branch forcing")
+
+
+# --------------------------------------------------------------------------- 5, 6
+def bench_derive(rep: Report, q):
+    log("\n[5] make derive: python -m derive <tmpdir> (subprocess, all 4 models)")
+    times = []
+    for _ in range(q["derive_repeats"]):
+        with tempfile.TemporaryDirectory() as tmp:
+            dt, rc, tail = wall([sys.executable, "-m", "derive", tmp], cwd=REPO)
+        if rc != 0:
+            rep.check("python -m derive succeeded", False, tail[-300:])
+            rep.target("T5", "5. make derive < 60 s", None, "<", 60.0, "s")
+            return
+        times.append(dt)
+    v = rep.fig("derive.wall", "python -m derive <tmpdir> wall time", median(times), "s", times)
+    rep.target("T5", "5. make derive < 60 s", v, "<", 60.0, "s",
+               note=f"median of {len(times)}")
+
+
+def bench_cli(rep: Report, q):
+    log("\n[6] CLI: tethersim run satI --periods 50 (second run, numba caches warm)")
+    exe = Path(sys.executable).parent / "tethersim"
+    if not exe.exists():
+        exe = shutil.which("tethersim")
+    try:
+        from tethersim.presets import load_preset
+        load_preset("satI")
+        have = exe is not None
+    except Exception:  # noqa: BLE001
+        have = False
+    if not have:
+        log("    skipped: CLI not available")
+        rep.target("T6", "6. second CLI run < 3 s", None, "<", 3.0, "s",
+                   note="skipped: CLI not available")
+        return
+    times = []
+    with tempfile.TemporaryDirectory() as tmp:
+        cmd = [str(exe), "run", "satI", "--periods", "50", "--out", tmp + "/out"]
+        for i in range(1 + q["cli_repeats"]):
+            dt, rc, tail = wall(cmd, cwd=tmp)
+            if rc != 0:
+                rep.check("tethersim run succeeded", False, tail[-300:])
+                rep.target("T6", "6. second CLI run < 3 s", None, "<", 3.0, "s",
+                           note="CLI run failed")
+                return
+            times.append(dt)
+            log(f"    run {i + 1}: {dt:.2f} s")
+        phases = None
+        if q["cli_phases"]:
+            dt, rc, tail = wall([sys.executable, str(HERE / "cli_phases.py"), tmp + "/ph"],
+                                cwd=REPO)
+            if rc == 0:
+                phases = json.loads(tail.strip().splitlines()[-1])
+                phases["process wall time (incl. interpreter start)"] = dt
+    rep.fig("cli.first", "first run (may load or build numba caches)", times[0], "s")
+    second = rep.fig("cli.second", "second run", times[1], "s")
+    if len(times) > 2:
+        rep.fig("cli.warm_median", "median of the warm runs (2nd onwards)", median(times[1:]), "s",
+                times[1:])
+    rep.target("T6", "6. second CLI run < 3 s", second, "<", 3.0, "s",
+               note=f"warm-run median {median(times[1:]):.2f} s over {len(times) - 1}")
+    if phases:
+        log("    where a warm run spends its time (bench/cli_phases.py, one fresh process):")
+        for k, v in phases.items():
+            log(f"      {k:<62} {v:7.3f} s")
+        rep.figures["cli.phases"] = {"label": "phases of a warm run (diagnostic)",
+                                     "value": phases, "unit": "s"}
+
+
+# --------------------------------------------------------------------------- main
+def machine_info():
+    cpu = ""
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    import numba
+    import scipy
+    import sympy
+    gcc = subprocess.run(["gcc", "--version"], capture_output=True, text=True).stdout
+    try:
+        import pydy
+        pydy_v = pydy.__version__
+    except ImportError:
+        pydy_v = None
+    return {"cpu": cpu, "cores": os.cpu_count(), "python": platform.python_version(),
+            "numpy": np.__version__, "numba": numba.__version__, "scipy": scipy.__version__,
+            "sympy": sympy.__version__, "pydy": pydy_v,
+            "gcc": gcc.splitlines()[0] if gcc else None,
+            "loadavg_start": os.getloadavg()}
+
+
+def print_table(rep: Report, total_s, out_json):
+    log("\n" + "=" * 100)
+    log("SUMMARY (medians; ratios from this run)")
+    log("=" * 100)
+    keys = [
+        ("rhs.numba", "rhs.c", "rhs.ratio_numba_c"),
+        ("rk4.numba", "rk4.c", "rk4.ratio_numba_c"),
+        ("dop853.numba", "dop853.c", "dop853.ratio_numba_c"),
+    ]
+    log(f"{'':34}{'numba':>14}{'C gcc -O3':>14}{'ratio':>10}{'C -march=native':>18}")
+    names = {"rhs": "6-state RHS, per call", "rk4": "RK4 50 periods, 10k steps",
+             "dop853": "DOP853 50 periods, rtol 1e-10"}
+    for a, b, r in keys:
+        sec = a.split(".")[0]
+        f = rep.figures
+        if a in f:
+            log(f"{names[sec]:<34}{_fmt(f[a]['value'], 's'):>14}{_fmt(f[b]['value'], 's'):>14}"
+                f"{_fmt(f[r]['value'], 'x'):>10}{_fmt(f[sec + '.c_native']['value'], 's'):>18}")
+    f = rep.figures
+    log("")
+    other = [("rhs.lambdify", "sympy.lambdify RHS call (Python)"),
+             ("rhs.pydy", "PyDy RHS call (Python)"),
+             ("rhs.numba_pycall", "numba RHS called from Python"),
+             ("dop853.scipy_numba_rhs", "solve_ivp + numba RHS"),
+             ("tools.lambdify", "lambdify + solve_ivp"), ("tools.pydy", "PyDy + solve_ivp"),
+             ("tools.numba", "numba dop853_run (same short run)"),
+             ("derive.wall", "python -m derive"), ("cli.second", "tethersim run, 2nd")]
+    for k, label in other:
+        if k in f:
+            lab = f[k]["label"]
+            extra = ""
+            for tag in (" periods", " period(s)"):
+                if tag in lab:
+                    extra = " [" + lab.rsplit(",", 1)[-1].strip() + "]"
+            log(f"  {label + extra:<60}{_fmt(f[k]['value'], f[k]['unit']):>14}")
+    log("")
+    log(f"{'target':<62}{'measured':>12}{'limit':>12}  status")
+    for t in rep.targets:
+        lim = ("" if t["op"] == "info" else f"{t['op']} {_fmt(t['limit'], t['unit'])}")
+        val = _fmt(t["value"], t["unit"])
+        status = "info" if t["op"] == "info" else t["status"]
+        note = f"  ({t['note']})" if t["note"] else ""
+        log(f"{t['label']:<62}{val:>12}{lim:>12}  {status}{note}")
+    bad = [c for c in rep.checks if not c["ok"]]
+    log(f"\nsanity checks: {len(rep.checks) - len(bad)}/{len(rep.checks)} ok"
+        + "".join(f"\n  FAILED: {c['label']}: {c['detail']}" for c in bad))
+    for n in rep.notes:
+        log(f"note: {n}")
+    la = os.getloadavg()
+    log(f"bench wall time {total_s:.0f} s (load average now {la[0]:.2f}: other work on the "
+        f"machine inflates the absolute times, less so the interleaved ratios); "
+        f"results in {out_json}")
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--quick", action="store_true",
+                    help="fewer repeats and shorter baseline runs (about a third of the time)")
+    ap.add_argument("--json", default=str(HERE / "results.json"), help="where to write results")
+    ap.add_argument("--skip-slow", action="store_true",
+                    help="skip the subprocess figures (make derive, CLI)")
+    args = ap.parse_args(argv)
+    q = dict(fast_repeats=15, dop_repeats=9, slow_repeats=5, rhs_calls=200_000,
+             lambdify_calls=1000, pydy_calls=4000, pycall_calls=20_000,
+             scipy_numba_periods=PERIODS, slow_periods=1.0, derive_repeats=5, cli_repeats=5,
+             cli_phases=True)
+    if args.quick:
+        q.update(fast_repeats=5, dop_repeats=5, slow_repeats=5, rhs_calls=100_000,
+                 lambdify_calls=300, pydy_calls=1000, pycall_calls=5000,
+                 scipy_numba_periods=5.0, slow_periods=0.5, derive_repeats=1, cli_repeats=1,
+                 cli_phases=False)
+    t_start = clock()
+    rep = Report()
+    info = machine_info()
+    log(f"tethersim bench{' --quick' if args.quick else ''}: {info['cpu']}, {info['cores']} cores, "
+        f"python {info['python']}, numba {info['numba']}, {info['gcc']}; "
+        f"load average {info['loadavg_start'][0]:.2f}")
+    if args.quick:
+        log("quick mode: 5 repeats; make derive and the CLI timed once/twice; shorter "
+            "solve_ivp runs (scaled)")
+    S = setup(rep)
+    import baselines
+    t0 = clock()
+    lamb = baselines.make_lambdify(S["model"], S["length_defs"])
+    t_lamb = clock() - t0
+    t0 = clock()
+    try:
+        pydy_f, pydy_gen = baselines.make_pydy(S["model"], S["length_defs"])
+    except ImportError as exc:
+        pydy_f, pydy_gen = None, "unavailable"
+        rep.notes.append(f"PyDy figures skipped: {exc} (make bench installs the [bench] extra)")
+    t_pydy = clock() - t0
+    log(f"sympy.lambdify build {t_lamb:.2f} s; PyDy generate_ode_function ({pydy_gen}) "
+        f"{t_pydy:.2f} s")
+    validate_rhs(rep, S, lamb, pydy_f)
+
+    bench_rhs(rep, S, q, lamb, pydy_f, pydy_gen)
+    bench_rk4(rep, S, q)
+    bench_dop853(rep, S, q)
+    bench_tools(rep, S, q, lamb, pydy_f, pydy_gen)
+    if not args.skip_slow:
+        bench_derive(rep, q)
+        bench_cli(rep, q)
+
+    total = clock() - t_start
+    info["loadavg_end"] = os.getloadavg()
+    doc = {
+        "meta": {**info, "quick": args.quick, "settings": q,
+                 "satellite": S["sat"].name, "model": "derived", "rtol": RTOL, "atol": ATOL,
+                 "periods": PERIODS, "rk4_steps": RK4_STEPS, "pydy_generator": pydy_gen,
+                 "c_flags": ["-O3", "-O3 -march=native (info)"],
+                 "setup_s": {**S["setup_s"], "lambdify_build": t_lamb, "pydy_build": t_pydy},
+                 "bench_wall_s": total,
+                 "timestamp": time.strftime("%Y-%m-%dT%H:%M:%S%z")},
+        "figures": rep.figures, "targets": rep.targets, "checks": rep.checks, "notes": rep.notes,
+    }
+    Path(args.json).write_text(json.dumps(doc, indent=2, default=_json_default) + "\n")
+    print_table(rep, total, args.json)
+    return 0 if all(c["ok"] for c in rep.checks) else 1
+
+
+def _json_default(o):
+    if isinstance(o, (np.integer,)):
+        return int(o)
+    if isinstance(o, (np.floating,)):
+        return float(o)
+    if isinstance(o, np.ndarray):
+        return o.tolist()
+    raise TypeError(type(o))
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
