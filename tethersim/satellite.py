@@ -89,7 +89,10 @@ class Satellite:
                 f"{self._where()}COM off the boom: m1*b = {lhs:g} kg m but m2*a = {rhs:g} kg m; "
                 f"the thesis puts the COM on the boom (p. 3-1), so m1*b must equal m2*a "
                 f"(relative difference <= {COM_RTOL:g}); e.g. a = {lhs / self.m2:.6g} m")
-        init = tuple(float(x) for x in self.initial)
+        try:
+            init = tuple(float(x) for x in self.initial)
+        except (TypeError, ValueError):
+            init = ()
         if len(init) != 6 or not all(math.isfinite(x) for x in init):
             raise SatelliteError(f"{self._where()}initial = {self.initial!r}: must be 6 finite "
                                  f"numbers (δx, δy, θ, δẋ, δẏ, θ̇)")
@@ -142,6 +145,8 @@ class Satellite:
 
     def replace(self, **changes) -> "Satellite":
         """A copy with fields changed (validated again)."""
+        if self.source and "source" not in changes and not self.source.endswith("(modified)"):
+            changes["source"] = f"{self.source} (modified)"
         return replace(self, **changes)
 
     def to_dict(self) -> dict:

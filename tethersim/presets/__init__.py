@@ -16,6 +16,7 @@ so the value in N/mm^2 equals the tether force scale in N (thesis p. 3-1).
 from __future__ import annotations
 
 import math
+import re
 import tomllib
 from importlib import resources
 from pathlib import Path
@@ -92,6 +93,8 @@ def from_dict(doc: dict, where: str = "<dict>") -> Satellite:
         for internal, key in (("E1 =", "tethers.E1_N_per_mm2 ="), ("E2 =", "tethers.E2_N_per_mm2 ="),
                               ("theta0 =", "initial.theta0_deg ="), ("altitude =", "orbit.altitude_km =")):
             msg = msg.replace(internal, key)
+        # E in N equals the file's N/mm^2 value (1 mm^2 cross-section): name the file's unit
+        msg = re.sub(r"(E[12]_N_per_mm2 = \S+) N:", r"\1 N/mm^2:", msg)
         raise SatelliteError(msg) from None
 
 
