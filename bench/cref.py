@@ -163,8 +163,8 @@ static inline void derivative(double t, const double *y, const double *p, double
 {
     rhs6(t, y, p, dydt);
     const double X = y[6], Y = y[7];
-    const double r = hypot(X, Y);
-    const double k = -p[P_MU] / (r * r * r);
+    const double r2 = X * X + Y * Y;  /* as tethersim/dynamics.py */
+    const double k = -p[P_MU] / (r2 * sqrt(r2));
     dydt[6] = y[8];
     dydt[7] = y[9];
     dydt[8] = k * X;

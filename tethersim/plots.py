@@ -5,6 +5,7 @@ from pathlib import Path
 
 from .result import SimResult
 
+FAST_PNG = {"compress_level": 1}  # zlib level 1: a third of the encode time, ~1.3x the bytes
 PANELS = (("theta", "pitch θ [rad]"), ("x", "balloon δx [m] (+x: wake)"),
           ("y", "balloon δy [m] (+y: up)"))
 
@@ -47,14 +48,14 @@ def plot_result(res: SimResult, out_dir, prefix: str = "") -> list:
         ax.set_title(f"{res.satellite.name}: {label.split(' [')[0]}\n{res.label}", fontsize=9)
         name = {"theta": "theta", "x": "delta_x", "y": "delta_y"}[attr]
         p = out_dir / f"{prefix}{name}.png"
-        fig.savefig(p, dpi=120)
+        fig.savefig(p, dpi=120, pil_kwargs=FAST_PNG)
         plt.close(fig)
         paths.append(p)
     _hours_on_top(axes[0], period)
     axes[-1].set_xlabel("time [orbits]")
     fig_all.suptitle(res.label, fontsize=9)
     p = out_dir / f"{prefix}overview.png"
-    fig_all.savefig(p, dpi=110)
+    fig_all.savefig(p, dpi=110, pil_kwargs=FAST_PNG)
     plt.close(fig_all)
     paths.append(p)
     return paths
