@@ -9,7 +9,7 @@ from . import codegen
 from .kinematics import planar_kinematics
 from .models import DEFINITIONS, FAMILY_ORDER
 from .pipeline import derive
-from .symbols import STATE_SYMBOLS, state_substitution
+from .symbols import state_substitution
 
 
 CACHE_PRELUDE = r'''import hashlib

@@ -16,10 +16,9 @@ from __future__ import annotations
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
-from .energy import InverseCubeMinusOne
 from .pipeline import Q_SYMBOLS, DerivedModel
 from .symbols import (PARAMETERS, STATE_NAMES, STATE_SYMBOLS, STATE_UNITS,
-                      TETHER_LENGTHS, TETHER_REST, P)
+                      TETHER_LENGTHS, TETHER_REST)
 
 INDENT = "    "
 _SIN, _COS = sp.Symbol("sin_theta", real=True), sp.Symbol("cos_theta", real=True)

@@ -37,10 +37,6 @@ class Kinematics:
     tether_vectors: tuple
     tether_length_defs: dict
 
-    def components(self, vec) -> tuple:
-        """(x, y) components of a vector in the local frame L."""
-        return tuple(sp.simplify(vec.dot(e)) for e in (self.L.x, self.L.y))
-
 
 def planar_kinematics() -> Kinematics:
     """Build the thesis geometry: Eqs 3.10-3.12 positions, 3.13-3.17 velocities."""

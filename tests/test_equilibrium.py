@@ -1,9 +1,7 @@
 """Equilibria: zero residual, which tethers are taut, and eigenvalues that predict the runs."""
 from __future__ import annotations
 
-import math
 
-import numpy as np
 import pytest
 
 import tethersim as ts

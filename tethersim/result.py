@@ -1,7 +1,6 @@
 """The result record of a simulation, its derived quantities and exports."""
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path

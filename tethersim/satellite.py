@@ -16,7 +16,7 @@ from generated import layout
 from . import atmosphere
 from .constants import CD_DEFAULT, MU_EARTH, OMEGA_EARTH, R_EARTH
 
-# field -> (unit, lower bound, lower bound inclusive?)
+# fields that must be > 0 and >= 0 (units in UNITS)
 _POSITIVE = ("m1", "m2", "m3", "A1", "A2", "A3", "a", "b", "l10", "l20")
 _NON_NEGATIVE = ("E1", "E2", "c1", "c2", "CD")
 COM_RTOL = 1e-6  # relative tolerance of the COM-on-the-boom condition m1 b = m2 a
