@@ -14,6 +14,8 @@ with gcc -O3.  Results go to stdout (table at the end) and bench/results.json.
   4. sympy.lambdify + solve_ivp and PyDy + solve_ivp, same model and tolerance
   5. `python -m derive <tmpdir>` wall time
   6. second `tethersim run satI --periods 50` wall time (numba caches warm)
+  7. sweep throughput, 1 thread vs every core (bench/sweep_bench.py)
+  8. `tethersim report` wall time (not with --quick)
 """
 from __future__ import annotations
 
@@ -670,17 +672,19 @@ def main(argv=None) -> int:
                     help="fewer repeats and shorter baseline runs (about a third of the time)")
     ap.add_argument("--json", default=str(HERE / "results.json"), help="where to write results")
     ap.add_argument("--skip-slow", action="store_true",
-                    help="skip the subprocess figures (make derive, CLI)")
+                    help="skip the subprocess figures (make derive, CLI, report)")
+    ap.add_argument("--only", choices=("sweep", "report"), default=None,
+                    help="run one section only (sweep throughput, or the report's wall time)")
     args = ap.parse_args(argv)
     q = dict(fast_repeats=15, dop_repeats=9, slow_repeats=5, rhs_calls=200_000,
              lambdify_calls=1000, pydy_calls=4000, pycall_calls=20_000,
              scipy_numba_periods=PERIODS, slow_periods=1.0, derive_repeats=5, cli_repeats=5,
-             cli_phases=True)
+             cli_phases=True, sweep_repeats=3)
     if args.quick:
         q.update(fast_repeats=5, dop_repeats=5, slow_repeats=5, rhs_calls=100_000,
                  lambdify_calls=300, pydy_calls=1000, pycall_calls=5000,
                  scipy_numba_periods=5.0, slow_periods=0.5, derive_repeats=1, cli_repeats=1,
-                 cli_phases=False)
+                 cli_phases=False, sweep_repeats=1)
     t_start = clock()
     rep = Report()
     info = machine_info()
@@ -690,6 +694,14 @@ def main(argv=None) -> int:
     if args.quick:
         log("quick mode: 5 repeats; make derive and the CLI timed once/twice; shorter "
             "solve_ivp runs (scaled)")
+    import sweep_bench
+    if args.only:
+        if args.only == "sweep":
+            sweep_bench.bench_sweep(rep, q)
+        else:
+            sweep_bench.bench_report(rep, q, REPO)
+        print_table(rep, clock() - t_start, "(not written with --only)")
+        return 0 if all(c["ok"] for c in rep.checks) else 1
     S = setup(rep)
     import baselines
     t0 = clock()
@@ -710,9 +722,12 @@ def main(argv=None) -> int:
     bench_rk4(rep, S, q)
     bench_dop853(rep, S, q)
     bench_tools(rep, S, q, lamb, pydy_f, pydy_gen)
+    sweep_bench.bench_sweep(rep, q)
     if not args.skip_slow:
         bench_derive(rep, q)
         bench_cli(rep, q)
+        if not args.quick:
+            sweep_bench.bench_report(rep, q, REPO)
 
     total = clock() - t_start
     info["loadavg_end"] = os.getloadavg()

@@ -9,7 +9,7 @@ from generated import dispatch
 from .dynamics import CFG_MODEL, CFG_PER_BODY, N_ATTITUDE, body_densities
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)  # nogil: sweeps evaluate forces on threads
 def family_forces_series(cfg, Y, p):
     """Q[i, f, k]: generalized force of family f on q_k at sample i."""
     n = Y.shape[0]

@@ -56,7 +56,8 @@ def initial_step(cfg, t0, y0, f0, p, pw, rtol, atol, t_end):
     return min(100 * h0, h1, t_end - t0)
 
 
-@njit(cache=True)
+# nogil: sweeps run many trajectories on threads (tethersim.sweep)
+@njit(cache=True, nogil=True)
 def dop853_run(cfg, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y, i_out,
                max_steps, counters):
     """Integrate y (in place) from t0 to t_end with DOP853.

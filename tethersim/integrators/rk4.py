@@ -52,7 +52,8 @@ def rk4_advance(cfg, t, y, h, p, pw, work, y_new, locate, g0, g1):
     return splits
 
 
-@njit(cache=True)
+# nogil: sweeps run many trajectories on threads (tethersim.sweep)
+@njit(cache=True, nogil=True)
 def rk4_run(cfg, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0):
     """n_steps RK4 steps of size h from (t0, y), y advanced in place.
 

@@ -1,0 +1,239 @@
+"""Run one satellite under several model variants and tabulate the outcomes.
+
+The variants (tethersim.models, docs/errata.md) share one derivation:
+
+  derived           the clean derivation of Eqs 3.10-3.47 (default)
+  printed           Eqs 3.48-3.50 as printed; differs from `derived` only by the
+                    damper-2 θ term, erratum E1: printed − derived = c2 a (a+b)(θ̇ − ω)
+  exact-gravity     point-mass gravity without the binomial expansion (note N2):
+                    differs from `derived` by terms ~ offset/r0 ≈ 1e-5 relative
+  objective-damper  Kelvin-Voigt tether dampers; equals `derived` when c1 = c2 = 0
+
+:func:`compare` runs them with the same integrator settings;
+:func:`comparison_table` gives one row per variant with the pitch metrics of
+docs/metrics.md, the steady-state trail δx_ss, the convergence estimate and the
+outcome class of :mod:`tethersim.classify`; :func:`outcome_differences` says
+where two variants end in different classes.  SI throughout, except the
+settling time, which the table gives in hours (labelled).
+"""
+from __future__ import annotations
+
+import csv
+import math
+from pathlib import Path
+
+import numpy as np
+
+from generated.dispatch import MODEL_NAMES
+
+from .classify import CLASSES, classify
+from .metrics import SS_FRACTION
+from .result import SimResult
+from .satellite import Satellite
+
+# (key, CSV header with unit, printed label) of each table column, in order
+COLUMNS = (
+    ("model", "model", "model"),
+    ("class", "class", "outcome class"),
+    ("mean_pitch", "mean pitch [rad]", "mean pitch [rad]"),
+    ("steady_state_pitch", "steady-state pitch [rad]", "steady-state pitch [rad]"),
+    ("settling_time_h", "settling time [h]", "settling time [h]"),
+    ("tumbled", "tumbled", "tumbled"),
+    ("upside_down", "upside down", "upside down"),
+    ("trail_dx_ss", "trail delta_x_ss [m]", "trail δx_ss [m]"),
+    ("converged", "converged", "converged"),
+    ("error_theta", "error estimate theta [rad]", "error estimate θ [rad]"),
+    ("error_position", "error estimate position [m]", "error estimate δx,δy [m]"),
+    ("max_dtheta", "max |theta - theta_first| [rad]", "max |θ − θ(first)| [rad]"),
+    ("status", "status", "status"),
+)
+FAILED_STATUSES = ("diverged", "failed")
+
+
+def parse_models(models) -> tuple:
+    """Model names from a sequence or a comma-separated string; clear error if unknown.
+
+    Allowed values: generated.dispatch.MODEL_NAMES.  Order is kept (the first
+    model is the reference of the θ differences); repeats are an error.
+    """
+    if isinstance(models, str):
+        models = [m.strip() for m in models.split(",") if m.strip()]
+    models = tuple(models)
+    allowed = ", ".join(MODEL_NAMES)
+    if not models:
+        raise ValueError(f"models: none given; allowed values {allowed}")
+    for m in models:
+        if m not in MODEL_NAMES:
+            raise ValueError(f"models: unknown model {m!r}; allowed values {allowed}")
+    repeated = sorted({m for m in models if models.count(m) > 1})
+    if repeated:
+        raise ValueError(f"models: {', '.join(repeated)} given more than once")
+    return models
+
+
+def compare(sat: Satellite, models=MODEL_NAMES, **simulate_kwargs) -> list:
+    """[(model, SimResult)] for each model, run with the same ``simulate`` arguments.
+
+    ``simulate_kwargs`` go to :func:`tethersim.simulation.simulate` (periods,
+    steps, method, rtol, check, progress, ...); ``model`` is not allowed among
+    them.  Every name is checked before the first run.  A run interrupted with
+    Ctrl-C ends the comparison: the runs finished so far (and the interrupted
+    one) are returned.
+    """
+    from .simulation import simulate
+
+    if not isinstance(sat, Satellite):
+        raise TypeError(f"sat must be a tethersim Satellite (load_preset/load), "
+                        f"got {type(sat).__name__}")
+    if "model" in simulate_kwargs:
+        raise TypeError("compare() takes the models as `models`, not `model`")
+    models = parse_models(models)
+    results = []
+    for m in models:
+        res = simulate(sat, model=m, **simulate_kwargs)
+        results.append((m, res))
+        if res.status == "interrupted":
+            break
+    return results
+
+
+def steady_state_mean(t, values, ss_fraction: float = SS_FRACTION) -> float:
+    """Mean of ``values`` over the last ``ss_fraction`` of the run (the window of
+    the steady-state pitch, docs/metrics.md); same units as ``values``."""
+    t = np.asarray(t, dtype=float)
+    tail = t >= t[-1] - ss_fraction * (t[-1] - t[0])
+    return float(np.mean(np.asarray(values, dtype=float)[tail]))
+
+
+def theta_difference(res: SimResult, ref: SimResult) -> tuple:
+    """(t [s], θ_res − θ_ref [rad]) on ``ref``'s samples within both runs.
+
+    Runs with the same settings share their output grid; a shorter run (failed,
+    interrupted) or another grid is handled by linear interpolation of ``res``.
+    """
+    t_end = min(res.t[-1], ref.t[-1])
+    keep = ref.t <= t_end
+    t = ref.t[keep]
+    if res.t.shape == ref.t.shape and np.array_equal(res.t, ref.t):
+        th = res.theta[keep]
+    else:
+        th = np.interp(t, res.t, res.theta)
+    return t, th - ref.theta[keep]
+
+
+def describe_runs(results, overrides: str = "") -> str:
+    """One line naming the satellite, its overrides, the run length and the integrator."""
+    res = results[0][1]
+    orbits = res.t[-1] / res.satellite.period if res.t.size else 0.0
+    if res.method == "rk4":
+        kind = f"RK4, fixed step {res.step:.4g} s" + (" (faithful)" if res.faithful
+                                                      else ", switches located")
+    else:
+        kind = f"DOP853 adaptive, rtol {res.rtol:g}"
+    name = res.satellite.name + (f" ({overrides})" if overrides else "")
+    return (f"{name}, {orbits:.4g} orbits, {kind}; models {', '.join(m for m, _ in results)}; "
+            f"θ differences against {results[0][0]}")
+
+
+def outcome_class(res: SimResult) -> str:
+    """Class name (tethersim.classify.CLASSES) of one run; a failed integration is "failed"."""
+    if res.status in FAILED_STATUSES or res.t.size < 2:
+        return CLASSES[classify(None)]
+    return CLASSES[classify(res.metrics)]
+
+
+def comparison_table(results) -> list:
+    """One dict per (model, SimResult), keys as in :data:`COLUMNS` (SI; settling time in h).
+
+    trail_dx_ss: δx averaged over the steady-state window [m]; converged:
+    SimResult.converged (None if not checked); error_theta / error_position:
+    the estimated final error in θ [rad] and max over δx, δy [m];
+    max_dtheta: largest |θ − θ_first| [rad] against the first model (0 for it).
+    """
+    results = list(results)
+    if not results:
+        raise ValueError("comparison_table: no results")
+    ref = results[0][1]
+    rows = []
+    for model, res in results:
+        m = res.metrics if res.t.size >= 2 else None
+        err = res.error_estimate
+        _, dth = theta_difference(res, ref)
+        rows.append({
+            "model": model,
+            "class": outcome_class(res),
+            "mean_pitch": m.mean_pitch if m else math.nan,
+            "steady_state_pitch": m.steady_state_pitch if m else math.nan,
+            "settling_time_h": m.settling_time / 3600 if m else math.nan,
+            "tumbled": m.tumbled if m else None,
+            "upside_down": m.upside_down if m else None,
+            "trail_dx_ss": steady_state_mean(res.t, res.x) if res.t.size >= 2 else math.nan,
+            "converged": res.converged,
+            "error_theta": err[2] if err else math.nan,
+            "error_position": max(err[0], err[1]) if err else math.nan,
+            "max_dtheta": float(np.max(np.abs(dth))) if dth.size else math.nan,
+            "status": res.status,
+        })
+    return rows
+
+
+def outcome_differences(rows) -> list:
+    """Sentences naming the variants whose outcome classes differ (empty if all agree)."""
+    by_class = {}
+    for r in rows:
+        by_class.setdefault(r["class"], []).append(r["model"])
+    if len(by_class) < 2:
+        return []
+    groups = "; ".join(f"{', '.join(ms)}: {c}" for c, ms in by_class.items())
+    lines = [f"outcome classes differ ({groups})"]
+    first = rows[0]
+    for r in rows[1:]:
+        if r["class"] != first["class"]:
+            lines.append(f"  {r['model']} ends {r['class']} where {first['model']} "
+                         f"ends {first['class']}")
+    return lines
+
+
+def _fmt(key: str, value) -> str:
+    if value is None:
+        return "n/a"
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, float):
+        if math.isnan(value):
+            return "never" if key == "settling_time_h" else "n/a"
+        return f"{value:.4g}" if key.startswith("error") or key == "max_dtheta" else f"{value:.6g}"
+    return str(value)
+
+
+def format_table(rows) -> str:
+    """The table transposed for the terminal: one row per metric, one column per model."""
+    labels = [label for _, _, label in COLUMNS[1:]]
+    width = max(len(s) for s in labels) + 2
+    cells = [[_fmt(key, r[key]) for r in rows] for key, _, _ in COLUMNS[1:]]
+    col = max([len(r["model"]) for r in rows] + [len(c) for row in cells for c in row]) + 2
+    lines = [" " * width + "".join(f"{r['model']:>{col}}" for r in rows)]
+    for label, row in zip(labels, cells):
+        lines.append(f"{label:<{width}}" + "".join(f"{c:>{col}}" for c in row))
+    return "\n".join(lines)
+
+
+def write_csv(rows, path) -> Path:
+    """Write the table, one row per model, headers with units; NaN (a settling
+    time that never came, a missing error estimate) is written as an empty cell."""
+    path = Path(path)
+    with path.open("w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow([header for _, header, _ in COLUMNS])
+        for r in rows:
+            out = []
+            for key, _, _ in COLUMNS:
+                v = r[key]
+                if v is None or (isinstance(v, float) and math.isnan(v)):
+                    out.append("")
+                elif isinstance(v, float):
+                    out.append(repr(v))
+                else:
+                    out.append(str(v))
+            w.writerow(out)
+    return path
