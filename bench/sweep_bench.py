@@ -16,7 +16,7 @@ import numpy as np
 
 from timing import clock, interleave, median, wall
 
-GRID = (np.linspace(0.0036, 0.0044, 6), np.linspace(0.039, 0.047, 6))  # N/mm^2
+GRID = (np.linspace(0.0036, 0.0044, 12), np.linspace(0.039, 0.047, 12))  # N/mm^2, 144 runs
 
 
 def bench_sweep(rep, q):

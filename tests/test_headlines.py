@@ -53,9 +53,11 @@ def test_faithful_rk4_agrees_with_adaptive_when_the_step_is_linearly_stable(nomi
 
 def test_refining_the_step_does_not_move_away_from_the_converged_run(nominal_rows):
     by = {r["scheme"]: r for r in nominal_rows}
-    if by["rk4-thesis"]["amp_thesis_step"] < 1.0:
-        errs = [by[s]["max_dtheta_vs_dop853"] for s in ("rk4-thesis", "rk4-half", "rk4-quarter")]
-        assert errs[1] <= errs[0] + 1e-9 and errs[2] <= errs[1] + 1e-9
+    # the premise: the preset's thesis step is inside the RK4 limit (otherwise refining
+    # from an unstable step proves nothing); a preset change that breaks it must show here
+    assert by["rk4-thesis"]["amp_thesis_step"] < 1.0
+    errs = [by[s]["max_dtheta_vs_dop853"] for s in ("rk4-thesis", "rk4-half", "rk4-quarter")]
+    assert errs[1] <= errs[0] + 1e-9 and errs[2] <= errs[1] + 1e-9
 
 
 def test_a_step_beyond_the_rk4_limit_is_flagged_step_dependent(sat):

@@ -162,3 +162,13 @@ def test_nonfinite_start_returns_at_once_instead_of_hanging(sat):
                                      1e-10, 1e-12, True, out_t, out_y, 0, 1000,
                                      np.zeros(5, np.int64))
     assert status == STATUS_NONFINITE and t == 0.0
+
+
+def test_progress_pauses_do_not_change_the_adaptive_steps():
+    """One compiled call (progress=False) and 100 paused calls take the same steps."""
+    from tethersim import load_preset, simulate
+    sat = load_preset("satI")
+    one = simulate(sat, 3.0, check=False, progress=False)
+    paused = simulate(sat, 3.0, check=False, progress=True)
+    np.testing.assert_array_equal(one.states, paused.states)
+    assert one.n_accepted == paused.n_accepted and one.n_rejected == paused.n_rejected

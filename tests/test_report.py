@@ -31,10 +31,23 @@ def test_report_sets_thesis_statements_beside_ours_with_a_verdict(report):
     assert "no" in rows, "the report must say where we disagree with the thesis"
 
 
+def test_report_map_table_shows_the_classes_its_stores_hold(report):
+    """The numbers on the page are those of the stored sweeps, not written-in text."""
+    from tethersim.sweep import open_dataset
+    from tethersim.sweep.analysis import class_counts
+    text = report.read_text()
+    stores = sorted((report.parent / "sweeps").glob("*_adaptive_*.zarr"))
+    assert stores
+    for store in stores:
+        counts = class_counts(open_dataset(store))
+        shown = ", ".join(f"{k} {v}" for k, v in counts.items() if v)
+        assert f"<td>{shown}</td>" in text, (store.name, shown)
+
+
 def test_report_sweeps_are_stored_and_resumable(report):
     stores = sorted(p.name for p in (report.parent / "sweeps").iterdir())
     assert len(stores) == 2 * len(MAPS)  # converged + faithful per map
-    assert all(s.endswith(".zarr") for s in stores)
+    assert all(s.endswith("_3x3_2orbits.zarr") for s in stores)
 
 
 def test_report_refuses_a_bad_grid(tmp_path):

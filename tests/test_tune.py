@@ -51,5 +51,17 @@ def test_cli_tune_refuses_a_non_positive_E1(capsys):
     assert "--E1" in capsys.readouterr().err
 
 
-def test_stable_class_constant_is_zero():
-    assert STABLE == 0  # store readers rely on 0 = stable (CF flag_values)
+def test_tuned_satellite_is_centred_in_its_band_at_its_final_damping():
+    """The damper's torque at rest shifts the trim: the final E2 must be centred *with* it."""
+    from tethersim.tune import tune
+    r = tune(load_preset("satI"), periods=PERIODS)
+    lo, hi = r.band
+    assert lo < r.satellite.E2 < hi
+    assert r.satellite.E2 == pytest.approx(0.5 * (lo + hi))
+    final = theta_ss(r.satellite, r.satellite.E2)
+    assert final["stability_class"] == STABLE
+    assert abs(final["steady_state_pitch"]) < 0.5 * SETTLING_TOL
+    # the edges of the band found at the final damping are where the trim leaves ±tol
+    d = 3 * EDGE_RTOL * hi
+    assert abs(theta_ss(r.satellite, lo - d)["steady_state_pitch"]) > SETTLING_TOL
+    assert abs(theta_ss(r.satellite, hi + d)["steady_state_pitch"]) > SETTLING_TOL

@@ -5,10 +5,12 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import math
 import signal
 import sys
+import threading
 import time
 import warnings
 from pathlib import Path
@@ -219,6 +221,19 @@ def _raise_interrupt(signum, frame):
     raise KeyboardInterrupt
 
 
+@contextlib.contextmanager
+def _sigterm_as_interrupt():
+    """SIGTERM (kill) handled like Ctrl-C while inside: finished work is written."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = signal.signal(signal.SIGTERM, _raise_interrupt)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
 def cmd_sweep(args) -> int:
     from . import params
     from .plot_sweep import plot_stability_map
@@ -243,21 +258,21 @@ def cmd_sweep(args) -> int:
     out = Path(args.out or _default_out(
         args.satellite, f"sweep-{'-'.join(spec.names)}{'-faithful' if args.faithful else ''}"))
     out.mkdir(parents=True, exist_ok=True)
-    signal.signal(signal.SIGTERM, _raise_interrupt)  # kill: flush like Ctrl-C
     print(f"{spec.size} runs of {spec.periods:g} orbits "
           f"({'thesis RK4, 26.55 s steps' if args.faithful else f'DOP853, rtol {spec.rtol:g}'}, "
           f"model {spec.model}) -> {out / 'sweep.zarr'}")
     try:
-        store = run_sweep(spec, out / "sweep.zarr", workers=args.workers,
-                          scheduler=args.scheduler, dask_workers=args.dask_workers,
-                          restart=args.restart, progress=None if not args.quiet else False)
+        with _sigterm_as_interrupt():
+            store = run_sweep(spec, out / "sweep.zarr", workers=args.workers,
+                              scheduler=args.scheduler, dask_workers=args.dask_workers,
+                              restart=args.restart, progress=None if not args.quiet else False)
     except SweepInterrupted as exc:
         print(f"tethersim: {exc}", file=sys.stderr)
         return 130
     ds = store.dataset()
     ds.drop_vars("done").to_dataframe().to_csv(out / "sweep.csv")
     written = [out / "sweep.zarr", out / "sweep.csv"]
-    slope = band_slope(ds) if len(spec.names) == 2 else float("nan")
+    slope = band_slope(ds) if spec.names == ("E1", "E2") else float("nan")
     if len(spec.names) == 2 and not args.no_plots:
         nominal = {n: params.edge_value(sat, n) for n in spec.names}
         written.append(plot_stability_map(ds, out / "stability_map.png", nominal=nominal,
@@ -284,18 +299,19 @@ def cmd_tune(args) -> int:
              model=args.model, workers=args.workers)
     t = r.satellite
     lo, hi = (from_si("E2", v) for v in r.band)
-    print(f"{t.name}: stable band at E1 = {from_si('E1', t.E1):.6g} N/mm^2: "
+    print(f"{t.name}: stable band at E1 = {from_si('E1', t.E1):.6g} N/mm^2 and the chosen damping: "
           f"E2 = {lo:.6g} .. {hi:.6g} N/mm^2 (|theta_ss| <= 0.05 rad)")
     print(f"  E2 (band centre) = {from_si('E2', t.E2):.6g} N/mm^2, E2/E1 = {t.E2 / t.E1:.4g} "
           f"(b/a = {t.b / t.a:.4g})")
-    print("  damping factor   class        settling [h]")
-    for k, name, ts in r.damping_scan:
+    print("  damping factor   class        settling [h]   theta_ss [rad]  (band centre before damping)")
+    for k, name, ts, th in r.damping_scan:
         mark = "  <- chosen" if k == r.damping_factor else ""
-        print(f"  {k:14.4g}   {name:<12} {ts / 3600:10.4g}{mark}")
+        print(f"  {k:14.4g}   {name:<12} {ts / 3600:10.4g}   {th:+12.4f}{mark}")
     print(f"  c1 = {t.c1:.4g} N s/m, c2 = {t.c2:.4g} N s/m; {r.runs} runs of {args.periods:g} orbits")
     how = f"tethersim tune ({args.periods:g}-orbit converged runs, model {args.model})"
     notes = {"E1": "given", "E2": f"centre of the stable band {lo:.6g}..{hi:.6g} N/mm^2 ({how})",
-             "c1": f"fastest stable settling over k x base damping, k = {r.damping_factor:.4g}",
+             "c1": f"fastest stable settling (|theta_ss| <= 0.025 rad) over k x base damping, "
+                   f"k = {r.damping_factor:.4g}; E2 then re-centred",
              "c2": "same factor as c1"}
     out.write_text(dumps(t, notes, header=f"{t.name} tuned by {how} from {sat.source or sat.name}"))
     print(f"wrote {out}")
@@ -304,10 +320,17 @@ def cmd_tune(args) -> int:
 
 def cmd_report(args) -> int:
     from .report import build_report
+    from .sweep import SweepInterrupted
 
     t0 = time.perf_counter()
-    path = build_report(args.out, grid=args.grid, periods=args.periods, workers=args.workers,
-                        progress=None if not args.quiet else False)
+    try:
+        with _sigterm_as_interrupt():
+            path = build_report(args.out, grid=args.grid, periods=args.periods,
+                                workers=args.workers, progress=None if not args.quiet else False)
+    except (SweepInterrupted, KeyboardInterrupt) as exc:
+        print(f"tethersim: report interrupted ({exc or 'Ctrl-C'}); the finished sweeps are kept "
+              f"under {args.out}/sweeps: run the same command again to continue", file=sys.stderr)
+        return 130
     print(f"wrote {path} in {time.perf_counter() - t0:.0f} s")
     return 0
 
@@ -456,7 +479,9 @@ def build_parser() -> argparse.ArgumentParser:
     rp.add_argument("--out", default="results/report", help="output folder (default results/report)")
     rp.add_argument("--grid", type=int, default=41,
                     help="points per map axis (default 41, the thesis's sweep, p. 5-18)")
-    rp.add_argument("--periods", type=float, default=50.0, help="orbits per run (default 50)")
+    rp.add_argument("--periods", type=float, default=50.0,
+                    help="orbits per run of the nominal runs, forces and maps (default 50); "
+                         "the headline cases keep the thesis's own run lengths")
     rp.add_argument("--workers", type=int, default=None, help="threads (default: every core)")
     rp.add_argument("--quiet", action="store_true", help="no progress bars")
     rp.set_defaults(func=cmd_report)

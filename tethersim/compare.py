@@ -27,7 +27,7 @@ import numpy as np
 from generated.dispatch import MODEL_NAMES
 
 from .classify import CLASSES, classify
-from .metrics import SS_FRACTION
+from .metrics import SS_FRACTION, steady_state_window
 from .result import SimResult
 from .satellite import Satellite
 
@@ -100,9 +100,7 @@ def compare(sat: Satellite, models=MODEL_NAMES, **simulate_kwargs) -> list:
 def steady_state_mean(t, values, ss_fraction: float = SS_FRACTION) -> float:
     """Mean of ``values`` over the last ``ss_fraction`` of the run (the window of
     the steady-state pitch, docs/metrics.md); same units as ``values``."""
-    t = np.asarray(t, dtype=float)
-    tail = t >= t[-1] - ss_fraction * (t[-1] - t[0])
-    return float(np.mean(np.asarray(values, dtype=float)[tail]))
+    return float(np.mean(np.asarray(values, dtype=float)[steady_state_window(t, ss_fraction)]))
 
 
 def theta_difference(res: SimResult, ref: SimResult) -> tuple:

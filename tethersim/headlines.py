@@ -191,6 +191,8 @@ def _run(case: Headline, sat: Satellite, model: str, scheme: str, periods: float
 
 
 def _row_of(res, case: Headline, model: str, scheme: str) -> dict:
+    if res.status == "interrupted":  # Ctrl-C: stop, do not record a truncated run as failed
+        raise KeyboardInterrupt
     ok = np.isfinite(res.theta)
     t, th = res.t[ok], res.theta[ok]
     with warnings.catch_warnings(), np.errstate(all="ignore"):  # a diverged run's huge values

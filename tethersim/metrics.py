@@ -38,6 +38,12 @@ def wrap(angle):
     return np.where(w <= -math.pi, w + 2 * math.pi, w)
 
 
+def steady_state_window(t, ss_fraction: float = SS_FRACTION) -> np.ndarray:
+    """Boolean mask of the samples in the last ``ss_fraction`` of the run (times t [s])."""
+    t = np.asarray(t, dtype=float)
+    return t >= t[-1] - ss_fraction * (t[-1] - t[0])
+
+
 def pitch_metrics(t, theta, tol: float = SETTLING_TOL,
                   ss_fraction: float = SS_FRACTION) -> PitchMetrics:
     """Metrics of θ(t) [rad] sampled at times t [s] (uniform or not)."""
@@ -47,7 +53,7 @@ def pitch_metrics(t, theta, tol: float = SETTLING_TOL,
         raise ValueError("pitch_metrics needs at least two samples")
     if not 0 < ss_fraction <= 1:
         raise ValueError(f"ss_fraction = {ss_fraction}: allowed range (0, 1]")
-    tail = t >= t[-1] - ss_fraction * (t[-1] - t[0])
+    tail = steady_state_window(t, ss_fraction)
     theta_ss = float(np.mean(theta[tail]))
     outside = np.nonzero(np.abs(theta - theta_ss) > tol)[0]
     if outside.size == 0:

@@ -92,20 +92,20 @@ def parse_grid(name: str, spec: str) -> np.ndarray:
     return values
 
 
-def parse_assignment(text: str) -> tuple:
-    """'E1=0.006' -> ('E1', 0.006) (edge units)."""
+def parse_assignment(text: str, option: str = "--set") -> tuple:
+    """'E1=0.006' -> ('E1', 0.006) (edge units); ``option`` names the flag in errors."""
     if "=" not in text:
-        raise ValueError(f"--set {text!r}: expected NAME=VALUE, e.g. E1=0.006 (N/mm^2)")
+        raise ValueError(f"{option} {text!r}: expected NAME=VALUE, e.g. E1=0.006")
     name, value = text.split("=", 1)
     name = check_name(name.strip())
-    return name, _float(value.strip(), f"--set {text}")
+    return name, _float(value.strip(), f"{option} {text}")
 
 
 def apply_overrides(sat: Satellite, sets=(), scales=()) -> Satellite:
     """Apply '--set NAME=VALUE' (edge units) then '--scale NAME=FACTOR' to a satellite."""
     values = dict(parse_assignment(s) for s in sets)
     for s in scales:
-        name, factor = parse_assignment(s.replace("--set", "--scale"))
+        name, factor = parse_assignment(s, "--scale")
         values[name] = values.get(name, edge_value(sat, name)) * factor
     if not values:
         return sat

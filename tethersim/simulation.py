@@ -26,8 +26,10 @@ from .stability import rk4_amplification
 METHODS = ("adaptive", "rk4")
 STEPS_PER_PERIOD = 300  # thesis default: 1500 steps for 5 periods (p. 5-1)
 SAMPLES_PER_PERIOD = 200  # adaptive output grid when no steps are given
-CHUNKS = 100  # progress-bar granularity
-MAX_STEPS_PER_PERIOD = 100_000  # ~250x a nominal run: a spinning-up run fails in seconds, not minutes
+CHUNKS = 100  # progress-bar granularity (and how often Ctrl-C is seen)
+# ~2500x a nominal run (steps of ~5 ms): a spinning-up run fails in about a minute, not an
+# hour; no tether of this model's scale (N/mm^2 x 1 mm^2) needs more
+MAX_STEPS_PER_PERIOD = 1_000_000
 
 
 class RK4StepWarning(UserWarning):
@@ -68,6 +70,9 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
     check: estimate the error of the final state (RK4: rerun at half the step;
       adaptive: rerun at rtol/100) and report it in result.error_estimate.
     progress: show a progress bar (None: only if the run takes over a second).
+      False also runs the whole integration in one compiled call (no bar to update):
+      the same steps, fewer GIL hand-overs for sweeps on threads; Ctrl-C is then
+      seen only when the run ends.
     step_warning: RK4 only, warn (RK4StepWarning) when the step exceeds what the
       linearised system supports (sweeps record stability.rk4_amplification instead).
     """
@@ -136,7 +141,7 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
     row, switches, status = 1, 0, "ok"
     message = ""
     t0 = time.perf_counter()
-    chunk = max(1, steps // CHUNKS)
+    chunk = steps if progress is False else max(1, steps // CHUNKS)
     done = 0
     with _bar(periods, f"{sat.name} RK4", progress) as bar:
         try:
@@ -175,11 +180,13 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress) -> S
     t0 = time.perf_counter()
     with _bar(periods, f"{sat.name} DOP853", progress) as bar:
         try:
-            for k in range(1, CHUNKS + 1):
-                t_stop = t_end if k == CHUNKS else t_end * k / CHUNKS
+            # pauses for the bar; they do not change the steps (dop853_run's t_pause)
+            chunks = 1 if progress is False else CHUNKS
+            for k in range(1, chunks + 1):
+                t_pause = math.inf if k == chunks else t_end * k / chunks
                 t_prev = t
-                t, h, i_out, st = dop853_run(cfg, t, t_stop, y, h, p, pw, rtol, atol, locate,
-                                             out_t, out_y, i_out, max_steps, counters)
+                t, h, i_out, st = dop853_run(cfg, t, t_end, y, h, p, pw, rtol, atol, locate,
+                                             out_t, out_y, i_out, max_steps, counters, t_pause)
                 bar.update((t - t_prev) / sat.period)
                 if st != STATUS_OK:
                     status = "diverged" if st == 1 else "failed"

@@ -43,7 +43,7 @@ class TuningError(ValueError):
 class TuneResult:
     satellite: Satellite  # the tuned satellite
     band: tuple  # (E2 low, E2 high) [N] at the tuned E1
-    damping_scan: list  # [(k, class name, settling time [s])]
+    damping_scan: list  # [(k, class name, settling time [s], steady-state pitch [rad])]
     damping_factor: float
     runs: int
 
@@ -95,7 +95,12 @@ def stable_band_E2(sat: Satellite, periods: float = 50.0, model: str = "derived"
 
 def tune(sat: Satellite, E1: float | None = None, periods: float = 50.0, model: str = "derived",
          workers: int | None = None) -> TuneResult:
-    """Tuned moduli and damping for ``sat`` (E1 [N], default the satellite's own)."""
+    """Tuned moduli and damping for ``sat`` (E1 [N], default the satellite's own).
+
+    The thesis damper exerts a torque at rest (docs/torque-balance.md), so damping
+    shifts the trim: the damping is chosen with the pitch trimmed within half the
+    band (|θ_ss| <= tol/2), and E2 is then centred again at the chosen damping.
+    """
     if E1 is not None:
         sat = sat.replace(E1=E1)
     lo, hi, runs = stable_band_E2(sat, periods, model, workers=workers)
@@ -107,11 +112,19 @@ def tune(sat: Satellite, E1: float | None = None, periods: float = 50.0, model: 
     diagonal = [i * len(DAMPING_FACTORS) + i for i in range(len(DAMPING_FACTORS))]
     recs = map_points(spec, diagonal, workers=workers)
     runs += len(recs)
-    scan = [(float(k), CLASSES[r["stability_class"]], r["settling_time"])
+    scan = [(float(k), CLASSES[r["stability_class"]], r["settling_time"], r["steady_state_pitch"])
             for k, r in zip(DAMPING_FACTORS, recs)]
-    ok = [(t, k) for k, name, t in scan if name == CLASSES[STABLE]]
+    ok = [(t, k) for k, name, t, th in scan
+          if name == CLASSES[STABLE] and abs(th) <= 0.5 * SETTLING_TOL]
     if not ok:
         raise TuningError(f"no damping factor in {DAMPING_FACTORS[0]:g}..{DAMPING_FACTORS[-1]:g} "
-                           f"x ({c1:g}, {c2:g}) N s/m settles stably: {scan}")
+                          f"x ({c1:g}, {c2:g}) N s/m settles stably: {scan}")
     _, k = min(ok)
-    return TuneResult(sat.replace(c1=c1 * k, c2=c2 * k), (lo, hi), scan, float(k), runs)
+    damped = sat.replace(c1=c1 * k, c2=c2 * k)
+    lo, hi, more = stable_band_E2(damped, periods, model, workers=workers)
+    tuned = damped.replace(E2=0.5 * (lo + hi))
+    final = _run(tuned, "E2", tuned.E2, periods, model)
+    if final["stability_class"] != STABLE:
+        raise TuningError(f"the re-centred satellite (E2 = {tuned.E2:.6g} N, k = {k:.4g}) is "
+                          f"{CLASSES[final['stability_class']]}, not stable")
+    return TuneResult(tuned, (lo, hi), scan, float(k), runs + more + 1)

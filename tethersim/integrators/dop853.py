@@ -59,10 +59,12 @@ def initial_step(cfg, t0, y0, f0, p, pw, rtol, atol, t_end):
 # nogil: sweeps run many trajectories on threads (tethersim.sweep)
 @njit(cache=True, nogil=True)
 def dop853_run(cfg, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y, i_out,
-               max_steps, counters):
+               max_steps, counters, t_pause=math.inf):
     """Integrate y (in place) from t0 to t_end with DOP853.
 
-    h: first step to try (<= 0: choose one).  Writes the dense output at each
+    h: first step to try (<= 0: choose one).  t_pause: return after the first
+    step that reaches it (the step is not shortened to land on it), so a run
+    split into calls at any pause times takes exactly the steps of one call.  Writes the dense output at each
     out_t[i] in (t0, t_end] into out_y[i], starting at index i_out.
     counters (int64[5]) accumulates: nfev, accepted, rejected, switches, steps.
     Returns (t reached, next step size, next output index, status).
@@ -88,7 +90,7 @@ def dop853_run(cfg, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y, i_
     if not math.isfinite(h):
         return t, h, i_out, STATUS_NONFINITE
     steps = 0
-    while t < t_end:
+    while t < t_end and t < t_pause:
         if steps >= max_steps:
             return t, h, i_out, STATUS_MAX_STEPS
         steps += 1

@@ -12,7 +12,9 @@ from functools import lru_cache
 import numpy as np
 
 from ..classify import FAILED, classify
-from ..metrics import SS_FRACTION, pitch_metrics
+from ..evaluate import family_force_peaks
+from ..metrics import pitch_metrics, steady_state_window
+from ..satellite import parameter_vector
 from ..simulation import simulate
 from ..stability import rk4_amplification
 from .spec import ATOL_PER_RTOL, FAITHFUL_STEPS_PER_PERIOD, SweepSpec
@@ -50,6 +52,8 @@ def run_point(spec: SweepSpec, k: int) -> dict:
         n_out = max(2, round(spec.samples_per_period * spec.periods))
         res = simulate(sat, spec.periods, method="adaptive", model=spec.model, rtol=spec.rtol,
                        atol=spec.rtol * ATOL_PER_RTOL, samples=n_out, check=False, progress=False)
+    if res.status == "interrupted":  # Ctrl-C in the calling thread: stop, do not record
+        raise KeyboardInterrupt
     thesis_step = sat.period / FAITHFUL_STEPS_PER_PERIOD
     rec = dict.fromkeys(NAMES, math.nan)
     rec.update(tumbled=0, upside_down=0, status=STATUS.get(res.status, 2), nfev=res.nfev,
@@ -58,8 +62,8 @@ def run_point(spec: SweepSpec, k: int) -> dict:
         rec["stability_class"] = FAILED
         return rec
     m = pitch_metrics(res.t, res.theta, tol=spec.tol)
-    tail = res.t >= res.t[-1] - SS_FRACTION * (res.t[-1] - res.t[0])
-    peak = np.abs(res.forces).max(axis=(0, 1))  # (coordinate,)
+    tail = steady_state_window(res.t)
+    peak = family_force_peaks(res.cfg, res.states, parameter_vector(sat))  # (coordinate,)
     rec.update(
         stability_class=classify(m, tol=spec.tol), mean_pitch=m.mean_pitch,
         steady_state_pitch=m.steady_state_pitch, settling_time=m.settling_time,

@@ -64,8 +64,13 @@ def map_points(spec: SweepSpec, ks=None, workers: int | None = None) -> list:
     ks = list(range(spec.size)) if ks is None else list(ks)
     spec_json = spec.to_json()
     with executor(workers) as (ex, _):
-        return [rec for f in [ex.submit(run_points, spec_json, [k]) for k in ks]
-                for _, rec in f.result()]
+        futures = [ex.submit(run_points, spec_json, [k]) for k in ks]
+        try:
+            return [rec for f in futures for _, rec in f.result()]
+        except BaseException:
+            for f in futures:  # Ctrl-C or an error: do not run the queued points
+                f.cancel()
+            raise
 
 
 def run_sweep(spec: SweepSpec, out, *, workers: int | None = None, scheduler: str | None = None,
@@ -73,8 +78,9 @@ def run_sweep(spec: SweepSpec, out, *, workers: int | None = None, scheduler: st
               block: int | None = None, stop_after: int | None = None) -> SweepStore:
     """Compute every pending point of ``spec`` into the store at ``out``; return the store.
 
-    Resumes a store made by the same spec.  stop_after: simulate an
-    interruption after that many points (tests of resume).
+    Resumes a store made by the same spec.  Ctrl-C (KeyboardInterrupt) writes every
+    finished point and raises SweepInterrupted; any other error also writes them
+    first.  stop_after: simulate an interruption after that many points (tests).
     """
     store = SweepStore(out, spec, restart=restart)
     pending = store.pending()
@@ -87,35 +93,39 @@ def run_sweep(spec: SweepSpec, out, *, workers: int | None = None, scheduler: st
         futures = [ex.submit(run_points, spec_json, b) for b in blocks]
         bar = tqdm(total=spec.size, initial=spec.size - len(pending), unit="run",
                    desc=f"sweep {spec.satellite.name} {' x '.join(spec.names)}",
-                   disable=progress is False, delay=0 if progress else 1.0,
-                   smoothing=0.05)
+                   disable=progress is False, delay=0 if progress else 1.0, smoothing=0.05)
         last, count = time.monotonic(), 0
         try:
             for fut in cf.as_completed(futures):
-                for k, rec in fut.result():
+                records = fut.result()
+                for k, rec in records:
                     store.put(k, rec)
-                    count += 1
-                bar.update(len(fut.result()))
+                count += len(records)
+                bar.update(len(records))
                 if time.monotonic() - last > FLUSH_SECONDS:
                     store.flush()
                     last = time.monotonic()
                 if stop_after is not None and count >= stop_after:
                     raise KeyboardInterrupt
-        except KeyboardInterrupt:
+        except BaseException as exc:
+            # keep everything finished: queued points are cancelled; on threads the
+            # points running finish (one run each) and are kept; Dask cancels its own
             for f in futures:
                 f.cancel()
-            # keep what is running: it finishes within one run
             for f in futures:
-                if not f.cancelled():
-                    try:
-                        for k, rec in f.result():
-                            if not store.done[k]:
-                                store.put(k, rec)
-                    except cf.CancelledError:
-                        pass
+                if f.cancelled():
+                    continue
+                try:
+                    for k, rec in f.result():
+                        if not store.done[k]:
+                            store.put(k, rec)
+                except (cf.CancelledError, Exception):  # noqa: BLE001 - the first error wins
+                    pass
             store.flush()
             bar.close()
-            raise SweepInterrupted(store) from None
+            if isinstance(exc, KeyboardInterrupt):
+                raise SweepInterrupted(store) from None
+            raise
         store.flush()
         bar.close()
     return store

@@ -14,6 +14,7 @@ A kill loses at most the points finished since the last flush (every
 """
 from __future__ import annotations
 
+import hashlib
 import json
 from pathlib import Path
 
@@ -27,6 +28,16 @@ from .point import VARIABLES
 from .spec import SweepSpec
 
 FILL = {"float64": np.nan, "int8": -1, "int64": -1}
+
+
+def code_id() -> str:
+    """tethersim's version and a hash of the generated model code: a store resumes only
+    with the code that began it, so a finished data set never mixes two models."""
+    import generated
+    digest = hashlib.sha1()
+    for path in sorted(Path(generated.__file__).parent.glob("*.py")):
+        digest.update(path.read_bytes())
+    return f"{__version__}+{digest.hexdigest()[:12]}"
 
 
 class StoreMismatch(ValueError):
@@ -46,7 +57,7 @@ def _empty_dataset(spec: SweepSpec) -> xr.Dataset:
         data[name] = (dims, np.full(spec.shape, FILL[dtype], dtype=dtype), attrs)
     data["done"] = (dims, np.zeros(spec.shape, dtype=bool), {"long_name": "point computed"})
     attrs = {"title": f"tethersim sweep of {spec.satellite.name} over {' x '.join(spec.names)}",
-             "spec": spec.to_json(), "tethersim_version": __version__,
+             "spec": spec.to_json(), "tethersim_version": __version__, "code": code_id(),
              "conventions": "docs/conventions.md; metrics and classes: docs/metrics.md"}
     return xr.Dataset(data, coords=coords, attrs=attrs)
 
@@ -64,6 +75,11 @@ class SweepStore:
                 raise StoreMismatch(
                     f"{self.path} holds a different sweep ({_differences(on_disk.attrs.get('spec'), spec)}); "
                     f"use another --out, or --restart to discard it")
+            if on_disk.attrs.get("code") != code_id():
+                raise StoreMismatch(
+                    f"{self.path} was begun by another tethersim build "
+                    f"({on_disk.attrs.get('code')}, this is {code_id()}): its points would not "
+                    f"match new ones; use another --out, or --restart to discard it")
             ds = on_disk.load()
             on_disk.close()
         else:
