@@ -41,6 +41,11 @@ def add_override_args(parser) -> None:
                         help="multiply a parameter, e.g. --scale c1=10 --scale c2=10; repeatable")
 
 
+def _add_model_arg(parser, note: str = "") -> None:
+    parser.add_argument("--model", choices=_model_names(), default=DEFAULT_MODEL,
+                        help=f"model variant (default {DEFAULT_MODEL}{note})")
+
+
 def _model_names():
     from generated.dispatch import MODEL_NAMES
     return MODEL_NAMES
@@ -183,10 +188,9 @@ def _default_out(satellite: str, suffix: str) -> str:
 
 def cmd_forces(args) -> int:
     """Force breakdown per coordinate (thesis Figs 5.7-5.20, pp. 5-8 to 5-17)."""
-    from .forces import (FAITHFUL_STEPS_PER_PERIOD, SAMPLES_PER_PERIOD, format_table,
-                         largest_forces, write_csv)
+    from .forces import SAMPLES_PER_PERIOD, format_table, largest_forces, write_csv
     from .plot_forces import plot_forces
-    from .simulation import simulate
+    from .simulation import FAITHFUL_STEPS_PER_PERIOD, simulate
 
     sat = _sat_args(args)  # before the run: a bad --set costs nothing
     out = Path(args.out or _default_out(args.satellite, "forces"))
@@ -392,8 +396,7 @@ def build_parser() -> argparse.ArgumentParser:
                      help="the thesis's scheme: fixed-step RK4, tether switches not located")
     run.add_argument("--locate-switches", action="store_true",
                      help="RK4: split steps at taut/slack switches")
-    run.add_argument("--model", choices=_model_names(), default=DEFAULT_MODEL,
-                     help=f"model variant (default {DEFAULT_MODEL}; see docs/errata.md)")
+    _add_model_arg(run, "; see docs/errata.md")
     run.add_argument("--rtol", type=float, default=1e-10, help="adaptive relative tolerance")
     run.add_argument("--out", default="results", help="output folder (default ./results)")
     run.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
@@ -416,8 +419,7 @@ def build_parser() -> argparse.ArgumentParser:
                                     "accelerations vanish; print which tethers are taut, the "
                                     "linear modes and a predicted settling time.")
     eq.add_argument("satellite", help=PRESET_HELP)
-    eq.add_argument("--model", choices=_model_names(), default=DEFAULT_MODEL,
-                    help=f"model variant (default {DEFAULT_MODEL})")
+    _add_model_arg(eq)
     add_override_args(eq)
     eq.set_defaults(func=cmd_equilibrium)
 
@@ -439,8 +441,7 @@ def build_parser() -> argparse.ArgumentParser:
                     help="orbits per run (default 50: three days, thesis p. 5-6)")
     sw.add_argument("--faithful", action="store_true",
                     help="the thesis's fixed RK4 step (26.55 s at 200 km) instead of DOP853")
-    sw.add_argument("--model", choices=_model_names(), default=DEFAULT_MODEL,
-                    help=f"model variant (default {DEFAULT_MODEL})")
+    _add_model_arg(sw)
     sw.add_argument("--rtol", type=float, default=1e-9, help="DOP853 relative tolerance (default 1e-9)")
     sw.add_argument("--workers", type=int, default=None,
                     help="threads on this machine (default: every core)")
@@ -463,8 +464,7 @@ def build_parser() -> argparse.ArgumentParser:
     tn.add_argument("satellite", help=PRESET_HELP)
     tn.add_argument("--E1", type=float, default=None, help="E1 [N/mm^2] (default: the preset's)")
     tn.add_argument("--periods", type=float, default=50.0, help="orbits per run (default 50)")
-    tn.add_argument("--model", choices=_model_names(), default=DEFAULT_MODEL,
-                    help=f"model variant (default {DEFAULT_MODEL})")
+    _add_model_arg(tn)
     tn.add_argument("--workers", type=int, default=None, help="threads (default: every core)")
     tn.add_argument("--out", default=None, help="preset file to write (default results/<sat>-tuned.toml)")
     add_override_args(tn)
@@ -524,8 +524,7 @@ def build_parser() -> argparse.ArgumentParser:
                                      "forces.csv (largest force per coordinate).")
     frc.add_argument("satellite", help=PRESET_HELP)
     frc.add_argument("--periods", type=float, default=50.0, help="orbits to simulate (default 50)")
-    frc.add_argument("--model", choices=_model_names(), default=DEFAULT_MODEL,
-                     help=f"model variant (default {DEFAULT_MODEL})")
+    _add_model_arg(frc)
     frc.add_argument("--faithful", action="store_true",
                      help="the thesis's scheme: fixed-step RK4, 200 steps per orbit (26.55 s "
                           "at 200 km), tether switches not located")

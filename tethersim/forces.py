@@ -58,7 +58,6 @@ SMALL_FRACTION = 0.1  # a family is "small" below 10 % of the largest peak (zoom
 # (~70-80 s, `tethersim equilibrium satI`), so the peaks of the tether modes are
 # resolved; the RK4 run of --faithful keeps its own 200 steps per orbit (26.55 s).
 SAMPLES_PER_PERIOD = 1000
-FAITHFUL_STEPS_PER_PERIOD = 200  # 26.55 s: 50 orbits in 10,000 steps (thesis p. 5-7)
 CSV_HEADER = ("coordinate", "unit", "family", "max_abs_Q", "time [s]", "time [orbits]",
               "runner_up", "runner_up_max_abs_Q")
 

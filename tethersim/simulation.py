@@ -25,6 +25,7 @@ from .stability import rk4_amplification
 
 METHODS = ("adaptive", "rk4")
 STEPS_PER_PERIOD = 300  # thesis default: 1500 steps for 5 periods (p. 5-1)
+FAITHFUL_STEPS_PER_PERIOD = 200  # thesis chapter 5 runs: 50 periods in 10,000 steps, 26.55 s (p. 5-7)
 SAMPLES_PER_PERIOD = 200  # adaptive output grid when no steps are given
 CHUNKS = 100  # progress-bar granularity (and how often Ctrl-C is seen)
 # ~2500x a nominal run (steps of ~5 ms): a spinning-up run fails in about a minute, not an

@@ -15,9 +15,9 @@ from ..classify import FAILED, classify
 from ..evaluate import family_force_peaks
 from ..metrics import pitch_metrics, steady_state_window
 from ..satellite import parameter_vector
-from ..simulation import simulate
+from ..simulation import FAITHFUL_STEPS_PER_PERIOD, simulate
 from ..stability import rk4_amplification
-from .spec import ATOL_PER_RTOL, FAITHFUL_STEPS_PER_PERIOD, SweepSpec
+from .spec import ATOL_PER_RTOL, SweepSpec
 
 # (name, dtype, units, long name): the record of one point, in this order
 VARIABLES = (

@@ -17,9 +17,9 @@ from .. import params
 from ..metrics import SETTLING_TOL
 from ..models import DEFAULT_MODEL, model_index
 from ..satellite import Satellite, SatelliteError
+from ..simulation import FAITHFUL_STEPS_PER_PERIOD
 
 METHODS = ("adaptive", "faithful")
-FAITHFUL_STEPS_PER_PERIOD = 200  # thesis p. 5-7: 50 periods in 10,000 steps (26.55 s)
 SAMPLES_PER_PERIOD = 100  # adaptive output grid for the metrics
 DEFAULT_RTOL = 1e-9
 ATOL_PER_RTOL = 1e-2  # atol = rtol x this: states are O(1) rad and O(10) m
