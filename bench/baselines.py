@@ -114,8 +114,8 @@ def ivp_fun_pydy(f, p):
 
 
 def ivp_fun_numba(cfg, p):
-    """solve_ivp fun(t, y) calling the compiled tethersim.dynamics.derivative."""
-    from tethersim.dynamics import derivative
+    """solve_ivp fun(t, y) calling the compiled tethersim.engine.dynamics.derivative."""
+    from tethersim.engine.dynamics import derivative
 
     pw = p.copy()
 

@@ -25,14 +25,15 @@ def main(out_dir: str) -> None:
     import numba  # noqa: F401
     phases["import numba"] = time.perf_counter() - t
     t = time.perf_counter()
-    from tethersim.cli import build_parser  # noqa: F401
-    from tethersim.simulation import simulate
+    from tethersim.cli.main import build_parser  # noqa: F401
+    import tethersim as ts
+    from tethersim.engine.simulate import simulate
     phases["import tethersim (cli, simulation, integrators from numba cache)"] = (
         time.perf_counter() - t)
     t = time.perf_counter()
-    from tethersim.plots import plot_result
-    phases["import tethersim.plots"] = time.perf_counter() - t
-    from tethersim.presets import resolve
+    from tethersim.output.plots.run import plot_result
+    phases["import tethersim.output.plots.run"] = time.perf_counter() - t
+    from tethersim.model.presets import resolve
     sat = resolve("satI")
     t = time.perf_counter()
     res = simulate(sat, periods=50.0, check=False, progress=False)
@@ -43,16 +44,16 @@ def main(out_dir: str) -> None:
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     t = time.perf_counter()
-    res.to_csv(out / "timeseries.csv")
+    ts.write_timeseries(res, out / "timeseries.csv")
     phases["write CSV"] = time.perf_counter() - t
     t = time.perf_counter()
-    res.to_netcdf(out / "timeseries.nc")
+    ts.write_netcdf(res, out / "timeseries.nc")
     phases["write NetCDF (imports xarray)"] = time.perf_counter() - t
     t = time.perf_counter()
     plot_result(res, out)
     phases["plots (4 PNGs, incl. matplotlib import)"] = time.perf_counter() - t
     t = time.perf_counter()
-    res.summary()
+    ts.run_summary(res)
     phases["summary"] = time.perf_counter() - t
     phases["total in process"] = time.perf_counter() - T_START
     print(json.dumps(phases))

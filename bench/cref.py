@@ -7,9 +7,9 @@ order="canonical")`` call, same tether gating), only with a C printer; the
 numba print of each block is checked against ``codegen._block``.  Around it
 sit hand-written C ports of the runtime's drivers:
 
-  derivative   10-state (attitude + two-body orbit), tethersim/dynamics.py
-  rk4_run      tethersim/integrators/rk4.py (locate=False path)
-  dop853_run   tethersim/integrators/dop853.py with steps.py and switching.py
+  derivative   10-state (attitude + two-body orbit), tethersim/engine/dynamics.py
+  rk4_run      tethersim/engine/integrators/rk4.py (locate=False path)
+  dop853_run   tethersim/engine/integrators/dop853.py with steps.py and switching.py
                (same tableau, error norm, step control, dense output, event
                location and nfev accounting)
 
@@ -158,12 +158,12 @@ static inline void rhs6(double t, const double *y, const double *p, double *dydt
 @RHS@
 }
 
-/* tethersim/dynamics.py:derivative (uniform density) */
+/* tethersim/engine/dynamics.py:derivative (uniform density) */
 static inline void derivative(double t, const double *y, const double *p, double *dydt)
 {
     rhs6(t, y, p, dydt);
     const double X = y[6], Y = y[7];
-    const double r2 = X * X + Y * Y;  /* as tethersim/dynamics.py */
+    const double r2 = X * X + Y * Y;  /* as tethersim/engine/dynamics.py */
     const double k = -p[P_MU] / (r2 * sqrt(r2));
     dydt[6] = y[8];
     dydt[7] = y[9];
@@ -204,7 +204,7 @@ double c_derivative_loop(double *y, const double *p, long n, double eps)
     return acc;
 }
 
-/* ---------------- RK4: tethersim/integrators/steps.py:rk4_step, rk4.py:rk4_run */
+/* ---------------- RK4: tethersim/engine/integrators/steps.py:rk4_step, rk4.py:rk4_run */
 static void rk4_step(double t, const double *y, double h, const double *p,
                      double work[5][NS], double *y_new)
 {
@@ -241,7 +241,7 @@ int c_rk4_run(double t0, double *y, double h, long n_steps, long stride, const d
     return 0;
 }
 
-/* ---------------- DOP853: tethersim/integrators/steps.py, dop853.py, switching.py */
+/* ---------------- DOP853: tethersim/engine/integrators/steps.py, dop853.py, switching.py */
 #define SAFETY 0.9
 #define MIN_FACTOR 0.2
 #define MAX_FACTOR 10.0
@@ -472,8 +472,8 @@ done:
 
 def c_source(model, length_defs) -> tuple[str, dict]:
     """The C file's text and facts about it (cse temporaries; same-cse check done)."""
-    from generated import layout
-    from tethersim.integrators import dop853_tableau as tab
+    from tethersim.generated import layout
+    from tethersim.engine.integrators import dop853_tableau as tab
 
     body, blocks, n_tmp = rhs_c_body(model, length_defs)
     check_same_cse(blocks)

@@ -11,10 +11,10 @@ import math
 import numpy as np
 from numba import njit
 
-from generated.derived import rhs
-from generated.derived import rhs as derived_rhs
-from generated.layout import P_MU
-from tethersim.dynamics import derivative
+from tethersim.generated.derived import rhs
+from tethersim.generated.derived import rhs as derived_rhs
+from tethersim.generated.layout import P_MU
+from tethersim.engine.dynamics import derivative
 
 
 @njit(cache=False)
@@ -32,7 +32,7 @@ def rhs6_loop(y, p, n, eps):
 
 @njit(cache=False)
 def derivative_loop(cfg, y, p, pw, n, eps):
-    """n calls of tethersim.dynamics.derivative (10-state, model dispatch)."""
+    """n calls of tethersim.engine.dynamics.derivative (10-state, model dispatch)."""
     dydt = np.empty(10)
     acc = 0.0
     for _ in range(n):
@@ -45,7 +45,7 @@ def derivative_loop(cfg, y, p, pw, n, eps):
 
 @njit(cache=False)
 def _derivative_fixed_model(t, y, p, dydt):
-    """Diagnostic twin of tethersim.dynamics.derivative with the model fixed at
+    """Diagnostic twin of tethersim.engine.dynamics.derivative with the model fixed at
     compile time (no cfg, no runtime model dispatch): shows what the dispatch costs."""
     derived_rhs(t, y[:6], p, dydt[:6])
     X, Y = y[6], y[7]

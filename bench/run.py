@@ -116,10 +116,10 @@ def _fmt(v, unit):
 def load_satellite():
     """The SatI preset; the /tmp/t1.py satellite if presets are not available."""
     try:
-        from tethersim.presets import load_preset
+        from tethersim.model.presets import load_preset
         return load_preset("satI"), "preset satI"
     except Exception as exc:  # noqa: BLE001
-        from tethersim.satellite import Satellite
+        from tethersim.model.satellite import Satellite
         sat = Satellite("t", m1=10, m2=105, m3=1, A1=0.25, A2=1.0, A3=11.4, a=1.0, b=10.5,
                         l10=6, l20=6, E1=0.004, E2=0.042, c1=0.01, c2=0.01, altitude=200e3,
                         initial=(28.0, 0, math.pi / 6, 0, 0, 0))
@@ -132,8 +132,8 @@ def setup(rep: Report):
     from derive.pipeline import derive, to_state_symbols
 
     import cref
-    from tethersim.dynamics import initial_state
-    from tethersim.satellite import parameter_vector
+    from tethersim.engine.dynamics import initial_state
+    from tethersim.model.satellite import parameter_vector
 
     sat, what = load_satellite()
     log(f"satellite: {sat.name} ({what}); period {sat.period:.1f} s")
@@ -165,7 +165,7 @@ def setup(rep: Report):
 
 def validate_rhs(rep: Report, S, lamb, pydy_f):
     """The kernels being compared compute the same numbers (incl. slack tethers)."""
-    from generated.derived import rhs
+    from tethersim.generated.derived import rhs
     rng = np.random.default_rng(1)
     p, y0 = S["p"], S["y0"]
     err_c, err_l, err_py, slack = 0.0, 0.0, 0.0, 0
@@ -193,7 +193,7 @@ def validate_rhs(rep: Report, S, lamb, pydy_f):
 
 
 def _tether_margins(y, p):
-    from tethersim.dynamics import tether_margins
+    from tethersim.engine.dynamics import tether_margins
     g = np.empty(2)
     tether_margins(np.ascontiguousarray(y, dtype=float), p, g)
     return g
@@ -202,7 +202,7 @@ def _tether_margins(y, p):
 # --------------------------------------------------------------------------- 1
 def bench_rhs(rep: Report, S, q, lamb, pydy_f, pydy_gen):
     import nbloops
-    from generated.derived import rhs
+    from tethersim.generated.derived import rhs
     log("\n[1] one call of the generated 6-state RHS (generated.derived.rhs)")
     p, y6 = S["p"], S["y0"][:6].copy()
     y10 = S["y0"].copy()
@@ -236,7 +236,7 @@ def bench_rhs(rep: Report, S, q, lamb, pydy_f, pydy_gen):
     c = rep.fig("rhs.c", "C rhs (gcc -O3), per call in a C loop", median(res["c"]), "s", res["c"])
     cn = rep.fig("rhs.c_native", "C rhs (gcc -O3 -march=native), per call",
                  median(res["c_native"]), "s", res["c_native"])
-    nb10 = rep.fig("rhs.numba_deriv10", "numba tethersim.dynamics.derivative (10-state, dispatch)",
+    nb10 = rep.fig("rhs.numba_deriv10", "numba tethersim.engine.dynamics.derivative (10-state, dispatch)",
                    median(res["numba_deriv10"]), "s", res["numba_deriv10"])
     rep.fig("rhs.numba_deriv10_fixed", "  diagnostic: same, model fixed at compile time "
             "(no dispatch)", median(res["numba_deriv10_fixed"]), "s", res["numba_deriv10_fixed"])
@@ -284,7 +284,7 @@ def bench_rhs(rep: Report, S, q, lamb, pydy_f, pydy_gen):
 
 # --------------------------------------------------------------------------- 2
 def bench_rk4(rep: Report, S, q):
-    from tethersim.integrators.rk4 import rk4_run
+    from tethersim.engine.integrators.rk4 import rk4_run
     log(f"\n[2] RK4, {PERIODS} periods in {RK4_STEPS} steps, 10-state (attitude + orbit)")
     sat, p, y0, cfg = S["sat"], S["p"], S["y0"], S["cfg"]
     pw = p.copy()
@@ -336,7 +336,7 @@ def bench_rk4(rep: Report, S, q):
 # --------------------------------------------------------------------------- 3, 4
 def dop853_numba(S, periods, locate=True):
     """One numba dop853_run from t=0 over `periods`; returns (seconds, counters, y, out_y)."""
-    from tethersim.integrators.dop853 import dop853_run
+    from tethersim.engine.integrators.dop853 import dop853_run
     sat, p, y0, cfg = S["sat"], S["p"], S["y0"], S["cfg"]
     T = periods * sat.period
     n_out = max(2, round(SAMPLES_PER_PERIOD * periods))
@@ -542,7 +542,7 @@ def bench_cli(rep: Report, q):
     if not exe.exists():
         exe = shutil.which("tethersim")
     try:
-        from tethersim.presets import load_preset
+        from tethersim.model.presets import load_preset
         load_preset("satI")
         have = exe is not None
     except Exception:  # noqa: BLE001

@@ -21,7 +21,7 @@ GRID = (np.linspace(0.0036, 0.0044, 12), np.linspace(0.039, 0.047, 12))  # N/mm^
 
 def bench_sweep(rep, q):
     from tethersim import load_preset
-    from tethersim.sweep import SweepSpec, run_sweep
+    from tethersim.experiments.sweep import SweepSpec, run_sweep
 
     sat = load_preset("satI")
     spec = SweepSpec(sat, (("E1", GRID[0].tolist()), ("E2", GRID[1].tolist())), periods=50.0)

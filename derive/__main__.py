@@ -12,34 +12,6 @@ from .pipeline import derive
 from .symbols import state_substitution
 
 
-CACHE_PRELUDE = r'''import hashlib
-import os
-from pathlib import Path
-
-import numba
-
-
-def _source_keyed_cache_dir() -> str:
-    """numba's on-disk cache folder, keyed on every kernel source file.
-
-    numba revalidates a cached function against its own file only, so a loop in
-    tethersim/ that inlines an edited generated kernel (or an edited tethersim
-    helper) would keep running the old code.  Hashing all of generated/ and
-    tethersim/ into the folder name makes any edit start a fresh cache.
-    """
-    here = Path(__file__).resolve().parent
-    digest = hashlib.sha1()
-    for folder in (here, here.parent / "tethersim"):
-        for f in sorted(folder.rglob("*.py")):
-            digest.update(f.read_bytes())
-    base = os.environ.get("NUMBA_CACHE_DIR") or os.path.join(
-        os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"),
-        "tethersim", "numba")
-    return os.path.join(base, digest.hexdigest()[:16])
-
-
-numba.config.CACHE_DIR = _source_keyed_cache_dir()
-'''.splitlines()
 
 
 def main(argv=None) -> int:
@@ -59,8 +31,7 @@ def main(argv=None) -> int:
         print(f"  {defn.name:<17} -> {out.name}/{fname}")
     (out / "layout.py").write_text(codegen.layout_source(FAMILY_ORDER))
     init = ['"""GENERATED FILE - DO NOT EDIT.  Numba kernels of every model variant."""',
-            *CACHE_PRELUDE,
-            "from . import layout  # noqa: E402", *(f"from . import {n}  # noqa: E402" for n in names), "",
+            "from . import layout", *(f"from . import {n}" for n in names), "",
             "MODELS = {", *(f"    {d.name!r}: {n}," for d, n in zip(DEFINITIONS, names)), "}", ""]
     (out / "__init__.py").write_text("\n".join(init))
     (out / "dispatch.py").write_text(codegen.dispatch_source(DEFINITIONS))

@@ -9,13 +9,12 @@ import functools
 
 import pytest
 
-from derive.kinematics import planar_kinematics
-from derive.models import BY_NAME
-from derive.pipeline import derive, to_state_symbols
-
 
 @functools.lru_cache(maxsize=None)
 def _derived(name: str):
+    # derive/ (sympy) is imported only by the tests that use these fixtures
+    from derive.models import BY_NAME
+    from derive.pipeline import derive
     return derive(BY_NAME[name])
 
 
@@ -28,10 +27,12 @@ def derived_model():
 @pytest.fixture(scope="session")
 def kin():
     """The thesis geometry, Eqs 3.10-3.17 (derive.kinematics.planar_kinematics)."""
+    from derive.kinematics import planar_kinematics
     return planar_kinematics()
 
 
 @pytest.fixture(scope="session")
 def tether_length_defs(kin):
     """{λ1: Eq 3.41, λ2: Eq 3.42} in the plain state symbols."""
+    from derive.pipeline import to_state_symbols
     return {lam: to_state_symbols(d) for lam, d in kin.tether_length_defs.items()}

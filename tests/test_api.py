@@ -12,9 +12,9 @@ import numpy as np
 import pytest
 
 import tethersim
-from generated.layout import FAMILIES, STATE
+from tethersim.generated.layout import FAMILIES, STATE
 from tethersim import RK4StepWarning, SimResult, accelerations, generalized_forces
-from tethersim.constants import MU_EARTH, OMEGA_EARTH, R_EARTH
+from tethersim.model.constants import MU_EARTH, OMEGA_EARTH, R_EARTH
 
 SAT = tethersim.load_preset("satI")
 # (δx, δy, θ, δẋ, δẏ, θ̇): balloon in the wake with both tethers taut and every term
@@ -335,8 +335,8 @@ def test_simulate_run_is_checked_and_converged(short_run):
     assert "converged" in short_run.label
 
 
-def test_to_csv_round_trips(short_run, tmp_path):
-    path = short_run.to_csv(tmp_path / "run.csv")
+def test_timeseries_csv_round_trips_exactly(short_run, tmp_path):
+    path = tethersim.write_timeseries(short_run, tmp_path / "run.csv")
     header = path.read_text().splitlines()[0]
     assert header.startswith("t [s],delta_x [m],delta_y [m],theta [rad]")
     data = np.loadtxt(path, delimiter=",", skiprows=1)
@@ -393,4 +393,4 @@ def test_stable_rk4_step_does_not_warn():
         res = tethersim.simulate(SAT, periods=5, steps=1500, method="rk4", check=False,
                                  progress=False)
     assert res.status == "ok"
-    assert not res.metrics.tumbled
+    assert not tethersim.outcome(res).metrics.tumbled

@@ -7,21 +7,26 @@ from __future__ import annotations
 
 import numpy as np
 
-from generated import dispatch
-from generated.layout import FAMILIES, PARAMETERS, STATE
+from tethersim import _jit  # noqa: F401  (first: numba's cache folder, before any kernel)
+from tethersim.generated import dispatch
+from tethersim.generated.layout import FAMILIES, PARAMETERS, STATE
 
-from .dynamics import body_densities
-from .models import DEFAULT_MODEL, model_index
-from .presets import load, load_preset
-from .result import SimResult
-from .satellite import Satellite, SatelliteError, parameter_vector
-from .satellite import parameters as _parameters
-from .simulation import RK4StepWarning, simulate
+from tethersim.engine.dynamics import body_densities
+from tethersim.model.registry import DEFAULT_MODEL, model_index
+from tethersim.model.presets import load, load_preset
+from tethersim.engine.result import SimResult
+from tethersim.model.satellite import Satellite, SatelliteError, parameter_vector
+from tethersim.model.satellite import parameters as _parameters
+from tethersim.engine.simulate import RK4StepWarning, simulate
+from tethersim.analysis.outcome import Outcome, outcome
+from tethersim.analysis.summary import run_summary
+from tethersim.output.tables import write_netcdf, write_table, write_timeseries
 
-__all__ = ["Satellite", "SatelliteError", "SimResult", "RK4StepWarning", "load", "load_preset",
-           "simulate", "accelerations", "generalized_forces", "parameters", "MODELS",
-           "FAMILIES", "STATE", "PARAMETERS"]
-__version__ = "0.1.0"
+__all__ = ["Satellite", "SatelliteError", "SimResult", "RK4StepWarning", "Outcome", "load",
+           "load_preset", "simulate", "outcome", "run_summary", "write_timeseries",
+           "write_netcdf", "write_table", "accelerations", "generalized_forces", "parameters",
+           "MODELS", "FAMILIES", "STATE", "PARAMETERS", "__version__"]
+from tethersim._version import __version__  # noqa: E402
 MODELS = dispatch.MODEL_NAMES
 
 

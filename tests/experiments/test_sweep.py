@@ -1,0 +1,195 @@
+"""Sweeps: grid = points run one by one; resume (Ctrl-C and kill) = uninterrupted; Dask = threads."""
+from __future__ import annotations
+
+import math
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import tethersim as ts
+
+from tethersim import load_preset, simulate
+from tethersim.analysis.classify import classify
+from tethersim.cli.main import main
+from tethersim.analysis.metrics import pitch_metrics
+from tethersim.model.params import parse_grid
+from tethersim.model.satellite import SatelliteError
+from tethersim.experiments.sweep import StoreMismatch, SweepInterrupted, SweepSpec, run_sweep, sweep
+from tethersim.experiments.sweep.spec import ATOL_PER_RTOL, DEFAULT_RTOL, SAMPLES_PER_PERIOD
+
+SAT = load_preset("satI")
+# E1 x E2 around the preset (E1 0.004, E2 0.0427 N/mm^2): both sides of the stable band
+AXES = {"E1": [0.0038, 0.0042], "E2": [0.041, 0.043, 0.045]}
+PERIODS = 2.0
+
+
+def _spec(**kw):
+    return SweepSpec(SAT, tuple(AXES.items()), periods=PERIODS, **kw)
+
+
+@pytest.fixture(scope="module")
+def reference(tmp_path_factory):
+    """An uninterrupted sweep on the default thread pool."""
+    out = tmp_path_factory.mktemp("ref") / "sweep.zarr"
+    return run_sweep(_spec(), out, progress=False).dataset()
+
+
+def test_sweep_points_equal_the_same_runs_simulated_one_by_one(reference):
+    ds = reference
+    assert ds.stability_class.dims == ("E2", "E1")
+    for e1 in AXES["E1"]:
+        for e2 in AXES["E2"]:
+            sat = SAT.replace(E1=e1, E2=e2)  # N/mm^2 x 1 mm^2 = N
+            res = simulate(sat, PERIODS, rtol=DEFAULT_RTOL, atol=DEFAULT_RTOL * ATOL_PER_RTOL,
+                           samples=round(SAMPLES_PER_PERIOD * PERIODS), check=False,
+                           progress=False)
+            m = pitch_metrics(res.t, res.theta)
+            point = ds.sel(E1=e1, E2=e2)
+            assert point.done.item()
+            assert point.steady_state_pitch.item() == m.steady_state_pitch
+            assert point.mean_pitch.item() == m.mean_pitch
+            assert point.stability_class.item() == classify(m)
+            np.testing.assert_equal(point.settling_time.item(), m.settling_time)
+            assert point.nfev.item() == res.nfev
+            assert point.max_force_theta.item() == np.abs(res.forces[:, :, 2]).max()
+
+
+def test_sweep_grid_labels_carry_units_and_class_meanings(reference):
+    assert reference.E1.attrs["units"] == "N/mm^2"
+    assert reference.settling_time.attrs["units"] == "s"
+    assert reference.stability_class.attrs["flag_meanings"].split()[0] == "stable"
+
+
+def test_interrupted_sweep_resumes_to_the_uninterrupted_data(reference, tmp_path):
+    out = tmp_path / "sweep.zarr"
+    with pytest.raises(SweepInterrupted) as info:
+        run_sweep(_spec(), out, workers=2, progress=False, stop_after=2)
+    partial = xr.open_zarr(out).load()
+    n_done = int(partial.done.sum())
+    assert 2 <= n_done < partial.done.size, "the interruption kept the finished points only"
+    assert str(out) in str(info.value)
+    resumed = run_sweep(_spec(), out, workers=1, progress=False).dataset()
+    xr.testing.assert_identical(resumed, reference)
+
+
+def test_killed_sweep_resumes_to_the_uninterrupted_data(reference, tmp_path):
+    """SIGKILL (no clean-up at all) mid-sweep: finished, flushed points survive."""
+    out = tmp_path / "sweep.zarr"
+    script = (
+        "import time, tethersim.experiments.sweep.runner as r\n"
+        "r.FLUSH_SECONDS = 0.0\n"
+        # pace the points (data unchanged) so that the kill lands mid-sweep
+        "fast = r.run_points\n"
+        "r.run_points = lambda *a: (fast(*a), time.sleep(1.0))[0]\n"
+        "from tethersim.experiments.sweep import run_sweep\n"
+        "from tests.experiments.test_sweep import _spec\n"
+        f"run_sweep(_spec(), {str(out)!r}, workers=1, progress=False)\n")
+    proc = subprocess.Popen([sys.executable, "-c", script], cwd=Path(__file__).parents[2])
+    try:
+        deadline = time.monotonic() + 300
+        while time.monotonic() < deadline:
+            time.sleep(0.05)
+            if (out / ".zmetadata").exists():
+                try:
+                    done = xr.open_zarr(out).done.values
+                except (OSError, ValueError, KeyError):
+                    continue
+                if done.sum() >= 1:
+                    break
+        else:
+            pytest.fail("the sweep subprocess produced no point")
+        proc.send_signal(signal.SIGKILL)
+        proc.wait(timeout=30)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+    partial = xr.open_zarr(out).load()
+    finished = partial.done.values
+    assert 1 <= finished.sum() < finished.size, "killed before the end, after a flush"
+    # every point marked done holds its data: compare with the reference right away
+    np.testing.assert_array_equal(partial.steady_state_pitch.values[finished],
+                                  reference.steady_state_pitch.values[finished])
+    resumed = run_sweep(_spec(), out, progress=False).dataset()
+    xr.testing.assert_identical(resumed, reference)
+
+
+def test_dask_local_cluster_gives_the_thread_pool_data(reference, tmp_path):
+    ds = run_sweep(_spec(), tmp_path / "sweep.zarr", dask_workers=2, progress=False).dataset()
+    xr.testing.assert_identical(ds, reference)
+
+
+def test_faithful_sweep_uses_the_thesis_step_and_differs_from_adaptive(tmp_path):
+    spec = SweepSpec(SAT, (("E2", [0.0427]),), periods=PERIODS, method="faithful")
+    ds = run_sweep(spec, tmp_path / "f.zarr", progress=False).dataset()
+    res = simulate(SAT, PERIODS, steps=round(200 * PERIODS), method="rk4", check=False,
+                   progress=False)
+    assert math.isclose(res.step, 26.55, rel_tol=1e-3)  # thesis p. 5-7
+    assert ds.steady_state_pitch.item() == ts.outcome(res).metrics.steady_state_pitch
+    assert ds.nfev.item() == res.nfev
+
+
+def test_resuming_a_different_sweep_in_the_same_store_is_refused(reference, tmp_path):
+    out = tmp_path / "sweep.zarr"
+    run_sweep(SweepSpec(SAT, (("E2", [0.0427]),), periods=1.0), out, progress=False)
+    with pytest.raises(StoreMismatch, match="periods"):
+        run_sweep(SweepSpec(SAT, (("E2", [0.0427]),), periods=2.0), out, progress=False)
+
+
+def test_a_grid_with_an_invalid_satellite_fails_before_any_run_naming_the_point():
+    with pytest.raises(SatelliteError, match=r"sweep point .*l10 = -1"):
+        SweepSpec(SAT, (("l10", [6.0, -1.0]),))
+
+
+@pytest.mark.parametrize("spec, values", [
+    ("0:0.02:5", [0, 0.005, 0.01, 0.015, 0.02]),
+    ("0.1,0.3", [0.1, 0.3]),
+    ("2:2:1", [2.0]),
+])
+def test_grid_specs_parse_to_inclusive_values(spec, values):
+    np.testing.assert_allclose(parse_grid("E1", spec), values)
+
+
+@pytest.mark.parametrize("spec, message", [
+    ("0:1", "start:stop:count"), ("0:1:x", "count"), ("0:1:0", "count"),
+    ("a,b", "not a number"), ("1,1", "repeat"), ("0:nan:3", "finite"),
+])
+def test_bad_grid_specs_are_refused_naming_the_option(spec, message):
+    with pytest.raises(ValueError, match=message) as info:
+        parse_grid("E1", spec)
+    assert "--E1" in str(info.value)
+
+
+def test_sweep_function_returns_the_store_dataset(tmp_path):
+    ds = sweep(SAT, {"c1": [3e-4]}, tmp_path / "s.zarr", periods=1.0, progress=False)
+    assert ds.c1.values.tolist() == [3e-4] and bool(ds.done.all())
+
+
+def test_cli_sweep_writes_store_csv_and_map(tmp_path, capsys):
+    out = tmp_path / "cli"
+    rc = main(["sweep", "satI", "--E1", "0.0038,0.0042", "--E2", "0.042:0.043:2",
+               "--periods", "1", "--out", str(out), "--quiet"])
+    assert rc == 0
+    for name in ("sweep.zarr", "sweep.csv", "stability_map.png"):
+        assert (out / name).exists()
+    text = capsys.readouterr().out
+    assert "4 runs of 1 orbits" in text and "stable" in text
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--periods", "1"], "one or two grids"),
+    (["--E1", "0:1:2", "--E2", "0:1:2", "--c1", "0:1:2"], "one or two grids"),
+    (["--E1", "0:0.01"], "start:stop:count"),
+    (["--E1", "0.004", "--workers", "0"], "--workers 0"),
+    (["--E1", "0.004", "--workers", "2", "--dask-workers", "2"], "alternatives"),
+    (["--l10=-1,6"], "l10 = -1"),
+])
+def test_cli_sweep_bad_input_exits_2_naming_the_field(argv, message, tmp_path, capsys):
+    rc = main(["sweep", "satI", *argv, "--out", str(tmp_path / "x"), "--quiet"])
+    assert rc == 2
+    assert message in capsys.readouterr().err

@@ -1,0 +1,184 @@
+"""The one outcome of a run: metrics, class, trail, force peaks, error estimate.
+
+Every consumer (``tethersim run``'s summary, compare, headlines, sweeps, tune,
+the report) computes what a run *means* here, with one rule for runs that did
+not finish:
+
+* a run **counts** when its status is ``"ok"``, it has at least two samples and
+  every pitch sample is finite; its class comes from its pitch metrics
+  (:func:`tethersim.analysis.classify.classify`, docs/metrics.md);
+* any other run (``"diverged"``, ``"failed"``, ``"interrupted"``, a NaN sample)
+  is class ``failed`` and ``reason`` says why.  Its metrics are still computed
+  on the finite samples before the first non-finite one, for display only.
+
+Callers that must not record a truncated run (sweeps, headlines) test
+``outcome.status == "interrupted"`` themselves.
+"""
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import asdict, dataclass
+
+import numpy as np
+
+from tethersim.analysis.classify import CLASSES, FAILED, classify
+from tethersim.analysis.metrics import (SETTLING_TOL, PitchMetrics, pitch_metrics,
+                                        steady_state_window)
+from tethersim.engine.evaluate import family_force_peaks
+from tethersim.engine.result import SimResult
+from tethersim.model.satellite import parameter_vector
+
+NAN3 = (math.nan, math.nan, math.nan)
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """What one run amounts to (SI units).
+
+    Attributes
+    ----------
+    status : str
+        The run's status (``"ok"``, ``"diverged"``, ``"failed"``, ``"interrupted"``).
+    reason : str
+        Why the class is ``failed`` (empty for a run that counts).
+    stability_class : int
+        Code in :data:`tethersim.analysis.classify.CLASSES`.
+    metrics : PitchMetrics or None
+        Pitch metrics over the finite samples (None: fewer than two).
+    trail_delta_x, trail_delta_y : float
+        Balloon offset averaged over the steady-state window [m].
+    max_force : tuple of float
+        Largest |Q| of a single force family on (δx [N], δy [N], θ [N m]);
+        NaN when not computed.
+    error_estimate : tuple or None
+        Estimated final error (δx [m], δy [m], θ [rad]) if the run was checked.
+    converged : bool or None
+        Whether that estimate is within the convergence bounds.
+    """
+
+    status: str
+    reason: str
+    stability_class: int
+    metrics: PitchMetrics | None
+    trail_delta_x: float
+    trail_delta_y: float
+    max_force: tuple
+    error_estimate: tuple | None
+    converged: bool | None
+
+    @property
+    def class_name(self) -> str:
+        """Name of the stability class (``stable``, ``offset`` ... ``failed``)."""
+        return CLASSES[self.stability_class]
+
+    @property
+    def counts(self) -> bool:
+        """True when the run finished and its class comes from its metrics."""
+        return not self.reason
+
+    def row(self) -> dict:
+        """The outcome as one flat table row (keys are :data:`ROW_COLUMNS`)."""
+        m = self.metrics
+        err = self.error_estimate
+        return {
+            "status": self.status,
+            "class": self.class_name,
+            "mean_pitch": m.mean_pitch if m else math.nan,
+            "steady_state_pitch": m.steady_state_pitch if m else math.nan,
+            "settling_time_h": m.settling_time / 3600 if m else math.nan,
+            "tumbled": bool(m.tumbled) if m else None,
+            "upside_down": bool(m.upside_down) if m else None,
+            "trail_delta_x": self.trail_delta_x,
+            "trail_delta_y": self.trail_delta_y,
+            "max_force_delta_x": self.max_force[0],
+            "max_force_delta_y": self.max_force[1],
+            "max_force_theta": self.max_force[2],
+            "converged": self.converged,
+            "error_theta": err[2] if err else math.nan,
+            "error_position": max(err[0], err[1]) if err else math.nan,
+        }
+
+    def to_dict(self) -> dict:
+        """All fields as plain Python values (metrics nested)."""
+        d = asdict(self)
+        d["class"] = self.class_name
+        return d
+
+
+# (key, header with unit) of Outcome.row(), in order: one layout for every table
+ROW_COLUMNS = (
+    ("status", "status"),
+    ("class", "class"),
+    ("mean_pitch", "mean pitch [rad]"),
+    ("steady_state_pitch", "steady-state pitch [rad]"),
+    ("settling_time_h", "settling time [h]"),
+    ("tumbled", "tumbled"),
+    ("upside_down", "upside down"),
+    ("trail_delta_x", "trail delta_x [m]"),
+    ("trail_delta_y", "trail delta_y [m]"),
+    ("max_force_delta_x", "largest family force on delta_x [N]"),
+    ("max_force_delta_y", "largest family force on delta_y [N]"),
+    ("max_force_theta", "largest family torque on theta [N m]"),
+    ("converged", "converged"),
+    ("error_theta", "estimated final error theta [rad]"),
+    ("error_position", "estimated final error position [m]"),
+)
+
+
+def finite_prefix(res: SimResult) -> int:
+    """Number of leading samples whose state is finite."""
+    bad = np.nonzero(~np.all(np.isfinite(res.states), axis=1))[0]
+    return int(bad[0]) if bad.size else res.t.size
+
+
+def outcome(res: SimResult, tol: float = SETTLING_TOL, forces: bool = True) -> Outcome:
+    """The :class:`Outcome` of a run.
+
+    Parameters
+    ----------
+    res : SimResult
+        A finished (or stopped) run.
+    tol : float, optional
+        Settling band [rad] (thesis ±0.05 rad, p. 5-18).
+    forces : bool, optional
+        Also find the largest force of a single family on each coordinate
+        (evaluates the force kernels at every sample).
+
+    Returns
+    -------
+    Outcome
+
+    Examples
+    --------
+    >>> import tethersim as ts
+    >>> res = ts.simulate(ts.load_preset("satI"), periods=1, progress=False)
+    >>> ts.outcome(res).status
+    'ok'
+    """
+    n = finite_prefix(res)
+    t, states = res.t[:n], res.states[:n]
+    reason = ""
+    if res.status != "ok":
+        reason = res.message or res.status
+    elif n < res.t.size:
+        reason = f"non-finite state at t = {res.t[n]:.6g} s"
+    elif n < 2:
+        reason = "fewer than two samples"
+    m = None
+    if n >= 2:
+        with warnings.catch_warnings(), np.errstate(all="ignore"):
+            warnings.simplefilter("ignore", RuntimeWarning)  # a diverging run's huge values
+            m = pitch_metrics(t, states[:, 2], tol=tol)
+    cls = FAILED if reason else classify(m, tol=tol)
+    trail = (math.nan, math.nan)
+    if n >= 2:
+        tail = steady_state_window(t)
+        trail = (float(np.mean(states[tail, 0])), float(np.mean(states[tail, 1])))
+    peak = NAN3
+    if forces and n >= 1:
+        peak = tuple(float(v) for v in family_force_peaks(res.cfg, states,
+                                                           parameter_vector(res.satellite)))
+    return Outcome(status=res.status, reason=reason, stability_class=int(cls), metrics=m,
+                   trail_delta_x=trail[0], trail_delta_y=trail[1], max_force=peak,
+                   error_estimate=res.error_estimate, converged=res.converged)

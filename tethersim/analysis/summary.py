@@ -1,0 +1,54 @@
+"""The summary of one run that ``tethersim run`` prints and writes (summary.json)."""
+from __future__ import annotations
+
+import numpy as np
+
+from tethersim.analysis.outcome import Outcome, finite_prefix, outcome
+from tethersim.engine.result import SimResult
+from tethersim.generated.layout import FAMILIES
+
+
+def run_summary(res: SimResult, out: Outcome | None = None) -> dict:
+    """Label, pitch metrics, largest tensions and forces (with their family), status.
+
+    Parameters
+    ----------
+    res : SimResult
+        The run.
+    out : Outcome, optional
+        Its outcome, if already computed.
+
+    Returns
+    -------
+    dict
+        Keys carry their units (``"settling time [h]"``); NaN means "never".
+    """
+    out = outcome(res, forces=False) if out is None else out
+    m = out.metrics
+    period = res.satellite.period
+    n = max(1, finite_prefix(res))  # a diverged run: up to its last finite sample
+    tension = res.tether_tensions()[:n].max(axis=0)
+    peak = np.abs(res.forces[:n]).max(axis=0)  # (family, coordinate)
+    biggest = peak.argmax(axis=0)
+    nan = float("nan")
+    return {
+        "label": res.label,
+        "class": out.class_name,
+        "mean pitch [rad]": m.mean_pitch if m else nan,
+        "steady-state pitch [rad]": m.steady_state_pitch if m else nan,
+        "settling time [orbits]": m.settling_time / period if m else nan,
+        "settling time [h]": m.settling_time / 3600 if m else nan,
+        "largest tension tether 1 [N]": float(tension[0]),
+        "largest tension tether 2 [N]": float(tension[1]),
+        "largest force on dx [N]": float(peak[biggest[0], 0]),
+        "largest force on dx: family": FAMILIES[biggest[0]],
+        "largest force on dy [N]": float(peak[biggest[1], 1]),
+        "largest force on dy: family": FAMILIES[biggest[1]],
+        "largest torque on theta [N m]": float(peak[biggest[2], 2]),
+        "largest torque on theta: family": FAMILIES[biggest[2]],
+        "tumbled": bool(m.tumbled) if m else None,
+        "upside down": bool(m.upside_down) if m else None,
+        "final delta_x [m]": float(res.x[n - 1]),
+        "final delta_y [m]": float(res.y[n - 1]),
+        "status": res.status,
+    }

@@ -1,0 +1,140 @@
+"""Adaptive, error-controlled DOP853 driver (whole loop compiled).
+
+Step-size control as scipy.integrate.DOP853 (Hairer's rules).  Taut/slack
+switches are handled by event location: an accepted step whose end point has
+a different tether tautness is shortened to land just past the switch
+(integrators.switching), so no step straddles a discontinuity of the
+right-hand side.  Output is the 7th-order dense interpolant on a caller's time
+grid.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from tethersim.engine.dynamics import derivative, tether_margins
+from tethersim.engine.integrators import switching
+from tethersim.engine.integrators.steps import (N_K, dop853_dense, dop853_error_norm, dop853_interpolate,
+                    dop853_step)
+
+ORDER = 8
+ERROR_ESTIMATOR_ORDER = 7
+SAFETY = 0.9  # fraction of the optimal step taken (scipy, Hairer)
+MIN_FACTOR = 0.2  # largest decrease of the step in one rejection
+MAX_FACTOR = 10.0  # largest increase of the step after an acceptance
+ERROR_EXPONENT = -1.0 / (ERROR_ESTIMATOR_ORDER + 1)
+
+STATUS_OK, STATUS_NONFINITE, STATUS_STEP_TOO_SMALL, STATUS_MAX_STEPS = 0, 1, 2, 3
+
+
+@njit(cache=True)
+def initial_step(cfg, t0, y0, f0, p, pw, rtol, atol, t_end):
+    """Hairer's starting step (scipy.integrate._ivp.common.select_initial_step)."""
+    n = y0.shape[0]
+    d0, d1 = 0.0, 0.0
+    for i in range(n):
+        sc = atol + abs(y0[i]) * rtol
+        d0 += (y0[i] / sc) ** 2
+        d1 += (f0[i] / sc) ** 2
+    d0, d1 = math.sqrt(d0 / n), math.sqrt(d1 / n)
+    h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
+    h0 = min(h0, t_end - t0)
+    y1 = y0 + h0 * f0
+    f1 = np.empty(n)
+    derivative(cfg, t0 + h0, y1, p, pw, f1)
+    d2 = 0.0
+    for i in range(n):
+        sc = atol + abs(y0[i]) * rtol
+        d2 += ((f1[i] - f0[i]) / sc) ** 2
+    d2 = math.sqrt(d2 / n) / h0
+    if d1 <= 1e-15 and d2 <= 1e-15:
+        h1 = max(1e-6, h0 * 1e-3)
+    else:
+        h1 = (0.01 / max(d1, d2)) ** (1.0 / (ORDER + 1))
+    return min(100 * h0, h1, t_end - t0)
+
+
+# nogil: sweeps run many trajectories on threads (tethersim.experiments.sweep)
+@njit(cache=True, nogil=True)
+def dop853_run(cfg, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y, i_out,
+               max_steps, counters, t_pause=math.inf):
+    """Integrate y (in place) from t0 to t_end with DOP853.
+
+    h: first step to try (<= 0: choose one).  t_pause: return after the first
+    step that reaches it (the step is not shortened to land on it), so a run
+    split into calls at any pause times takes exactly the steps of one call.  Writes the dense output at each
+    out_t[i] in (t0, t_end] into out_y[i], starting at index i_out.
+    counters (int64[5]) accumulates: nfev, accepted, rejected, switches, steps.
+    Returns (t reached, next step size, next output index, status).
+    """
+    n = y.shape[0]
+    work = np.empty((N_K + 1, n))
+    K = work[:N_K]
+    ys = work[N_K]
+    y_new = np.empty(n)
+    f = np.empty(n)
+    F = np.empty((7, n))
+    g0 = np.empty(2)
+    g1 = np.empty(2)
+    t = t0
+    derivative(cfg, t, y, p, pw, f)
+    counters[0] += 1
+    for i in range(n):
+        if not math.isfinite(f[i]):
+            return t, h, i_out, STATUS_NONFINITE
+    if h <= 0.0:
+        h = initial_step(cfg, t, y, f, p, pw, rtol, atol, t_end)
+        counters[0] += 1
+    if not math.isfinite(h):
+        return t, h, i_out, STATUS_NONFINITE
+    steps = 0
+    while t < t_end and t < t_pause:
+        if steps >= max_steps:
+            return t, h, i_out, STATUS_MAX_STEPS
+        steps += 1
+        min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
+        rejected = False
+        while True:
+            if not (h >= min_step):  # written so that a NaN step also stops
+                return t, h, i_out, STATUS_STEP_TOO_SMALL
+            h_try = min(h, t_end - t)
+            dop853_step(cfg, t, y, f, h_try, p, pw, K, ys, y_new)
+            counters[0] += 12
+            err = dop853_error_norm(K, h_try, y, y_new, rtol, atol)
+            if not math.isfinite(err):
+                err = 1e10  # a NaN/inf stage: reject and shrink the step (MIN_FACTOR)
+            if err < 1.0:
+                factor = MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * err ** ERROR_EXPONENT)
+                if rejected:
+                    factor = min(1.0, factor)
+                h_next = h_try * factor
+                break
+            h = h_try * max(MIN_FACTOR, SAFETY * err ** ERROR_EXPONENT)
+            rejected = True
+            counters[2] += 1
+        if locate:
+            tether_margins(y, p, g0)
+            tether_margins(y_new, p, g1)
+            if switching.crossed(g0, g1) >= 0:
+                h_try = switching.locate(1, cfg, t, y, f, h_try, p, pw, work, y_new, g0, g1)
+                counters[3] += 1
+        counters[1] += 1
+        t_new = t + h_try
+        if i_out < out_t.shape[0] and out_t[i_out] <= t_new:
+            # the 3 extra stages of the interpolant only when an output falls in the step
+            dop853_dense(cfg, t, y, y_new, h_try, p, pw, K, ys, F)
+            counters[0] += 3
+        while i_out < out_t.shape[0] and out_t[i_out] <= t_new:
+            dop853_interpolate(F, y, (out_t[i_out] - t) / h_try, out_y[i_out])
+            i_out += 1
+        y[:] = y_new
+        f[:] = K[12]
+        t = t_new
+        h = h_next
+        for i in range(n):
+            if not math.isfinite(y[i]):
+                return t, h, i_out, STATUS_NONFINITE
+    counters[4] += steps
+    return t, h, i_out, STATUS_OK

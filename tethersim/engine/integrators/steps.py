@@ -1,0 +1,115 @@
+"""Pure step functions: one step of a Runge-Kutta method, no state kept.
+
+rk4_step     classical RK4, thesis Eqs 4.1-4.5
+dop853_step  Dormand-Prince 8(5,3) (Hairer's DOP853) with its error norm and
+             7th-order dense output, ported from scipy.integrate._ivp.rk.
+"""
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from tethersim.engine.dynamics import derivative
+from tethersim.engine.integrators.dop853_tableau import A, B, C, D, E3, E5, N_STAGES
+
+N_K = 16  # rows of the DOP853 stage array: 12 stages, FSAL, 3 dense-output stages
+
+
+@njit(cache=True)
+def rk4_step(cfg, t, y, h, p, pw, work, y_new):
+    """One RK4 step of size h from (t, y) into y_new (Eqs 4.1-4.5).
+
+    work: (5, n) scratch array (k1..k4 and a stage state).
+    """
+    n = y.shape[0]
+    k1, k2, k3, k4, ys = work[0], work[1], work[2], work[3], work[4]
+    derivative(cfg, t, y, p, pw, k1)
+    for i in range(n):
+        ys[i] = y[i] + 0.5 * h * k1[i]
+    derivative(cfg, t + 0.5 * h, ys, p, pw, k2)
+    for i in range(n):
+        ys[i] = y[i] + 0.5 * h * k2[i]
+    derivative(cfg, t + 0.5 * h, ys, p, pw, k3)
+    for i in range(n):
+        ys[i] = y[i] + h * k3[i]
+    derivative(cfg, t + h, ys, p, pw, k4)
+    for i in range(n):
+        y_new[i] = y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i])
+
+
+@njit(cache=True)
+def dop853_step(cfg, t, y, f, h, p, pw, K, ys, y_new):
+    """One DOP853 step: y_new at t + h; K[0..12] hold the stages (K[12] = f(t+h, y_new))."""
+    n = y.shape[0]
+    K[0, :] = f
+    for s in range(1, N_STAGES):
+        for i in range(n):
+            acc = 0.0
+            for j in range(s):
+                acc += A[s, j] * K[j, i]
+            ys[i] = y[i] + h * acc
+        derivative(cfg, t + C[s] * h, ys, p, pw, K[s])
+    for i in range(n):
+        acc = 0.0
+        for j in range(N_STAGES):
+            acc += B[j] * K[j, i]
+        y_new[i] = y[i] + h * acc
+    derivative(cfg, t + h, y_new, p, pw, K[N_STAGES])
+
+
+@njit(cache=True)
+def dop853_error_norm(K, h, y, y_new, rtol, atol):
+    """Scaled RMS error estimate of the last step (DOP853's 5th/3rd-order blend)."""
+    n = y.shape[0]
+    e5, e3 = 0.0, 0.0
+    for i in range(n):
+        scale = atol + max(abs(y[i]), abs(y_new[i])) * rtol
+        s5, s3 = 0.0, 0.0
+        for j in range(N_STAGES + 1):
+            s5 += E5[j] * K[j, i]
+            s3 += E3[j] * K[j, i]
+        e5 += (s5 / scale) ** 2
+        e3 += (s3 / scale) ** 2
+    if e5 == 0.0 and e3 == 0.0:
+        return 0.0
+    return abs(h) * e5 / math.sqrt((e5 + 0.01 * e3) * n)
+
+
+@njit(cache=True)
+def dop853_dense(cfg, t, y, y_new, h, p, pw, K, ys, F):
+    """Coefficients F (7, n) of the 7th-order interpolant on [t, t + h]."""
+    n = y.shape[0]
+    for s in range(N_STAGES + 1, N_K):
+        for i in range(n):
+            acc = 0.0
+            for j in range(s):
+                acc += A[s, j] * K[j, i]
+            ys[i] = y[i] + h * acc
+        derivative(cfg, t + C[s] * h, ys, p, pw, K[s])
+    for i in range(n):
+        dy = y_new[i] - y[i]
+        F[0, i] = dy
+        F[1, i] = h * K[0, i] - dy
+        F[2, i] = 2.0 * dy - h * (K[N_STAGES, i] + K[0, i])
+        for r in range(D.shape[0]):
+            acc = 0.0
+            for j in range(N_K):
+                acc += D[r, j] * K[j, i]
+            F[3 + r, i] = h * acc
+
+
+@njit(cache=True)
+def dop853_interpolate(F, y, x, out):
+    """Dense output at fraction x of the step (0 <= x <= 1) into out."""
+    n = y.shape[0]
+    m = F.shape[0]
+    for i in range(n):
+        acc = 0.0
+        for k in range(m):
+            acc += F[m - 1 - k, i]
+            if k % 2 == 0:
+                acc *= x
+            else:
+                acc *= 1.0 - x
+        out[i] = acc + y[i]

@@ -1,0 +1,123 @@
+"""What a sweep computes: a base satellite, one or two parameter axes, and how to integrate.
+
+Axis values are in edge units (tethersim.model.params.EDGE_UNITS: E in N/mm^2,
+altitude in km, else SI).  A spec is plain data: it travels to Dask workers
+and is written into the store's attributes, so a resumed sweep can check that
+it continues the same computation.
+"""
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from tethersim.model import params
+from tethersim.analysis.metrics import SETTLING_TOL
+from tethersim.model.registry import DEFAULT_MODEL, model_index
+from tethersim.model.satellite import Satellite, SatelliteError
+from tethersim.engine.simulate import FAITHFUL_STEPS_PER_PERIOD
+
+METHODS = ("adaptive", "faithful")
+SAMPLES_PER_PERIOD = 100  # adaptive output grid for the metrics
+DEFAULT_RTOL = 1e-9
+ATOL_PER_RTOL = 1e-2  # atol = rtol x this: states are O(1) rad and O(10) m
+
+
+@dataclass(frozen=True)
+class SweepSpec:
+    """A grid of runs of ``satellite`` with ``axes`` = ((name, values), ...) changed.
+
+    periods: orbits per run (thesis: 50, about three days, p. 5-6).
+    method: "adaptive" (DOP853 at rtol, converged) or "faithful" (the
+      thesis's fixed RK4 step, ``steps_per_period`` per orbit, switches not located).
+    """
+
+    satellite: Satellite
+    axes: tuple
+    periods: float = 50.0
+    method: str = "adaptive"
+    model: str = DEFAULT_MODEL
+    rtol: float = DEFAULT_RTOL
+    steps_per_period: int = FAITHFUL_STEPS_PER_PERIOD
+    samples_per_period: int = SAMPLES_PER_PERIOD
+    tol: float = SETTLING_TOL
+    names: tuple = field(init=False)
+
+    def __post_init__(self):
+        if not isinstance(self.satellite, Satellite):
+            raise TypeError("satellite must be a tethersim Satellite")
+        if not 1 <= len(self.axes) <= 2:
+            raise ValueError(f"a sweep has one or two axes, got {len(self.axes)}")
+        axes = []
+        for name, values in self.axes:
+            params.check_name(name)
+            v = np.asarray(values, dtype=float).ravel()
+            if v.size == 0 or not np.all(np.isfinite(v)):
+                raise ValueError(f"axis {name}: needs finite values")
+            axes.append((name, tuple(float(x) for x in v)))
+        names = tuple(n for n, _ in axes)
+        if len(set(names)) != len(names):
+            raise ValueError(f"axes repeat a parameter: {names}")
+        object.__setattr__(self, "axes", tuple(axes))
+        object.__setattr__(self, "names", names)
+        if self.method not in METHODS:
+            raise ValueError(f"method = {self.method!r}: allowed values {', '.join(METHODS)}")
+        model_index(self.model)
+        for key in ("periods", "rtol", "tol"):
+            v = getattr(self, key)
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+                raise ValueError(f"{key} = {v!r}: must be a finite number > 0")
+        if self.rtol < 1e-14:
+            raise ValueError(f"rtol = {self.rtol:g}: allowed range >= 1e-14")
+        for key in ("steps_per_period", "samples_per_period"):
+            v = getattr(self, key)
+            if isinstance(v, bool) or not isinstance(v, int) or v < 1:
+                raise ValueError(f"{key} = {v!r}: must be an integer >= 1")
+        self.check_points()
+
+    # --- the grid --------------------------------------------------------------
+    @property
+    def shape(self) -> tuple:
+        """Store shape: (n_y, n_x) for two axes (the first axis is x), (n,) for one."""
+        return tuple(len(v) for _, v in reversed(self.axes))
+
+    @property
+    def size(self) -> int:
+        return int(np.prod(self.shape))
+
+    def values_at(self, k: int) -> dict:
+        """{name: edge value} of flat point k (C order over ``shape``)."""
+        idx = np.unravel_index(k, self.shape)[::-1]  # back to axis order (x first)
+        return {name: values[i] for (name, values), i in zip(self.axes, idx)}
+
+    def satellite_at(self, k: int) -> Satellite:
+        return params.with_values(self.satellite, self.values_at(k))
+
+    def check_points(self) -> None:
+        """Every grid point must be a valid satellite: fail before any run, naming it."""
+        for k in range(self.size):
+            try:
+                self.satellite_at(k)
+            except SatelliteError as exc:
+                where = ", ".join(f"{n} = {v:g} {params.unit(n)}" for n, v in self.values_at(k).items())
+                raise SatelliteError(f"sweep point {where} is not a valid satellite: {exc}") from None
+
+    # --- plain-data form (store attributes, Dask) -------------------------------
+    def to_json(self) -> str:
+        sat = self.satellite.to_dict()
+        sat["initial"] = list(sat["initial"])
+        return json.dumps({
+            "satellite": sat, "axes": [[n, list(v)] for n, v in self.axes],
+            "periods": self.periods, "method": self.method, "model": self.model,
+            "rtol": self.rtol, "steps_per_period": self.steps_per_period,
+            "samples_per_period": self.samples_per_period, "tol": self.tol,
+        }, sort_keys=True)
+
+    @classmethod
+    def from_json(cls, text: str) -> "SweepSpec":
+        d = json.loads(text)
+        sat = d.pop("satellite")
+        sat["initial"] = tuple(sat["initial"])
+        return cls(satellite=Satellite(**sat), axes=tuple((n, v) for n, v in d.pop("axes")), **d)

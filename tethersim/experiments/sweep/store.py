@@ -1,0 +1,151 @@
+"""The on-disk, labelled, resumable store of a sweep: an xarray data set in Zarr.
+
+Layout: one variable per record field (tethersim.experiments.sweep.point.VARIABLES) on the
+grid dimensions (second axis, first axis) — or (first axis,) for a 1-D
+sweep — with coordinates in edge units, a ``done`` mask, and the spec as JSON
+in the attributes.  Chunks are grid rows, so a flush rewrites only the rows
+that gained points.
+
+Crash safety: within a flush every data variable is written before ``done``,
+and Zarr writes each chunk to a temporary file that it then renames, so a
+kill at any instant leaves ``done`` true only where the data are on disk.
+A kill loses at most the points finished since the last flush (every
+``FLUSH_SECONDS``); Ctrl-C loses nothing (the runner flushes first).
+"""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+import zarr
+
+from tethersim._jit import cache_key
+from tethersim._version import __version__
+from tethersim.model import params
+from tethersim.analysis.classify import flag_attrs
+from tethersim.experiments.sweep.point import VARIABLES
+from tethersim.experiments.sweep.spec import SweepSpec
+
+FILL = {"float64": np.nan, "int8": -1, "int64": -1}
+
+
+def code_id() -> str:
+    """tethersim's version and the hash of every jitted source (the numba cache key): a
+    store resumes only with the code that began it, so a data set never mixes two models."""
+    return f"{__version__}+{cache_key()[:12]}"
+
+
+class StoreMismatch(ValueError):
+    """The store on disk holds a different sweep."""
+
+
+def _empty_dataset(spec: SweepSpec) -> xr.Dataset:
+    dims = tuple(reversed(spec.names))
+    coords = {name: (name, np.asarray(values),
+                     {"units": params.unit(name), "long_name": f"{name} (edge units)"})
+              for name, values in spec.axes}
+    data = {}
+    for name, dtype, units, long_name in VARIABLES:
+        attrs = {"units": units, "long_name": long_name}
+        if name == "stability_class":
+            attrs.update(flag_attrs())
+        data[name] = (dims, np.full(spec.shape, FILL[dtype], dtype=dtype), attrs)
+    data["done"] = (dims, np.zeros(spec.shape, dtype=bool), {"long_name": "point computed"})
+    attrs = {"title": f"tethersim sweep of {spec.satellite.name} over {' x '.join(spec.names)}",
+             "spec": spec.to_json(), "tethersim_version": __version__, "code": code_id(),
+             "conventions": "docs/conventions.md; metrics and classes: docs/metrics.md"}
+    return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+class SweepStore:
+    """In-memory copy of a sweep's arrays, flushed row by row to a Zarr store."""
+
+    def __init__(self, path, spec: SweepSpec, restart: bool = False):
+        self.path = Path(path)
+        self.spec = spec
+        exists = (self.path / "zarr.json").exists() or (self.path / ".zgroup").exists()
+        if exists and not restart:
+            on_disk = xr.open_zarr(self.path)
+            if on_disk.attrs.get("spec") != spec.to_json():
+                raise StoreMismatch(
+                    f"{self.path} holds a different sweep ({_differences(on_disk.attrs.get('spec'), spec)}); "
+                    f"use another --out, or --restart to discard it")
+            if on_disk.attrs.get("code") != code_id():
+                raise StoreMismatch(
+                    f"{self.path} was begun by another tethersim build "
+                    f"({on_disk.attrs.get('code')}, this is {code_id()}): its points would not "
+                    f"match new ones; use another --out, or --restart to discard it")
+            ds = on_disk.load()
+            on_disk.close()
+        else:
+            if self.path.exists() and any(self.path.iterdir()) and not exists:
+                raise StoreMismatch(f"{self.path} exists and is not a sweep store; choose another --out")
+            ds = _empty_dataset(spec)
+            encoding = {v: {"chunks": self._chunks()} for v in list(ds.data_vars)}
+            # metadata never changes after creation (flushes write chunks only), so it
+            # is consolidated once; Zarr format 2, where consolidation is in the spec
+            ds.to_zarr(self.path, mode="w", encoding=encoding, consolidated=True, zarr_format=2)
+        self.row = spec.shape[-1]  # points per chunk (one grid row)
+        self.arrays = {v: ds[v].values.reshape(-1).copy() for v in (*_names(), "done")}
+        self.group = zarr.open_group(str(self.path), mode="r+")
+        self.dirty = set()
+
+    def _chunks(self):
+        return (1, self.spec.shape[1]) if len(self.spec.shape) == 2 else self.spec.shape
+
+    @property
+    def done(self) -> np.ndarray:
+        return self.arrays["done"]
+
+    def pending(self) -> list:
+        return [int(k) for k in np.flatnonzero(~self.done)]
+
+    def put(self, k: int, record: dict) -> None:
+        for name in _names():
+            self.arrays[name][k] = record[name]
+        self.done[k] = True
+        self.dirty.add(k // self.row)
+
+    def flush(self) -> None:
+        """Write the rows that gained points: data first, then the done mask."""
+        if not self.dirty:
+            return
+        rows = sorted(self.dirty)
+        for name in (*_names(), "done"):
+            arr = self.group[name]
+            for r in rows:
+                block = self.arrays[name][r * self.row:(r + 1) * self.row]
+                if arr.ndim == 2:
+                    arr[r, :] = block
+                else:
+                    arr[:] = block
+        self.dirty.clear()
+
+    def dataset(self) -> xr.Dataset:
+        """The whole data set, loaded from disk."""
+        return open_dataset(self.path)
+
+
+def _names():
+    return tuple(v[0] for v in VARIABLES)
+
+
+def _differences(old_json, spec: SweepSpec) -> str:
+    try:
+        old = json.loads(old_json)
+    except (TypeError, ValueError):
+        return "no readable spec"
+    new = json.loads(spec.to_json())
+    keys = sorted(k for k in set(old) | set(new) if old.get(k) != new.get(k))
+    return "differs in " + ", ".join(keys) if keys else "same spec"
+
+
+def open_dataset(path) -> xr.Dataset:
+    """A finished (or partial) sweep store as a loaded xarray Dataset."""
+    path = Path(path)
+    if not ((path / "zarr.json").exists() or (path / ".zgroup").exists()):
+        raise FileNotFoundError(f"{path}: not a sweep store (no zarr.json)")
+    with xr.open_zarr(path) as ds:
+        return ds.load()

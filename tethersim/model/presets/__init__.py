@@ -1,0 +1,132 @@
+"""Preset and user satellite files (TOML), with strict validation.
+
+File layout (units in the key name where they are not SI)::
+
+    name = "SatI"
+    [satellite]    m1 m2 m3 [kg]  A1 A2 A3 [m^2]  a b [m]
+    [tethers]      l10 l20 [m]  E1_N_per_mm2 E2_N_per_mm2 [N/mm^2]  c1 c2 [N s/m]
+    [orbit]        altitude_km [km]
+    [initial]      delta_x delta_y [m]  theta0_deg [deg]  delta_x_dot delta_y_dot [m/s]
+                   theta_dot [rad/s]
+    [environment]  (optional) CD [-], density = "uniform" | "per-body"
+
+Moduli are given, as in the thesis, in N/mm^2 for a 1 mm^2 cross-section,
+so the value in N/mm^2 equals the tether force scale in N (thesis p. 3-1).
+"""
+from __future__ import annotations
+
+import math
+import re
+import tomllib
+from importlib import resources
+from pathlib import Path
+
+from tethersim.model.constants import CD_DEFAULT, TETHER_AREA
+from tethersim.model.satellite import Satellite, SatelliteError
+
+SCHEMA = {
+    "satellite": {"m1": "kg", "m2": "kg", "m3": "kg", "A1": "m^2", "A2": "m^2", "A3": "m^2",
+                  "a": "m", "b": "m"},
+    "tethers": {"l10": "m", "l20": "m", "E1_N_per_mm2": "N/mm^2", "E2_N_per_mm2": "N/mm^2",
+                "c1": "N s/m", "c2": "N s/m"},
+    "orbit": {"altitude_km": "km"},
+    "initial": {"delta_x": "m", "delta_y": "m", "theta0_deg": "deg", "delta_x_dot": "m/s",
+                "delta_y_dot": "m/s", "theta_dot": "rad/s"},
+}
+OPTIONAL = {"environment": {"CD": "1", "density": "uniform | per-body"}}
+PRESET_NAMES = {"sati": "satI.toml", "satii": "satII.toml", "dumbsat": "dumbsat.toml"}
+N_PER_MM2_TO_N = 1e6 * TETHER_AREA  # (N/mm^2 -> N/m^2) x 1 mm^2 = 1
+
+
+def _number(where, key, value, unit):
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise SatelliteError(f"{where}: {key} = {value!r}: must be a number in {unit}")
+    if not math.isfinite(value):
+        raise SatelliteError(f"{where}: {key} = {value}: must be a finite number in {unit}")
+    return float(value)
+
+
+def from_dict(doc: dict, where: str = "<dict>") -> Satellite:
+    """Build a Satellite from a parsed preset document (thesis units at the edge)."""
+    allowed_top = {"name"} | set(SCHEMA) | set(OPTIONAL)
+    for key in doc:
+        if key not in allowed_top:
+            raise SatelliteError(f"{where}: unknown key {key!r}; allowed: {sorted(allowed_top)}")
+    if not isinstance(doc.get("name"), str):
+        raise SatelliteError(f"{where}: missing key 'name' (a string)")
+    vals = {}
+    for table, keys in list(SCHEMA.items()) + list(OPTIONAL.items()):
+        sub = doc.get(table)
+        if sub is None:
+            if table in OPTIONAL:
+                continue
+            raise SatelliteError(f"{where}: missing table [{table}] with keys {sorted(keys)}")
+        if not isinstance(sub, dict):
+            raise SatelliteError(f"{where}: {table} must be a table [{table}]")
+        for key in sub:
+            if key not in keys:
+                raise SatelliteError(f"{where}: unknown key {table}.{key!r}; allowed: "
+                                     f"{sorted(keys)}")
+        for key, unit in keys.items():
+            if key not in sub:
+                if table in OPTIONAL:
+                    continue
+                raise SatelliteError(f"{where}: missing key {table}.{key} ({unit})")
+            if key == "density":
+                vals[key] = sub[key]
+            else:
+                vals[key] = _number(where, f"{table}.{key}", sub[key], unit)
+    initial = (vals["delta_x"], vals["delta_y"], math.radians(vals["theta0_deg"]),
+               vals["delta_x_dot"], vals["delta_y_dot"], vals["theta_dot"])
+    try:
+        return Satellite(
+            name=doc["name"], m1=vals["m1"], m2=vals["m2"], m3=vals["m3"], A1=vals["A1"],
+            A2=vals["A2"], A3=vals["A3"], a=vals["a"], b=vals["b"], l10=vals["l10"],
+            l20=vals["l20"], E1=vals["E1_N_per_mm2"] * N_PER_MM2_TO_N,
+            E2=vals["E2_N_per_mm2"] * N_PER_MM2_TO_N, c1=vals["c1"], c2=vals["c2"],
+            altitude=vals["altitude_km"] * 1e3, initial=initial,
+            CD=vals.get("CD", CD_DEFAULT), density_mode=vals.get("density", "uniform"),
+            source=where)
+    except SatelliteError as exc:
+        # name the file's key, not the internal SI field
+        msg = str(exc)
+        for internal, key in (("E1 =", "tethers.E1_N_per_mm2 ="), ("E2 =", "tethers.E2_N_per_mm2 ="),
+                              ("theta0 =", "initial.theta0_deg ="), ("altitude =", "orbit.altitude_km =")):
+            msg = msg.replace(internal, key)
+        # E in N equals the file's N/mm^2 value (1 mm^2 cross-section): name the file's unit
+        msg = re.sub(r"(E[12]_N_per_mm2 = \S+) N:", r"\1 N/mm^2:", msg)
+        raise SatelliteError(msg) from None
+
+
+def load(path) -> Satellite:
+    """Load a satellite TOML file (see module docstring for the layout)."""
+    path = Path(path)
+    try:
+        text = path.read_text()
+    except OSError as exc:
+        raise SatelliteError(f"{path}: cannot read: {exc.strerror}") from None
+    try:
+        doc = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SatelliteError(f"{path}: not valid TOML: {exc}") from None
+    return from_dict(doc, str(path))
+
+
+def load_preset(name: str) -> Satellite:
+    """A shipped preset by name: satI, satII or dumbsat (any case)."""
+    key = name.lower()
+    if key not in PRESET_NAMES:
+        raise SatelliteError(f"unknown preset {name!r}; available: satI, satII, dumbsat "
+                             f"(any case), or a path to a .toml file")
+    ref = resources.files("tethersim.model.presets") / PRESET_NAMES[key]
+    with resources.as_file(ref) as p:
+        return load(p)
+
+
+def resolve(name_or_path: str) -> Satellite:
+    """Preset name or path to a TOML file."""
+    if name_or_path.lower() in PRESET_NAMES:
+        return load_preset(name_or_path)
+    if Path(name_or_path).suffix == ".toml" or Path(name_or_path).exists():
+        return load(name_or_path)
+    return load_preset(name_or_path)

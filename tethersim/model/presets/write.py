@@ -1,0 +1,32 @@
+"""Write a Satellite as a preset TOML file (the layout tethersim.model.presets reads)."""
+from __future__ import annotations
+
+import math
+
+from tethersim.model.satellite import Satellite
+from tethersim.model.presets import N_PER_MM2_TO_N
+
+
+def dumps(sat: Satellite, notes: dict | None = None, header: str = "") -> str:
+    """TOML text for ``sat``; notes: {key: comment} written beside the values."""
+    notes = notes or {}
+    x0 = sat.initial
+    tables = {
+        "satellite": {k: getattr(sat, k) for k in ("m1", "m2", "m3", "A1", "A2", "A3", "a", "b")},
+        "tethers": {"l10": sat.l10, "l20": sat.l20, "E1_N_per_mm2": sat.E1 / N_PER_MM2_TO_N,
+                    "E2_N_per_mm2": sat.E2 / N_PER_MM2_TO_N, "c1": sat.c1, "c2": sat.c2},
+        "orbit": {"altitude_km": sat.altitude / 1e3},
+        "initial": {"delta_x": x0[0], "delta_y": x0[1], "theta0_deg": math.degrees(x0[2]),
+                    "delta_x_dot": x0[3], "delta_y_dot": x0[4], "theta_dot": x0[5]},
+        "environment": {"CD": sat.CD, "density": sat.density_mode},
+    }
+    lines = [f"# {line}" if line else "#" for line in header.splitlines()]
+    lines.append(f'name = "{sat.name}"')
+    for table, values in tables.items():
+        lines += ["", f"[{table}]"]
+        for key, v in values.items():
+            # 15 significant digits: 30.0, not the 29.999999999999996 of degrees(pi/6)
+            text = f'"{v}"' if isinstance(v, str) else repr(float(f"{float(v):.15g}"))
+            note = notes.get(key) or notes.get(key.split("_N_per")[0])
+            lines.append(f"{key} = {text}" + (f"  # {note}" if note else ""))
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,174 @@
+"""The satellite record: every Table 4.1 quantity in SI, validated on creation.
+
+Units at the edge (N/mm^2, km, degrees) are converted by tethersim.model.presets;
+inside, a :class:`Satellite` holds SI only.  E1, E2 are tether moduli times the
+thesis's 1 mm^2 cross-section, i.e. forces in N (thesis p. 3-1).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass, field, fields, replace
+
+import numpy as np
+
+from tethersim.generated import layout
+
+from tethersim.model import atmosphere
+from tethersim.model.constants import CD_DEFAULT, MU_EARTH, OMEGA_EARTH, R_EARTH
+
+# fields that must be > 0 and >= 0 (units in UNITS)
+_POSITIVE = ("m1", "m2", "m3", "A1", "A2", "A3", "a", "b", "l10", "l20")
+_NON_NEGATIVE = ("E1", "E2", "c1", "c2", "CD")
+COM_RTOL = 1e-6  # relative tolerance of the COM-on-the-boom condition m1 b = m2 a
+DENSITY_MODES = ("uniform", "per-body")
+UNITS = {"m1": "kg", "m2": "kg", "m3": "kg", "A1": "m^2", "A2": "m^2", "A3": "m^2",
+         "a": "m", "b": "m", "l10": "m", "l20": "m", "E1": "N", "E2": "N",
+         "c1": "N s/m", "c2": "N s/m", "CD": "1", "altitude": "m"}
+
+
+class SatelliteError(ValueError):
+    """A satellite definition that cannot be simulated; the message names the field."""
+
+
+@dataclass(frozen=True)
+class Satellite:
+    """A tethered-balloon gravity-gradient satellite (SI units throughout).
+
+    initial: (δx, δy, θ, δẋ, δẏ, θ̇) at t = 0 in m, m, rad, m/s, m/s, rad/s.
+    density_mode: "uniform" (thesis: ρ at the orbit altitude for every body)
+      or "per-body" (each body at its own altitude).
+    """
+
+    name: str
+    m1: float
+    m2: float
+    m3: float
+    A1: float
+    A2: float
+    A3: float
+    a: float
+    b: float
+    l10: float
+    l20: float
+    E1: float
+    E2: float
+    c1: float
+    c2: float
+    altitude: float
+    initial: tuple = (0.0, 0.0, math.pi / 6, 0.0, 0.0, 0.0)
+    CD: float = CD_DEFAULT
+    density_mode: str = "uniform"
+    source: str = field(default="", compare=False)
+
+    def __post_init__(self):
+        for f in fields(self):
+            v = getattr(self, f.name)
+            if f.name in _POSITIVE + _NON_NEGATIVE + ("altitude",):
+                try:
+                    v = float(v)
+                except (TypeError, ValueError):
+                    raise SatelliteError(f"{self._where()}{f.name} = {v!r}: must be a number "
+                                         f"({UNITS[f.name]})") from None
+                object.__setattr__(self, f.name, v)
+                if not math.isfinite(v):
+                    raise SatelliteError(f"{self._where()}{f.name} = {v}: must be a finite number")
+        for k in _POSITIVE:
+            if not getattr(self, k) > 0:
+                raise SatelliteError(f"{self._where()}{k} = {getattr(self, k)} {UNITS[k]}: "
+                                     f"must be > 0")
+        for k in _NON_NEGATIVE:
+            if not getattr(self, k) >= 0:
+                raise SatelliteError(f"{self._where()}{k} = {getattr(self, k)} {UNITS[k]}: "
+                                     f"must be >= 0")
+        if not (atmosphere.H_MIN <= self.altitude <= atmosphere.H_MAX):
+            raise SatelliteError(f"{self._where()}altitude = {self.altitude / 1e3:g} km: "
+                                 f"allowed range 0-1000 km (Vallado's exponential atmosphere)")
+        lhs, rhs = self.m1 * self.b, self.m2 * self.a
+        if abs(lhs - rhs) > COM_RTOL * max(lhs, rhs):
+            raise SatelliteError(
+                f"{self._where()}COM off the boom: m1*b = {lhs:g} kg m but m2*a = {rhs:g} kg m; "
+                f"the thesis puts the COM on the boom (p. 3-1), so m1*b must equal m2*a "
+                f"(relative difference <= {COM_RTOL:g}); e.g. a = {lhs / self.m2:.6g} m")
+        try:
+            init = tuple(float(x) for x in self.initial)
+        except (TypeError, ValueError):
+            init = ()
+        if len(init) != 6 or not all(math.isfinite(x) for x in init):
+            raise SatelliteError(f"{self._where()}initial = {self.initial!r}: must be 6 finite "
+                                 f"numbers (δx, δy, θ, δẋ, δẏ, θ̇)")
+        if not -math.pi <= init[2] <= math.pi:
+            raise SatelliteError(f"{self._where()}theta0 = {math.degrees(init[2]):g} deg: "
+                                 f"allowed range -180 to 180 deg")
+        object.__setattr__(self, "initial", init)
+        if self.density_mode not in DENSITY_MODES:
+            raise SatelliteError(f"{self._where()}density = {self.density_mode!r}: "
+                                 f"allowed values {DENSITY_MODES}")
+        if self.density_mode == "per-body":
+            # every body must stay inside the atmosphere model: allow the boom and
+            # the balloon at up to twice the longer tether (or its start) from the COM
+            reach = max(self.a, self.b) + 2 * max(self.l10, self.l20, math.hypot(*init[:2]))
+            lo, hi = atmosphere.H_MIN + reach, atmosphere.H_MAX - reach
+            if not lo <= self.altitude <= hi:
+                raise SatelliteError(
+                    f"{self._where()}altitude = {self.altitude / 1e3:g} km with density = "
+                    f"'per-body': allowed range {lo / 1e3:.3f}-{hi / 1e3:.3f} km, so that every "
+                    f"body (within {reach:.4g} m of the COM) stays inside 0-1000 km")
+
+    def _where(self) -> str:
+        return f"{self.source}: " if self.source else ""
+
+    # --- derived quantities --------------------------------------------------
+    @property
+    def r0(self) -> float:
+        """Orbit radius of the COM [m]."""
+        return R_EARTH + self.altitude
+
+    @property
+    def omega(self) -> float:
+        """Orbital rate sqrt(μ/r0³) [rad/s] (Eq 3.14)."""
+        return math.sqrt(MU_EARTH / self.r0**3)
+
+    @property
+    def period(self) -> float:
+        """Orbital period [s]."""
+        return 2 * math.pi / self.omega
+
+    @property
+    def rho(self) -> float:
+        """Air density at the orbit altitude [kg/m^3]."""
+        return atmosphere.density(self.altitude)
+
+    @property
+    def pitch_inertia(self) -> float:
+        """m1 b² + m2 a² [kg m²]: the point-mass moment about the COM (Eq 3.30)."""
+        return self.m1 * self.b**2 + self.m2 * self.a**2
+
+    def replace(self, **changes) -> "Satellite":
+        """A copy with fields changed (validated again)."""
+        if self.source and "source" not in changes and not self.source.endswith("(modified)"):
+            changes["source"] = f"{self.source} (modified)"
+        return replace(self, **changes)
+
+    def to_dict(self) -> dict:
+        d = asdict(self)
+        d.pop("source")
+        return d
+
+
+def parameters(sat: Satellite) -> dict:
+    """The thesis symbols as SI floats (contract of tethersim.parameters)."""
+    rho = sat.rho
+    values = {
+        "m1": sat.m1, "m2": sat.m2, "m3": sat.m3, "A1": sat.A1, "A2": sat.A2, "A3": sat.A3,
+        "a": sat.a, "b": sat.b, "l10": sat.l10, "l20": sat.l20, "E1": sat.E1, "E2": sat.E2,
+        "c1": sat.c1, "c2": sat.c2, "CD": sat.CD, "r0": sat.r0, "mu": MU_EARTH,
+        "omega": sat.omega, "omega_earth": OMEGA_EARTH, "rho": rho,
+        "rho1": rho, "rho2": rho, "rho3": rho,
+    }
+    return values
+
+
+def parameter_vector(sat: Satellite) -> np.ndarray:
+    """p in the order of generated/layout.py PARAMETERS."""
+    values = parameters(sat)
+    return np.array([values[n] for n in layout.PARAMETERS], dtype=np.float64)

@@ -1,0 +1,83 @@
+"""Stability maps of a 2-D sweep (thesis Figures 5.13, 5.21-5.23, 5.27-5.28)."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from tethersim.analysis.classify import CLASS_COLORS, CLASSES, STABLE
+from tethersim.output.plots.run import FAST_PNG
+
+
+def _edges(v):
+    v = np.asarray(v, float)
+    if v.size == 1:
+        return np.array([v[0] - 0.5, v[0] + 0.5])
+    mid = 0.5 * (v[1:] + v[:-1])
+    return np.concatenate([[2 * v[0] - mid[0]], mid, [2 * v[-1] - mid[-1]]])
+
+
+def plot_stability_map(ds, path, *, title: str = "", nominal: dict | None = None,
+                       predicted=None, other=None, other_label: str = "",
+                       band_slope: float | None = None) -> Path:
+    """Draw the classes of ``ds`` (a 2-D sweep) and save a PNG.
+
+    nominal: {name: edge value} marked with a star.  predicted: an array of
+      predicted classes on the same grid; its stable region is outlined.
+    other: another sweep's classes on the same grid (e.g. faithful RK4);
+      points where it differs are crossed.  band_slope: draws y = slope·x.
+    """
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import BoundaryNorm, ListedColormap
+    from matplotlib.patches import Patch
+
+    yname, xname = ds.stability_class.dims
+    x, y = ds[xname].values, ds[yname].values
+    cls = np.where(ds.done.values, ds.stability_class.values, -1).astype(float)
+    cls[cls < 0] = np.nan
+    cmap = ListedColormap(CLASS_COLORS)
+    norm = BoundaryNorm(np.arange(len(CLASSES) + 1) - 0.5, cmap.N)
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(13, 5.5))
+    fig.subplots_adjust(left=0.07, right=0.97, top=0.9, bottom=0.27, wspace=0.2)
+    ax.pcolormesh(_edges(x), _edges(y), cls, cmap=cmap, norm=norm)
+    # the steady pitch itself shows the band even where it is narrower than the grid
+    ss = np.where(ds.done.values & (ds.tumbled.values == 0), ds.steady_state_pitch.values, np.nan)
+    im = ax2.pcolormesh(_edges(x), _edges(y), ss, cmap="coolwarm", vmin=-np.pi / 2, vmax=np.pi / 2)
+    fig.colorbar(im, ax=ax2, label="steady-state pitch θ_ss [rad] (blank: tumbled)")
+    if np.nanmin(ss, initial=np.inf) < 0 < np.nanmax(ss, initial=-np.inf) and min(x.size, y.size) > 1:
+        ax2.contour(x, y, np.nan_to_num(ss, nan=np.pi), levels=[0.0], colors="k", linewidths=1.0)
+    ax2.set_title("steady-state pitch; black line: θ_ss = 0", fontsize=9)
+    handles = [Patch(color=c, label=n.replace("_", " ")) for n, c in zip(CLASSES, CLASS_COLORS)]
+    if predicted is not None:
+        pred = (np.asarray(predicted) == STABLE).astype(float)
+        if 0 < pred.sum() < pred.size:
+            ax.contour(x, y, pred, levels=[0.5], colors="k", linewidths=1.5)
+        handles.append(plt.Line2D([], [], color="k", lw=1.5, label="predicted stable\n(eigenvalues)"))
+    if other is not None:
+        diff = (np.asarray(other) != ds.stability_class.values) & ds.done.values
+        iy, ix = np.nonzero(diff)
+        ax.plot(x[ix], y[iy], "x", color="k", ms=4, mew=0.8)
+        handles.append(plt.Line2D([], [], marker="x", color="k", ls="", label=other_label or "differs"))
+    if band_slope is not None and np.isfinite(band_slope):
+        xs = np.linspace(x.min(), x.max(), 50)
+        ax.plot(xs, band_slope * xs, "w--", lw=1.2)
+        handles.append(plt.Line2D([], [], color="w", ls="--", label=f"y = {band_slope:.3g} x",
+                                  markeredgecolor="k"))
+    if nominal:
+        ax.plot(nominal.get(xname), nominal.get(yname), "*", color="w", mec="k", ms=14)
+        handles.append(plt.Line2D([], [], marker="*", color="w", mec="k", ms=12, ls="",
+                                  label="preset"))
+    for a in (ax, ax2):
+        a.set_xlim(_edges(x)[[0, -1]])
+        a.set_ylim(_edges(y)[[0, -1]])
+        a.set_xlabel(f"{xname} [{ds[xname].attrs.get('units', '')}]")
+        a.set_ylabel(f"{yname} [{ds[yname].attrs.get('units', '')}]")
+    ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.13), fontsize=8,
+              facecolor="0.85", ncol=4)
+    ax.set_title(title or ds.attrs.get("title", ""), fontsize=9)
+    path = Path(path)
+    fig.savefig(path, dpi=110, pil_kwargs=FAST_PNG)
+    plt.close(fig)
+    return path

@@ -1,0 +1,116 @@
+"""The one table writer: CSV with units in the headers and floats that round-trip.
+
+Every CSV tethersim writes (time series, compare, force peaks, headlines,
+sweeps, feasibility) goes through :func:`write_table`, so they share one rule:
+
+* headers carry the unit in brackets (``settling time [h]``);
+* floats are written with ``repr`` (shortest string that reads back to the
+  same double), NaN and None as an empty cell, booleans as ``true``/``false``;
+* rows are dicts; ``columns`` is an explicit tuple of (key, header) pairs.
+
+The time series of a run also goes to NetCDF (:func:`write_netcdf`), with the
+same names and units as attributes.
+"""
+from __future__ import annotations
+
+import csv
+import math
+from pathlib import Path
+
+import numpy as np
+
+from tethersim.engine.result import SimResult
+from tethersim.generated.layout import STATE, STATE_UNITS
+
+ORBIT_COLUMNS = ("X", "Y", "VX", "VY")
+ORBIT_UNITS = ("m", "m", "m/s", "m/s")
+
+
+def cell(value) -> str:
+    """One CSV cell: repr for floats (round-trips), '' for NaN/None, true/false for bools."""
+    if value is None:
+        return ""
+    if isinstance(value, (bool, np.bool_)):
+        return "true" if value else "false"
+    if isinstance(value, (float, np.floating)):
+        v = float(value)
+        return "" if math.isnan(v) else repr(v)
+    if isinstance(value, (np.integer,)):
+        return str(int(value))
+    return str(value)
+
+
+def write_table(path, rows, columns) -> Path:
+    """Write ``rows`` (dicts) as CSV.
+
+    Parameters
+    ----------
+    path : str or Path
+        File to write.
+    rows : iterable of dict
+        One dict per row; every key of ``columns`` must be present.
+    columns : sequence of (str, str)
+        (key, header with unit) pairs, in column order.
+
+    Returns
+    -------
+    Path
+        The file written.
+    """
+    path = Path(path)
+    with path.open("w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow([header for _, header in columns])
+        for r in rows:
+            w.writerow([cell(r[key]) for key, _ in columns])
+    return path
+
+
+def write_rows(path, rows) -> Path:
+    """Write dict rows whose keys name their units (``settling_h``, ``step_s``).
+
+    Columns are the union of the keys in first-seen order; private keys (a
+    leading underscore: arrays kept for plots) are left out; a missing key is
+    an empty cell.
+    """
+    rows = list(rows)
+    keys = [k for k in dict.fromkeys(k for r in rows for k in r) if not k.startswith("_")]
+    return write_table(path, ({k: r.get(k) for k in keys} for r in rows),
+                       tuple((k, k) for k in keys))
+
+
+def timeseries_columns() -> tuple:
+    """(name, unit) of every column of a run's time series, time first."""
+    return (("t", "s"),) + tuple(zip(STATE + ORBIT_COLUMNS, STATE_UNITS + ORBIT_UNITS))
+
+
+def write_timeseries(res: SimResult, path) -> Path:
+    """Write a run's samples (t, the model state, the COM orbit) as CSV, SI units."""
+    names = timeseries_columns()
+    data = np.column_stack([res.t, res.states])
+    rows = ({n: v for (n, _), v in zip(names, row)} for row in data)
+    return write_table(path, rows, tuple((n, f"{n} [{u}]") for n, u in names))
+
+
+def to_xarray(res: SimResult, attrs: dict | None = None):
+    """The run's time series as an xarray Dataset (units as attributes)."""
+    import xarray as xr
+
+    data = {n: ("t", res.states[:, i], {"units": u})
+            for i, (n, u) in enumerate(timeseries_columns()[1:])}
+    meta = {"satellite": res.satellite.name, "model": res.model, "method": res.method,
+            "label": res.label, "status": res.status, "message": res.message,
+            "conventions": "docs/conventions.md: local frame rotating with omega z, "
+                           "COM moves along -x, theta from +y towards +x"}
+    for k, v in res.satellite.to_dict().items():
+        if isinstance(v, (int, float, str)):
+            meta[f"sat_{k}"] = v
+    meta.update(attrs or {})
+    return xr.Dataset(data, coords={"t": ("t", res.t, {"units": "s"})}, attrs=meta)
+
+
+def write_netcdf(res: SimResult, path, attrs: dict | None = None) -> Path:
+    """Write the time series as NetCDF (scipy engine: no compiled NetCDF library needed)."""
+    path = Path(path)
+    to_xarray(res, attrs).to_netcdf(path, engine="scipy")
+    return path
