@@ -1,0 +1,1 @@
+"""Physical models of the satellite and its environment (issue 12 regrouping)."""
