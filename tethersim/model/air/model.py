@@ -203,7 +203,7 @@ def air_density(air: AirModel, altitude_m: float, t: float = 0.0,
     return float(msis_direct(air, h, float(t), float(longitude_rad)))
 
 
-@functools.lru_cache(maxsize=16)
+@functools.lru_cache(maxsize=8)
 def _cached_grid(air: AirModel, n_days: int):
     grid, axes = _grid.build_grid(air.epoch, n_days, air.daily_indices)
     grid.setflags(write=False)
