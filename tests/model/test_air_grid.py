@@ -126,3 +126,11 @@ def test_run_past_the_table_is_refused():
     msis_grid(air, 3600.0)
     with pytest.raises(ValueError, match=r"^duration = 172800 s reaches .*, past the bundled"):
         msis_grid(air, 2 * 86400.0)
+
+
+def test_non_finite_inputs_give_nan():
+    air = AirModel("nrlmsise00", "2017-06-23T00:00:00", 150.0, 150.0, 4.0)
+    grid, axes = msis_grid(air, 600.0)
+    for h, lon, t in ((math.nan, 0.0, 0.0), (300e3, math.nan, 0.0), (300e3, math.inf, 0.0),
+                      (300e3, 0.0, math.nan)):
+        assert math.isnan(msis_density_kernel(h, lon, t, grid, axes))

@@ -102,7 +102,7 @@ def msis_density_kernel(h, lon, t, grid, axes):
     dt = axes[5]
     n_t = int(axes[6])
     n_days = int(axes[7])
-    if not (h >= axes[8] and h <= axes[9]):
+    if not (h >= axes[8] and h <= axes[9]) or not (math.isfinite(lon) and math.isfinite(t)):
         return np.nan
     s = ut0 + t  # seconds since 00:00 UTC of the epoch's day
     d = int(math.floor(s / DAY))
@@ -117,9 +117,9 @@ def msis_density_kernel(h, lon, t, grid, axes):
     lst = (u / 3600.0 + lon * (12.0 / math.pi)) % 24.0  # local solar time [h]
     xl = lst * n_lst / 24.0
     j = int(xl)
-    if j >= n_lst:
-        j -= n_lst
     wl0, wl1, wl2, wl3 = _catmull_rom(xl - j)
+    if j >= n_lst:  # lst rounded up to 24.0
+        j -= n_lst
     wt0, wt1, wt2, wt3 = _catmull_rom(ft)
     out = 0.0
     for a in range(4):
