@@ -1,1 +1,1 @@
-"""model"""
+"""The model layer: satellite record, parameter table, presets, model registry, air."""
