@@ -25,7 +25,8 @@ from tethersim.output.tables import write_netcdf, write_table, write_timeseries
 __all__ = ["Satellite", "SatelliteError", "SimResult", "RK4StepWarning", "Outcome", "load",
            "load_preset", "simulate", "outcome", "run_summary", "write_timeseries",
            "write_netcdf", "write_table", "accelerations", "generalized_forces", "parameters",
-           "MODELS", "FAMILIES", "STATE", "PARAMETERS", "__version__"]
+           "MODELS", "FAMILIES", "STATE", "PARAMETERS", "__version__", "find_equilibrium",
+           "Equilibrium", "SweepSpec", "run_sweep"]
 from tethersim._version import __version__  # noqa: E402
 MODELS = dispatch.MODEL_NAMES
 
@@ -66,3 +67,16 @@ def generalized_forces(sat: Satellite, state, model: str = DEFAULT_MODEL) -> dic
     out = np.zeros((len(FAMILIES), 3))
     dispatch.family_forces(m, y, p, out)
     return {f: out[i].copy() for i, f in enumerate(FAMILIES)}
+
+
+# heavier parts of the API (scipy.optimize, xarray/zarr) load on first use
+_LAZY = {"find_equilibrium": "tethersim.analysis.equilibrium",
+         "Equilibrium": "tethersim.analysis.equilibrium",
+         "SweepSpec": "tethersim.experiments.sweep", "run_sweep": "tethersim.experiments.sweep"}
+
+
+def __getattr__(name):
+    if name in _LAZY:
+        import importlib
+        return getattr(importlib.import_module(_LAZY[name]), name)
+    raise AttributeError(f"module 'tethersim' has no attribute {name!r}")

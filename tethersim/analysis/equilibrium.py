@@ -26,7 +26,25 @@ RESIDUAL_TOL = 1e-10  # largest |acceleration| accepted at an equilibrium [SI]
 
 @dataclass(frozen=True)
 class Equilibrium:
-    """delta_x, delta_y [m]; theta [rad]; residual: max |q̈| there [SI]."""
+    """A steady configuration in the rotating frame and its linearisation.
+
+    Attributes
+    ----------
+    satellite : Satellite
+        The satellite solved for.
+    model : str
+        Model variant (``tethersim.MODELS``).
+    delta_x, delta_y : float
+        Balloon offset from the COM [m] (+x: the wake, +y: up).
+    theta : float
+        Pitch [rad], wrapped to (−π, π].
+    taut : tuple of bool
+        Whether tethers 1 and 2 are taut there.
+    residual : float
+        Largest |q̈| left at the solution [m/s², rad/s²].
+    eigenvalues : numpy.ndarray
+        Eigenvalues of the generated Jacobian there [1/s].
+    """
 
     satellite: Satellite
     model: str
@@ -63,7 +81,34 @@ class Equilibrium:
 
 
 def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> Equilibrium:
-    """Solve q̈(δx, δy, θ, 0, 0, 0) = 0 from ``guess`` (default: the initial state, θ = 0)."""
+    """Find the equilibrium q̈(δx, δy, θ, 0, 0, 0) = 0 nearest a guess, with its modes.
+
+    Parameters
+    ----------
+    sat : Satellite
+        The satellite.
+    model : str, optional
+        Model variant (default ``"derived"``).
+    guess : sequence of 3 floats, optional
+        Starting (δx [m], δy [m], θ [rad]); default the initial offset and θ = 0.
+
+    Returns
+    -------
+    Equilibrium
+        The configuration, which tethers are taut, and the Jacobian's eigenvalues.
+
+    Raises
+    ------
+    RuntimeError
+        If the solver finds no state with all accelerations below ``RESIDUAL_TOL``.
+
+    Examples
+    --------
+    >>> import tethersim as ts
+    >>> eq = ts.find_equilibrium(ts.load_preset("satI"))
+    >>> round(eq.delta_x)
+    29
+    """
     m = model_index(model)
     p = parameter_vector(sat)
     g = np.array(guess if guess is not None else (sat.initial[0], sat.initial[1], 0.0), float)
