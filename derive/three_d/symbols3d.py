@@ -69,3 +69,13 @@ def state_substitution() -> dict:
 def to_state_symbols(expr):
     """Replace q(t), q̇(t), q̈(t) by the plain state symbols."""
     return sp.sympify(expr).subs(state_substitution())
+
+
+def eq44_box_inertia(mass: float, area: float) -> tuple:
+    """(roll, pitch, yaw) moments [kg m²] of a cube of frontal area ``area`` (Eq 4.4).
+
+    I_xx = I_yy = I_zz = m (2 Area)/12, i.e. m s²/6 for a cube of side s (thesis
+    p. 4-5, Table 4.4): the default I1 (tip-mass) and I2 (bus) of the 3-D models.
+    """
+    value = mass * 2.0 * area / 12.0
+    return (value, value, value)
