@@ -28,7 +28,8 @@ def derived_3d(name: str) -> DerivedModel3D:
 
 
 def _mp(values):
-    return [mpmath.mpf(float(v)) for v in values]
+    """mpf of each value: float64 inputs exactly, mpf inputs unchanged."""
+    return [v if isinstance(v, mpmath.mpf) else mpmath.mpf(float(v)) for v in values]
 
 
 class Reference3D:
