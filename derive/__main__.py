@@ -10,6 +10,9 @@ from .kinematics import planar_kinematics
 from .models import DEFINITIONS, FAMILY_ORDER
 from .pipeline import derive
 from .symbols import state_substitution
+from .three_d import codegen3d
+from .three_d.models3d import DEFINITIONS_3D
+from .three_d.pipeline3d import derive3d
 
 
 
@@ -30,12 +33,24 @@ def main(argv=None) -> int:
         names.append(fname[:-3])
         print(f"  {defn.name:<17} -> {out.name}/{fname}")
     (out / "layout.py").write_text(codegen.layout_source(FAMILY_ORDER))
+    names3d = []
+    for defn in DEFINITIONS_3D:
+        fname = codegen3d.module_filename(defn.name)
+        (out / fname).write_text(codegen3d.module_source(derive3d(defn)))
+        names3d.append(fname[:-3])
+        print(f"  {defn.name:<19} -> {out.name}/{fname}")
+    (out / "layout3d.py").write_text(codegen3d.layout_source(DEFINITIONS_3D))
+    (out / "dispatch3d.py").write_text(codegen3d.dispatch_source(DEFINITIONS_3D))
     init = ['"""GENERATED FILE - DO NOT EDIT.  Numba kernels of every model variant."""',
             "from . import layout", *(f"from . import {n}" for n in names), "",
-            "MODELS = {", *(f"    {d.name!r}: {n}," for d, n in zip(DEFINITIONS, names)), "}", ""]
+            "MODELS = {", *(f"    {d.name!r}: {n}," for d, n in zip(DEFINITIONS, names)), "}", "",
+            "# 3-D models: their own state and parameter layout (generated/layout3d.py).",
+            *(f"from . import {n}" for n in names3d), "",
+            "MODELS_3D = {", *(f"    {d.name!r}: {n}," for d, n in zip(DEFINITIONS_3D, names3d)),
+            "}", ""]
     (out / "__init__.py").write_text("\n".join(init))
     (out / "dispatch.py").write_text(codegen.dispatch_source(DEFINITIONS))
-    print(f"derive: {len(names)} models in {time.perf_counter() - t0:.1f} s")
+    print(f"derive: {len(names) + len(names3d)} models in {time.perf_counter() - t0:.1f} s")
     return 0
 
 

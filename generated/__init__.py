@@ -11,3 +11,14 @@ MODELS = {
     'exact-gravity': exact_gravity,
     'objective-damper': objective_damper,
 }
+
+# 3-D models: their own state and parameter layout (generated/layout3d.py).
+from . import three_d
+from . import three_d_exact_gravity
+from . import three_d_objective_damper
+
+MODELS_3D = {
+    '3d': three_d,
+    '3d-exact-gravity': three_d_exact_gravity,
+    '3d-objective-damper': three_d_objective_damper,
+}

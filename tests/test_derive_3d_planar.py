@@ -1,0 +1,134 @@
+"""3-D models reduce to the planar models at zero out-of-plane state (check (a)).
+
+With δz = φ = ψ = 0 and their rates zero, and the box inertias off (the planar
+model has point masses only: I1 = I2 = 0), the in-plane components of the 3-D
+rhs, family forces and Jacobian equal the planar ones of the same variant, and
+every out-of-plane acceleration and its dependence on the in-plane state vanish
+(so a planar state stays planar).  Symbolically, M and f reduce to the planar
+Lagrange terms.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import sympy as sp
+
+import generated
+from derive.three_d import symbols3d as s3
+from derive.three_d.reference import derived_3d
+from generated import layout, layout3d
+
+PAIRS = (("derived", "3d"), ("exact-gravity", "3d-exact-gravity"),
+         ("objective-damper", "3d-objective-damper"))
+SEED = 20051313
+N_POINTS = 24
+R0 = 6.578e6
+MU = 3.986004418e14
+IN_PLANE = tuple(layout3d.STATE.index(n) for n in layout.STATE)  # δx, δy, θ and rates
+OUT_OF_PLANE = tuple(i for i in range(12) if i not in IN_PLANE)
+Q_IN = (0, 1, 4)  # q index of δx, δy, θ in the 3-D coordinates
+REL_TOL = 1e-12  # relative, per component (two cse trees of the same expressions)
+FLOOR = 1e-15
+
+
+def _lengths(y, p):
+    v = dict(zip(layout.PARAMETERS, p))
+    dx, dy, th = y[:3]
+    return (math.hypot(v["b"] * math.sin(th) - dx, v["b"] * math.cos(th) - dy),
+            math.hypot(-v["a"] * math.sin(th) - dx, -v["a"] * math.cos(th) - dy))
+
+
+def _draw(rng, taut):
+    """Random planar (y, p) as tests/test_generated.py, tether j taut or slack by ≥ 5 %."""
+    u = rng.uniform
+    par = dict(m1=u(5, 20), m2=u(50, 200), m3=u(0.5, 2), A1=u(0.1, 1), A2=u(0.1, 1),
+               A3=u(5, 20), a=u(0.5, 2), b=u(5, 20), l10=0.0, l20=0.0, E1=u(1e-3, 0.1),
+               E2=u(1e-3, 0.1), c1=u(1e-3, 0.1), c2=u(1e-3, 0.1), CD=2.0, r0=R0, mu=MU,
+               omega=math.sqrt(MU / R0**3), omega_earth=7.292115e-5,
+               rho1=u(2.5e-10, 3.1e-10), rho2=u(2.5e-10, 3.1e-10), rho3=u(2.5e-10, 3.1e-10))
+    y = np.array([u(-40, 40), u(-10, 10), u(-np.pi, np.pi), u(-0.5, 0.5), u(-0.5, 0.5),
+                  u(-0.01, 0.01)])
+    p = np.array([par[n] for n in layout.PARAMETERS])
+    for j, name in enumerate(("l10", "l20")):
+        lam = _lengths(y, p)[j]
+        p[layout.PARAMETERS.index(name)] = lam / u(1.05, 1.5) if taut[j] else lam * u(1.05, 1.5)
+    return y, p
+
+
+def to_3d(y2, p2):
+    """The 3-D (y, p) of a planar one: out-of-plane state 0, inertias 0 (point masses)."""
+    y3 = np.zeros(12)
+    y3[list(IN_PLANE)] = y2
+    p3 = np.zeros(len(layout3d.PARAMETERS))
+    p3[: len(p2)] = p2
+    assert layout3d.PARAMETERS[: len(p2)] == layout.PARAMETERS
+    return y3, p3
+
+
+@pytest.fixture(scope="module")
+def sample():
+    rng = np.random.default_rng(SEED)
+    cases = ((True, True), (True, False), (False, True), (False, False))
+    return [_draw(rng, cases[n % 4]) for n in range(N_POINTS)]
+
+
+def _close(got, want):
+    scale = np.maximum(np.abs(want), FLOOR)
+    return float(np.max(np.abs(got - want) / scale))
+
+
+@pytest.mark.parametrize("planar, three_d", PAIRS)
+def test_rhs_in_plane_equals_planar_and_out_of_plane_is_zero(sample, planar, three_d):
+    worst = 0.0
+    for y2, p2 in sample:
+        y3, p3 = to_3d(y2, p2)
+        d2, d3 = np.full(6, np.nan), np.full(12, np.nan)
+        generated.MODELS[planar].rhs(0.0, y2, p2, d2)
+        generated.MODELS_3D[three_d].rhs(0.0, y3, p3, d3)
+        worst = max(worst, _close(d3[list(IN_PLANE)], d2))
+        assert np.all(d3[list(OUT_OF_PLANE)] == 0.0)
+    assert worst <= REL_TOL, worst
+
+
+@pytest.mark.parametrize("planar, three_d", PAIRS)
+def test_family_forces_in_plane_equal_planar_and_out_of_plane_are_zero(sample, planar, three_d):
+    worst = 0.0
+    for y2, p2 in sample:
+        y3, p3 = to_3d(y2, p2)
+        o2, o3 = np.full((7, 3), np.nan), np.full((7, 6), np.nan)
+        generated.MODELS[planar].family_forces(y2, p2, o2)
+        generated.MODELS_3D[three_d].family_forces(y3, p3, o3)
+        worst = max(worst, _close(o3[:, list(Q_IN)], o2))
+        assert np.all(o3[:, [2, 3, 5]] == 0.0)
+    assert worst <= REL_TOL, worst
+
+
+@pytest.mark.parametrize("planar, three_d", PAIRS)
+def test_jacobian_in_plane_block_equals_planar_and_planar_states_stay_planar(sample, planar, three_d):
+    """∂(out-of-plane rates and accelerations)/∂(in-plane state) = 0: the plane is invariant."""
+    worst = 0.0
+    for y2, p2 in sample:
+        y3, p3 = to_3d(y2, p2)
+        J2, J3 = np.full((6, 6), np.nan), np.full((12, 12), np.nan)
+        generated.MODELS[planar].jacobian(0.0, y2, p2, J2)
+        generated.MODELS_3D[three_d].jacobian(0.0, y3, p3, J3)
+        block = J3[np.ix_(IN_PLANE, IN_PLANE)]
+        scale = np.maximum(np.abs(J2), 1e-12 * np.max(np.abs(J2), axis=1, keepdims=True))
+        worst = max(worst, float(np.max(np.abs(block - J2) / scale)))
+        assert np.all(J3[np.ix_(OUT_OF_PLANE, IN_PLANE)] == 0.0)
+    assert worst <= 1e-9, worst
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("planar, three_d", PAIRS[:2])
+def test_mass_matrix_and_f_reduce_symbolically(derived_model, planar, three_d):
+    """3-D M and f at zero out-of-plane state and zero inertias = planar M and f."""
+    m2, m3 = derived_model(planar), derived_3d(three_d)
+    zero = {s3.STATE_SYMBOLS[i]: 0 for i in OUT_OF_PLANE}
+    zero.update({p.symbol: 0 for p in s3.INERTIAS})
+    for a, k in enumerate(Q_IN):
+        assert sp.expand(m3.f[k].xreplace(zero) - m2.f[a]) == 0
+        for b, m in enumerate(Q_IN):
+            assert sp.simplify(m3.mass_matrix[k, m].xreplace(zero) - m2.mass_matrix[a, b]) == 0
