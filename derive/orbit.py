@@ -202,12 +202,18 @@ def derive_free(defn: FreeModelDefinition) -> FreeDerivedModel:
     M = sp.Matrix(lhs).jacobian(acc).applyfunc(sp.expand)
     zero = {s: 0 for s in acc}
     f = tuple(sp.expand(e.xreplace(zero)) for e in lhs)
-    families = tuple(replace(fam, Q=tuple(to_free_symbols(q) for q in fam.Q),
+    # tether families expanded: their r·(...) terms (about 1e6 N m in Q_ν) cancel
+    # symbolically, so the exact zeros of Q_r (and Q_ν along the tether) stay zeros
+    families = tuple(replace(fam, Q=tuple(_tidy(to_free_symbols(q), fam.tether) for q in fam.Q),
                              potential=None if fam.potential is None
                              else to_free_symbols(fam.potential))
                      for fam in defn.families(kin))
     energy = sp.expand(to_free_symbols(T)) + to_free_symbols(V)
     return FreeDerivedModel(defn, lhs, M, f, families, energy, to_free_symbols(V))
+
+
+def _tidy(q, tether):
+    return q if tether is None else sp.expand(q)
 
 
 def printable(expr):
