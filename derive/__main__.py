@@ -64,9 +64,10 @@ def main(argv=None) -> int:
             "MODELS = {", *(f"    {d.name!r}: {n}," for d, n in zip(DEFINITIONS, names)), "}", ""]
     (out / "__init__.py").write_text("\n".join(init))
     (out / "dispatch.py").write_text(codegen.dispatch_source(DEFINITIONS))
-    for fname in orbit_codegen.write_free_models(out):  # free orbit (issue 12), own layout
+    free = orbit_codegen.write_free_models(out)  # free orbit (issue 12), own layout
+    for fname in free:
         print(f"  {fname[:-3].replace('_', '-'):<17} -> {out.name}/{fname}")
-    print(f"derive: {len(names)} models in {time.perf_counter() - t0:.1f} s")
+    print(f"derive: {len(names) + len(free)} models in {time.perf_counter() - t0:.1f} s")
     return 0
 
 

@@ -205,7 +205,7 @@ def test_orbital_plus_attitude_energy_lost_equals_drag_and_damper_work(module, a
     """E = T + V (orbit and attitude, J2 on) + tether springs: dE/dt = drag power +
     damper power, since L = T − V has no explicit time (Eq 3.26).  With air the
     drag work (~3e6 J in 2000 s) dominates; without it the damper work (~1 J)
-    alone is checked, to 2e-3 J of a 3.5e9 J total energy."""
+    alone (~4 J) is checked; both to 1e-3 J of a 3.4e9 J total energy."""
     rho = 2.8e-10 if air else 0.0
     p = params(module, rho1=rho, rho2=1.1 * rho, rho3=0.9 * rho, c1=0.3, c2=0.3, J2=J2_EARTH)
     r0 = R_E + 200e3
@@ -219,10 +219,10 @@ def test_orbital_plus_attitude_energy_lost_equals_drag_and_damper_work(module, a
     assert np.all(w_damp[1:] < 0) and abs(w_damp[-1]) > 1.0
     if air:
         assert np.all(w_drag[1:] < 0)
-        assert np.allclose(lost, w_drag + w_damp, rtol=1e-7, atol=1e-3), (lost, w_drag + w_damp)
     else:
         assert np.all(w_drag == 0)
-        assert np.allclose(lost, w_damp, rtol=0, atol=2e-3), (lost, w_damp)
+    # 1e-3 J: 3e-13 of the total energy, 3e-4 of the damper work
+    assert np.allclose(lost, w_drag + w_damp, rtol=0, atol=1e-3), (lost, w_drag + w_damp)
 
 
 @pytest.mark.slow
