@@ -5,7 +5,7 @@ import sys
 import time
 from pathlib import Path
 
-from . import codegen
+from . import codegen, orbit_codegen
 from .kinematics import planar_kinematics
 from .models import DEFINITIONS, FAMILY_ORDER
 from .pipeline import derive
@@ -50,7 +50,11 @@ def main(argv=None) -> int:
             "}", ""]
     (out / "__init__.py").write_text("\n".join(init))
     (out / "dispatch.py").write_text(codegen.dispatch_source(DEFINITIONS))
-    print(f"derive: {len(names) + len(names3d)} models in {time.perf_counter() - t0:.1f} s")
+    free = orbit_codegen.write_free_models(out)  # free orbit (issue 12), own layout
+    for fname in free:
+        print(f"  {fname[:-3].replace('_', '-'):<17} -> {out.name}/{fname}")
+    print(f"derive: {len(names) + len(names3d) + len(free)} models in "
+          f"{time.perf_counter() - t0:.1f} s")
     return 0
 
 

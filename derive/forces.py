@@ -13,7 +13,7 @@ import sympy as sp
 from sympy.physics.mechanics import partial_velocity
 
 from .kinematics import Kinematics
-from .symbols import P, SPEEDS, TETHER_LENGTHS, TETHER_REST
+from .symbols import P, TETHER_LENGTHS, TETHER_REST
 
 
 @dataclass(frozen=True)
@@ -34,9 +34,9 @@ class ForceFamily:
 
 def generalized_forces(kin: Kinematics, loads) -> tuple:
     """Eq 3.31 for a list of (point index, force vector) pairs."""
-    Q = [sp.S.Zero] * len(SPEEDS)
+    Q = [sp.S.Zero] * len(kin.speeds)
     for i, F in loads:
-        pv = partial_velocity([kin.velocities[i]], SPEEDS, kin.N)[0]
+        pv = partial_velocity([kin.velocities[i]], kin.speeds, kin.N)[0]
         for k, dv in enumerate(pv):
             Q[k] += F.dot(dv)
     return tuple(Q)

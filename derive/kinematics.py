@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.physics.mechanics import Particle, Point, ReferenceFrame
 
-from .symbols import COORDINATES, P, TETHER_LENGTHS, t
+from .symbols import COORDINATES, P, SPEEDS, TETHER_LENGTHS, t
 
 BODY_NAMES = ("tip-mass", "bus", "balloon")
 
@@ -36,6 +36,7 @@ class Kinematics:
     velocities: tuple
     tether_vectors: tuple
     tether_length_defs: dict
+    speeds: tuple = SPEEDS  # generalized speeds of Eq 3.31 (the free orbit adds ṙ, ν̇)
 
 
 def planar_kinematics() -> Kinematics:
