@@ -14,13 +14,13 @@ import mpmath
 import numpy as np
 import pytest
 
-import generated
+import tethersim.generated as generated
 from derive.three_d import symbols3d as s3
 from derive.three_d.codegen3d import module_filename
 from derive.three_d.forces3d import FAMILY_ORDER
 from derive.three_d.models3d import DEFINITIONS_3D
 from derive.three_d.reference import Reference3D, derived_3d
-from generated import dispatch3d, layout3d
+from tethersim.generated import dispatch3d, layout3d
 
 MODELS = tuple(generated.MODELS_3D)
 SEED = 20051303

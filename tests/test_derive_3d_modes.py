@@ -22,8 +22,8 @@ import math
 import numpy as np
 import pytest
 
-import generated
-from generated import layout3d
+import tethersim.generated as generated
+from tethersim.generated import layout3d
 
 MODELS = tuple(generated.MODELS_3D)
 R0 = 6.578e6

@@ -15,10 +15,10 @@ import numpy as np
 import pytest
 import sympy as sp
 
-import generated
+import tethersim.generated as generated
 from derive.three_d import symbols3d as s3
 from derive.three_d.reference import derived_3d
-from generated import layout, layout3d
+from tethersim.generated import layout, layout3d
 
 PAIRS = (("derived", "3d"), ("exact-gravity", "3d-exact-gravity"),
          ("objective-damper", "3d-objective-damper"))

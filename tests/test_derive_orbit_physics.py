@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from generated import free, free_exact_gravity, free_objective_damper
+from tethersim.generated import free, free_exact_gravity, free_objective_damper
 
 MU, R_E, OMEGA_E, J2_EARTH = 3.986004418e14, 6378.137e3, 7.292115e-5, 1.08263e-3
 SATI = dict(m1=10.0, m2=105.0, m3=1.0, A1=0.1, A2=1.05, A3=12.0, a=1.0, b=10.5,

@@ -24,7 +24,7 @@ from derive.orbit import (FREE_DEFINITIONS, FREE_PARAMETERS, FREE_STATE_SYMBOLS,
                           inverse_powers_exact, r_ref)
 from derive.pipeline import derive
 from derive.symbols import P, TETHER_LENGTHS
-from generated import free_dispatch
+from tethersim.generated import free_dispatch
 
 ROWS = ("delta_x", "delta_y", "theta")
 NAMES = tuple(d.name for d in FREE_DEFINITIONS)

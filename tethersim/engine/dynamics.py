@@ -1,29 +1,102 @@
 """The full state derivative that every integrator advances (jitted kernels).
 
-Integrated state (10 floats, SI):
-  y[0:6]  (δx, δy, θ, δẋ, δẏ, θ̇): the generated model (generated/layout.py)
-  y[6:10] (X, Y, VX, VY): the COM in the inertial (GCE) plane, two-body Eq 3.9
+Integrated state (10 floats for today's models, SI):
+  y[0:m]    the generated model's state, m = model_state_size(model)
+            ((δx, δy, θ, δẋ, δẏ, θ̇) in generated/layout.py)
+  y[m:m+4]  (X, Y, VX, VY): the COM in the inertial (GCE) plane, two-body Eq 3.9
 
-cfg is an int64 array: cfg[0] model index (generated.dispatch.MODEL_NAMES),
-cfg[1] 1 for per-body air density (each body at its own altitude), else 0.
+The model is a compile-time constant of every compiled loop: ``derivative``
+takes the model index (generated.dispatch.MODEL_NAMES) as an integer
+*literal* and calls that model's generated ``rhs`` directly (``model_rhs``),
+so each model gets its own specialised loop and no branch on the model runs
+per evaluation.  A loop obtains the literal with ``numba.literally(model)``
+(integrators/rk4.py, dop853.py); a model added to generated/ by `make derive`
+gets its loop with no edit here.
+
+cfg (an int64 array: cfg[0] model index, cfg[1] 1 for per-body air density)
+is kept for the post-processing kernels (evaluate.py), which run once per
+sample and dispatch on the model at run time.
 """
 from __future__ import annotations
 
 import math
 
 import numpy as np
-from numba import njit
+from numba import njit, types
+from numba.extending import overload
 
-from tethersim.generated import dispatch
+import tethersim.generated as generated
+from tethersim.generated import dispatch, layout
 from tethersim.generated.layout import (P_A, P_B, P_L10, P_L20, P_MU, P_R0, P_RHO1, P_RHO2,
                               P_RHO3)
 
 from tethersim.model.atmosphere import TABLE, density_kernel
 from tethersim.model.constants import R_EARTH
 
-N_STATE = 10
-N_ATTITUDE = 6
+N_ATTITUDE = len(layout.STATE)  # today's models (all share generated/layout.py)
+N_ORBIT = 4  # X, Y, VX, VY appended after the model's own state
+N_STATE = N_ATTITUDE + N_ORBIT
 CFG_MODEL, CFG_PER_BODY = 0, 1
+
+# generated kernel modules in model-index order (make derive writes both lists)
+KERNELS = tuple(generated.MODELS.values())
+if tuple(generated.MODELS) != dispatch.MODEL_NAMES:
+    raise ImportError("generated/ is inconsistent (MODELS vs dispatch.MODEL_NAMES): run make derive")
+
+
+def _kernel_state_size(module) -> int:
+    # a model module with its own layout (other state sizes) says so with STATE
+    return len(getattr(module, "STATE", layout.STATE))
+
+
+def state_size(model: int) -> int:
+    """Length of the integrated state of model index ``model`` (model + orbit).
+
+    Parameters
+    ----------
+    model : int
+        Index into generated.dispatch.MODEL_NAMES.
+
+    Returns
+    -------
+    int
+        The model's own state size plus the 4 floats of the COM orbit.
+    """
+    return _kernel_state_size(KERNELS[model]) + N_ORBIT
+
+
+def model_rhs(model, t, y, p, dydt):
+    """Generated rhs of model ``model`` (an integer literal in compiled code only)."""
+    raise NotImplementedError("model_rhs is only callable from compiled code")
+
+
+def model_state_size(model):
+    """Size of model ``model``'s own state (compiled code, literal model only)."""
+    raise NotImplementedError("model_state_size is only callable from compiled code")
+
+
+@overload(model_rhs, inline="always", prefer_literal=True)
+def _model_rhs(model, t, y, p, dydt):
+    # only a literal model index picks a kernel: a run-time index is a typing
+    # error, not a silent fallback to a branch on every evaluation
+    if not isinstance(model, types.IntegerLiteral):
+        return None
+    rhs = KERNELS[model.literal_value].rhs
+
+    def impl(model, t, y, p, dydt):
+        rhs(t, y, p, dydt)
+    return impl
+
+
+@overload(model_state_size, inline="always", prefer_literal=True)
+def _model_state_size(model):
+    if not isinstance(model, types.IntegerLiteral):
+        return None
+    n = _kernel_state_size(KERNELS[model.literal_value])
+
+    def impl(model):
+        return n
+    return impl
 
 
 @njit(cache=True)
@@ -41,22 +114,42 @@ def body_densities(y, p, pw):
 
 
 @njit(cache=True)
-def derivative(cfg, t, y, p, pw, dydt):
-    """dy/dt of the 10-float state (generated model + two-body orbit, Eq 3.9)."""
+def derivative(model, per_body, t, y, p, pw, dydt):
+    """dy/dt of the integrated state: generated model + two-body orbit (Eq 3.9).
+
+    Parameters
+    ----------
+    model : int literal
+        Model index (generated.dispatch.MODEL_NAMES); must be a compile-time
+        literal (``numba.literally`` in the calling loop).
+    per_body : bool
+        True: air density at each body's own altitude (computed into pw).
+    t : float
+        Time [s].
+    y : ndarray
+        State (model state, then X, Y, VX, VY).
+    p : ndarray
+        Parameter vector (generated/layout.py).
+    pw : ndarray
+        Scratch parameter vector, overwritten when per_body.
+    dydt : ndarray
+        Output, same length as y.
+    """
+    m = model_state_size(model)
     par = p
-    if cfg[CFG_PER_BODY] == 1:
+    if per_body:
         body_densities(y, p, pw)
         par = pw
-    # the generated rhs reads y[0:6] and writes dydt[0:6] only: passing the whole
+    # the generated rhs reads y[0:m] and writes dydt[0:m] only: passing the whole
     # arrays avoids building two slice views per call (~10 % of an RK4 run)
-    dispatch.rhs(cfg[CFG_MODEL], t, y, par, dydt)
-    X, Y = y[6], y[7]
+    model_rhs(model, t, y, par, dydt)
+    X, Y = y[m], y[m + 1]
     r2 = X * X + Y * Y  # hypot's overflow guard is not needed at orbit scale
     k = -p[P_MU] / (r2 * math.sqrt(r2))
-    dydt[6] = y[8]
-    dydt[7] = y[9]
-    dydt[8] = k * X
-    dydt[9] = k * Y
+    dydt[m] = y[m + 2]
+    dydt[m + 1] = y[m + 3]
+    dydt[m + 2] = k * X
+    dydt[m + 3] = k * Y
 
 
 @njit(cache=True)

@@ -15,13 +15,13 @@ import warnings
 import numpy as np
 from tqdm.auto import tqdm
 
-from tethersim.engine.dynamics import CFG_MODEL, CFG_PER_BODY, N_STATE, initial_state
+from tethersim.engine.dynamics import initial_state, state_size
 from tethersim.engine.integrators.dop853 import STATUS_OK, dop853_run
 from tethersim.engine.integrators.rk4 import rk4_run
-from tethersim.model.registry import DEFAULT_MODEL, model_index
-from tethersim.engine.result import SimResult
-from tethersim.model.satellite import Satellite, parameter_vector
 from tethersim.engine.linearise import rk4_amplification
+from tethersim.engine.result import SimResult
+from tethersim.model.registry import DEFAULT_MODEL, model_index
+from tethersim.model.satellite import Satellite, parameter_vector
 
 METHODS = ("adaptive", "rk4")
 STEPS_PER_PERIOD = 300  # thesis default: 1500 steps for 5 periods (p. 5-1)
@@ -51,11 +51,9 @@ def _check_positive(name, value, integer=False):
     return v
 
 
-def _cfg(sat: Satellite, model: str) -> np.ndarray:
-    cfg = np.zeros(2, dtype=np.int64)
-    cfg[CFG_MODEL] = model_index(model)
-    cfg[CFG_PER_BODY] = 1 if sat.density_mode == "per-body" else 0
-    return cfg
+def _kernel_args(sat: Satellite, model: str) -> tuple:
+    """(model index, per-body density): the compiled loop is chosen by the first."""
+    return model_index(model), sat.density_mode == "per-body"
 
 
 def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
@@ -125,7 +123,7 @@ def _bar(total, desc, progress):
 
 
 def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
-    cfg = _cfg(sat, model)
+    m, per_body = _kernel_args(sat, model)
     p = parameter_vector(sat)
     pw = p.copy()
     h = periods * sat.period / steps
@@ -137,7 +135,7 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
             f"Use more steps or method='adaptive'."), stacklevel=3)
     y = initial_state(sat.initial, sat.r0, sat.r0 * sat.omega)
     out_t = np.empty(steps + 1)
-    out_y = np.empty((steps + 1, N_STATE))
+    out_y = np.empty((steps + 1, state_size(m)))
     out_t[0], out_y[0] = 0.0, y
     row, switches, status = 1, 0, "ok"
     message = ""
@@ -148,7 +146,8 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
         try:
             while done < steps:
                 n = min(chunk, steps - done)
-                rows, sw, st = rk4_run(cfg, done * h, y, h, n, 1, p, pw, locate, out_t, out_y, row)
+                rows, sw, st = rk4_run(m, per_body, done * h, y, h, n, 1, p, pw, locate, out_t,
+                                       out_y, row)
                 row += rows
                 switches += sw
                 done += n
@@ -167,13 +166,13 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
 
 
 def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress) -> SimResult:
-    cfg = _cfg(sat, model)
+    m, per_body = _kernel_args(sat, model)
     p = parameter_vector(sat)
     pw = p.copy()
     t_end = periods * sat.period
     y = initial_state(sat.initial, sat.r0, sat.r0 * sat.omega)
     out_t = np.linspace(0.0, t_end, n_out + 1)
-    out_y = np.full((n_out + 1, N_STATE), np.nan)
+    out_y = np.full((n_out + 1, state_size(m)), np.nan)
     out_y[0] = y
     counters = np.zeros(5, dtype=np.int64)
     t, h, i_out, status, message = 0.0, 0.0, 1, "ok", ""
@@ -186,8 +185,9 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress) -> S
             for k in range(1, chunks + 1):
                 t_pause = math.inf if k == chunks else t_end * k / chunks
                 t_prev = t
-                t, h, i_out, st = dop853_run(cfg, t, t_end, y, h, p, pw, rtol, atol, locate,
-                                             out_t, out_y, i_out, max_steps, counters, t_pause)
+                t, h, i_out, st = dop853_run(m, per_body, t, t_end, y, h, p, pw, rtol, atol,
+                                             locate, out_t, out_y, i_out, max_steps, counters,
+                                             t_pause)
                 bar.update((t - t_prev) / sat.period)
                 if st != STATUS_OK:
                     status = "diverged" if st == 1 else "failed"

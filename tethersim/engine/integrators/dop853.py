@@ -6,17 +6,24 @@ a different tether tautness is shortened to land just past the switch
 (integrators.switching), so no step straddles a discontinuity of the
 right-hand side.  Output is the 7th-order dense interpolant on a caller's time
 grid.
+
+``dop853_run`` is a thin wrapper: it makes the model index a compile-time
+literal (one specialised loop per model, cached on disk), allocates the
+scratch arrays and keeps them alive while ``_dop853_loop`` works on borrowed
+views of every array (integrators/borrow.py): no reference count per step.
 """
 from __future__ import annotations
 
 import math
 
 import numpy as np
-from numba import njit
+from numba import literally, njit
 
 from tethersim.engine.dynamics import derivative, tether_margins
 from tethersim.engine.integrators import switching
-from tethersim.engine.integrators.steps import (N_K, dop853_dense, dop853_error_norm, dop853_interpolate,
+from tethersim.engine.integrators.borrow import borrow
+from tethersim.engine.integrators.steps import (N_K, dop853_dense, dop853_error_norm,
+                                                dop853_interpolate,
                     dop853_step)
 
 ORDER = 8
@@ -30,8 +37,11 @@ STATUS_OK, STATUS_NONFINITE, STATUS_STEP_TOO_SMALL, STATUS_MAX_STEPS = 0, 1, 2, 
 
 
 @njit(cache=True)
-def initial_step(cfg, t0, y0, f0, p, pw, rtol, atol, t_end):
-    """Hairer's starting step (scipy.integrate._ivp.common.select_initial_step)."""
+def initial_step(model, per_body, t0, y0, f0, p, pw, rtol, atol, t_end, y1, f1):
+    """Hairer's starting step (scipy.integrate._ivp.common.select_initial_step).
+
+    y1, f1: scratch vectors like y0.
+    """
     n = y0.shape[0]
     d0, d1 = 0.0, 0.0
     for i in range(n):
@@ -41,9 +51,9 @@ def initial_step(cfg, t0, y0, f0, p, pw, rtol, atol, t_end):
     d0, d1 = math.sqrt(d0 / n), math.sqrt(d1 / n)
     h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
     h0 = min(h0, t_end - t0)
-    y1 = y0 + h0 * f0
-    f1 = np.empty(n)
-    derivative(cfg, t0 + h0, y1, p, pw, f1)
+    for i in range(n):
+        y1[i] = y0[i] + h0 * f0[i]
+    derivative(model, per_body, t0 + h0, y1, p, pw, f1)
     d2 = 0.0
     for i in range(n):
         sc = atol + abs(y0[i]) * rtol
@@ -56,36 +66,26 @@ def initial_step(cfg, t0, y0, f0, p, pw, rtol, atol, t_end):
     return min(100 * h0, h1, t_end - t0)
 
 
-# nogil: sweeps run many trajectories on threads (tethersim.experiments.sweep)
 @njit(cache=True, nogil=True)
-def dop853_run(cfg, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y, i_out,
-               max_steps, counters, t_pause=math.inf):
-    """Integrate y (in place) from t0 to t_end with DOP853.
-
-    h: first step to try (<= 0: choose one).  t_pause: return after the first
-    step that reaches it (the step is not shortened to land on it), so a run
-    split into calls at any pause times takes exactly the steps of one call.  Writes the dense output at each
-    out_t[i] in (t0, t_end] into out_y[i], starting at index i_out.
-    counters (int64[5]) accumulates: nfev, accepted, rejected, switches, steps.
-    Returns (t reached, next step size, next output index, status).
-    """
+def _dop853_loop(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y,
+                 i_out, max_steps, counters, t_pause, work, y_new, f, F, g):
+    # every array is borrowed here, once: nothing below counts references
+    y, p, pw, out_t, out_y = borrow(y), borrow(p), borrow(pw), borrow(out_t), borrow(out_y)
+    counters, work, y_new, f, F, g = (borrow(counters), borrow(work), borrow(y_new), borrow(f),
+                                      borrow(F), borrow(g))
     n = y.shape[0]
-    work = np.empty((N_K + 1, n))
     K = work[:N_K]
     ys = work[N_K]
-    y_new = np.empty(n)
-    f = np.empty(n)
-    F = np.empty((7, n))
-    g0 = np.empty(2)
-    g1 = np.empty(2)
+    g0, g1 = g[0], g[1]
     t = t0
-    derivative(cfg, t, y, p, pw, f)
+    derivative(model, per_body, t, y, p, pw, f)
     counters[0] += 1
     for i in range(n):
         if not math.isfinite(f[i]):
             return t, h, i_out, STATUS_NONFINITE
     if h <= 0.0:
-        h = initial_step(cfg, t, y, f, p, pw, rtol, atol, t_end)
+        # F's rows are free until the first dense output: scratch for the trial step
+        h = initial_step(model, per_body, t, y, f, p, pw, rtol, atol, t_end, F[0], F[1])
         counters[0] += 1
     if not math.isfinite(h):
         return t, h, i_out, STATUS_NONFINITE
@@ -100,7 +100,7 @@ def dop853_run(cfg, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y, i_
             if not (h >= min_step):  # written so that a NaN step also stops
                 return t, h, i_out, STATUS_STEP_TOO_SMALL
             h_try = min(h, t_end - t)
-            dop853_step(cfg, t, y, f, h_try, p, pw, K, ys, y_new)
+            dop853_step(model, per_body, t, y, f, h_try, p, pw, K, ys, y_new)
             counters[0] += 12
             err = dop853_error_norm(K, h_try, y, y_new, rtol, atol)
             if not math.isfinite(err):
@@ -118,13 +118,14 @@ def dop853_run(cfg, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y, i_
             tether_margins(y, p, g0)
             tether_margins(y_new, p, g1)
             if switching.crossed(g0, g1) >= 0:
-                h_try = switching.locate(1, cfg, t, y, f, h_try, p, pw, work, y_new, g0, g1)
+                h_try = switching.locate(1, model, per_body, t, y, f, h_try, p, pw, work, y_new,
+                                         g0, g1, g[2])
                 counters[3] += 1
         counters[1] += 1
         t_new = t + h_try
         if i_out < out_t.shape[0] and out_t[i_out] <= t_new:
             # the 3 extra stages of the interpolant only when an output falls in the step
-            dop853_dense(cfg, t, y, y_new, h_try, p, pw, K, ys, F)
+            dop853_dense(model, per_body, t, y, y_new, h_try, p, pw, K, ys, F)
             counters[0] += 3
         while i_out < out_t.shape[0] and out_t[i_out] <= t_new:
             dop853_interpolate(F, y, (out_t[i_out] - t) / h_try, out_y[i_out])
@@ -138,3 +139,56 @@ def dop853_run(cfg, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y, i_
                 return t, h, i_out, STATUS_NONFINITE
     counters[4] += steps
     return t, h, i_out, STATUS_OK
+
+
+# nogil: sweeps run many trajectories on threads (tethersim.sweep)
+@njit(cache=True, nogil=True)
+def dop853_run(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y, i_out,
+               max_steps, counters, t_pause=math.inf):
+    """Integrate y (in place) from t0 to t_end with DOP853.
+
+    Parameters
+    ----------
+    model : int
+        Model index (generated.dispatch.MODEL_NAMES); each value compiles
+        (once, cached on disk) its own loop.
+    per_body : bool
+        Air density at each body's own altitude (dynamics.body_densities).
+    t0, t_end : float
+        Start and end time [s].
+    y : ndarray
+        State, advanced in place.
+    h : float
+        First step to try (<= 0: choose one).
+    p, pw : ndarray
+        Parameter vector and a scratch copy of it.
+    rtol, atol : float
+        Tolerances.
+    locate : bool
+        Shorten a step that changes a tether's tautness to land on the switch.
+    out_t, out_y : ndarray
+        Output grid; the dense output at each out_t[i] in (t0, t_end] goes to
+        out_y[i], starting at index i_out.
+    i_out, max_steps : int
+        First output index; most steps in this call.
+    counters : ndarray
+        int64[5], accumulates nfev, accepted, rejected, switches, steps.
+    t_pause : float
+        Return after the first step that reaches it (the step is not
+        shortened to land on it), so a run split into calls at any pause
+        times takes exactly the steps of one call.
+
+    Returns
+    -------
+    tuple
+        (t reached, next step size, next output index, status).
+    """
+    literally(model)
+    n = y.shape[0]
+    work = np.empty((N_K + 1, n))  # stages, then a stage state
+    y_new = np.empty(n)
+    f = np.empty(n)
+    F = np.empty((7, n))
+    g = np.empty((3, 2))  # tether margins at both ends of a step, and a trial
+    return _dop853_loop(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t,
+                        out_y, i_out, max_steps, counters, t_pause, work, y_new, f, F, g)

@@ -5,72 +5,75 @@ inside a step is found by Illinois root finding on the tether margin of the
 step's end point (integrators.switching), the step is split there, and the
 rest of the step is taken on the other side of the switch: the right-hand
 side is smooth within every sub-step, which restores fourth order.
+
+``rk4_run`` is a thin wrapper: it makes the model index a compile-time literal
+(one specialised loop per model, cached on disk), allocates the scratch
+arrays and keeps them alive while ``_rk4_loop`` works on borrowed views of
+every array (integrators/borrow.py), so no reference count is touched per step.
 """
 from __future__ import annotations
 
 import math
 
 import numpy as np
-from numba import njit
+from numba import literally, njit
 
 from tethersim.engine.dynamics import tether_margins
 from tethersim.engine.integrators import switching
+from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.steps import rk4_step
 
 ORDER = 4
+MAX_SPLITS = 16  # switches located in one step before it is finished unsplit (chattering)
 
 
 @njit(cache=True)
-def rk4_advance(cfg, t, y, h, p, pw, work, y_new, locate, g0, g1):
-    """Advance y by h (in place); split at taut/slack switches if locate.
+def rk4_advance(model, per_body, t, y, h, p, pw, work, y_new, g0, g1, g):
+    """Advance y by h (in place), split at taut/slack switches.
 
-    Returns the number of switches located inside the step.
+    Out of line: only runs with locate=True.  Returns the number of switches
+    located inside the step.
     """
-    if not locate:
-        rk4_step(cfg, t, y, h, p, pw, work, y_new)
-        y[:] = y_new
-        return 0
     splits = 0
     remaining = h
     while remaining > 0.0:
-        rk4_step(cfg, t, y, remaining, p, pw, work, y_new)
+        rk4_step(model, per_body, t, y, remaining, p, pw, work, y_new)
         tether_margins(y, p, g0)
         tether_margins(y_new, p, g1)
         if switching.crossed(g0, g1) < 0:
             y[:] = y_new
             break
-        tau = switching.locate(0, cfg, t, y, y, remaining, p, pw, work, y_new, g0, g1)
+        tau = switching.locate(0, model, per_body, t, y, y, remaining, p, pw, work, y_new,
+                               g0, g1, g)
         # y_new now holds the state just past the switch, at t + tau
         y[:] = y_new
         t += tau
         remaining -= tau
         splits += 1
-        if splits > 16:  # chattering: finish the step unsplit
-            rk4_step(cfg, t, y, remaining, p, pw, work, y_new)
+        if splits > MAX_SPLITS:
+            rk4_step(model, per_body, t, y, remaining, p, pw, work, y_new)
             y[:] = y_new
             break
     return splits
 
 
-# nogil: sweeps run many trajectories on threads (tethersim.experiments.sweep)
 @njit(cache=True, nogil=True)
-def rk4_run(cfg, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0):
-    """n_steps RK4 steps of size h from (t0, y), y advanced in place.
-
-    Writes every ``stride``-th state into out_y[row0 + ...] and its time into
-    out_t.  Returns (number of rows written, switches located, status), where
-    status is 0 (ok) or 1 (non-finite state: the run stopped there).
-    """
+def _rk4_loop(model, per_body, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0,
+              work, y_new, g):
+    # every array is borrowed here, once: nothing below counts references
+    y, p, pw, out_t, out_y = borrow(y), borrow(p), borrow(pw), borrow(out_t), borrow(out_y)
+    work, y_new, g = borrow(work), borrow(y_new), borrow(g)
     n = y.shape[0]
-    work = np.empty((5, n))
-    y_new = np.empty(n)
-    g0 = np.empty(2)
-    g1 = np.empty(2)
     row = row0
     switches = 0
     for k in range(1, n_steps + 1):
         t = t0 + (k - 1) * h
-        switches += rk4_advance(cfg, t, y, h, p, pw, work, y_new, locate, g0, g1)
+        if locate:
+            switches += rk4_advance(model, per_body, t, y, h, p, pw, work, y_new,
+                                    g[0], g[1], g[2])
+        else:
+            rk4_step(model, per_body, t, y, h, p, pw, work, y_new)
+            y[:] = y_new
         if k % stride == 0:
             out_t[row] = t0 + k * h
             out_y[row, :] = y
@@ -81,3 +84,41 @@ def rk4_run(cfg, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0):
     return row - row0, switches, 0
 
 
+# nogil: sweeps run many trajectories on threads (tethersim.sweep)
+@njit(cache=True, nogil=True)
+def rk4_run(model, per_body, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0):
+    """n_steps RK4 steps of size h from (t0, y), y advanced in place.
+
+    Parameters
+    ----------
+    model : int
+        Model index (generated.dispatch.MODEL_NAMES); each value compiles
+        (once, cached on disk) its own loop.
+    per_body : bool
+        Air density at each body's own altitude (dynamics.body_densities).
+    t0, y, h : float, ndarray, float
+        Start time, state (advanced in place), step.
+    n_steps, stride : int
+        Steps to take; every stride-th state is written out.
+    p, pw : ndarray
+        Parameter vector and a scratch copy of it.
+    locate : bool
+        Split steps at taut/slack switches (integrators.switching).
+    out_t, out_y : ndarray
+        Output times and states, written from row row0 on.
+    row0 : int
+        First output row.
+
+    Returns
+    -------
+    tuple
+        (rows written, switches located, status) with status 0 (ok) or 1
+        (non-finite state: the run stopped there).
+    """
+    literally(model)
+    n = y.shape[0]
+    work = np.empty((5, n))
+    y_new = np.empty(n)
+    g = np.empty((3, 2))  # tether margins at both ends of a step, and a trial
+    return _rk4_loop(model, per_body, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y,
+                     row0, work, y_new, g)

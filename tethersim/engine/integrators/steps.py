@@ -3,6 +3,15 @@
 rk4_step     classical RK4, thesis Eqs 4.1-4.5
 dop853_step  Dormand-Prince 8(5,3) (Hairer's DOP853) with its error norm and
              7th-order dense output, ported from scipy.integrate._ivp.rk.
+
+Each step function evaluates the right-hand side at one call site (a loop
+over its stages), so a model's generated rhs is compiled once per step
+function and per model; the model index is a literal (dynamics.derivative).
+The arrays they receive are borrowed (integrators/borrow.py) by the run
+function that calls them.  Stage arithmetic is written so that every
+floating-point operation is the one of the textbook formulas (e.g. the RK4
+stage state y + (c h) k with c = 1/2 or 1), which keeps trajectories bit for
+bit what they were when the stages were written out one by one.
 """
 from __future__ import annotations
 
@@ -14,48 +23,68 @@ from tethersim.engine.dynamics import derivative
 from tethersim.engine.integrators.dop853_tableau import A, B, C, D, E3, E5, N_STAGES
 
 N_K = 16  # rows of the DOP853 stage array: 12 stages, FSAL, 3 dense-output stages
+RK4_C = (0.0, 0.5, 0.5, 1.0)  # nodes of classical RK4 (stage s uses k_{s-1} with weight c_s)
 
 
 @njit(cache=True)
-def rk4_step(cfg, t, y, h, p, pw, work, y_new):
+def rk4_step(model, per_body, t, y, h, p, pw, work, y_new):
     """One RK4 step of size h from (t, y) into y_new (Eqs 4.1-4.5).
 
-    work: (5, n) scratch array (k1..k4 and a stage state).
+    Parameters
+    ----------
+    model, per_body
+        Model index literal and density mode (dynamics.derivative).
+    t, y, h : float, ndarray, float
+        Start time, start state, step.
+    p, pw : ndarray
+        Parameters and the per-body scratch parameter vector.
+    work : ndarray
+        (5, n) scratch: k1..k4 and a stage state.
+    y_new : ndarray
+        Output: the state at t + h.
     """
     n = y.shape[0]
-    k1, k2, k3, k4, ys = work[0], work[1], work[2], work[3], work[4]
-    derivative(cfg, t, y, p, pw, k1)
+    ys = work[4]
+    for s in range(4):
+        if s == 0:
+            ts = t
+            for i in range(n):
+                ys[i] = y[i]
+        else:
+            ts = t + RK4_C[s] * h
+            a = RK4_C[s] * h
+            for i in range(n):
+                ys[i] = y[i] + a * work[s - 1, i]
+        derivative(model, per_body, ts, ys, p, pw, work[s])
     for i in range(n):
-        ys[i] = y[i] + 0.5 * h * k1[i]
-    derivative(cfg, t + 0.5 * h, ys, p, pw, k2)
-    for i in range(n):
-        ys[i] = y[i] + 0.5 * h * k2[i]
-    derivative(cfg, t + 0.5 * h, ys, p, pw, k3)
-    for i in range(n):
-        ys[i] = y[i] + h * k3[i]
-    derivative(cfg, t + h, ys, p, pw, k4)
-    for i in range(n):
-        y_new[i] = y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i])
+        y_new[i] = y[i] + h / 6.0 * (work[0, i] + 2.0 * work[1, i] + 2.0 * work[2, i]
+                                     + work[3, i])
 
 
 @njit(cache=True)
-def dop853_step(cfg, t, y, f, h, p, pw, K, ys, y_new):
-    """One DOP853 step: y_new at t + h; K[0..12] hold the stages (K[12] = f(t+h, y_new))."""
+def dop853_step(model, per_body, t, y, f, h, p, pw, K, ys, y_new):
+    """One DOP853 step from (t, y) with f = f(t, y).
+
+    y_new receives the state at t + h; K[0..12] the stages, K[12] = f(t + h,
+    y_new) (first same as last); ys is a stage-state scratch vector.
+    """
     n = y.shape[0]
     K[0, :] = f
-    for s in range(1, N_STAGES):
-        for i in range(n):
-            acc = 0.0
-            for j in range(s):
-                acc += A[s, j] * K[j, i]
-            ys[i] = y[i] + h * acc
-        derivative(cfg, t + C[s] * h, ys, p, pw, K[s])
-    for i in range(n):
-        acc = 0.0
-        for j in range(N_STAGES):
-            acc += B[j] * K[j, i]
-        y_new[i] = y[i] + h * acc
-    derivative(cfg, t + h, y_new, p, pw, K[N_STAGES])
+    for s in range(1, N_STAGES + 1):
+        if s < N_STAGES:
+            for i in range(n):
+                acc = 0.0
+                for j in range(s):
+                    acc += A[s, j] * K[j, i]
+                ys[i] = y[i] + h * acc
+        else:  # the FSAL stage is evaluated at the solution itself
+            for i in range(n):
+                acc = 0.0
+                for j in range(N_STAGES):
+                    acc += B[j] * K[j, i]
+                y_new[i] = y[i] + h * acc
+                ys[i] = y_new[i]
+        derivative(model, per_body, t + C[s] * h, ys, p, pw, K[s])
 
 
 @njit(cache=True)
@@ -77,7 +106,7 @@ def dop853_error_norm(K, h, y, y_new, rtol, atol):
 
 
 @njit(cache=True)
-def dop853_dense(cfg, t, y, y_new, h, p, pw, K, ys, F):
+def dop853_dense(model, per_body, t, y, y_new, h, p, pw, K, ys, F):
     """Coefficients F (7, n) of the 7th-order interpolant on [t, t + h]."""
     n = y.shape[0]
     for s in range(N_STAGES + 1, N_K):
@@ -86,7 +115,7 @@ def dop853_dense(cfg, t, y, y_new, h, p, pw, K, ys, F):
             for j in range(s):
                 acc += A[s, j] * K[j, i]
             ys[i] = y[i] + h * acc
-        derivative(cfg, t + C[s] * h, ys, p, pw, K[s])
+        derivative(model, per_body, t + C[s] * h, ys, p, pw, K[s])
     for i in range(n):
         dy = y_new[i] - y[i]
         F[0, i] = dy
