@@ -29,7 +29,7 @@ def main(argv=None) -> int:
     for defn in DEFINITIONS:
         model = derive(defn)
         fname = codegen.module_filename(defn.name)
-        (out / fname).write_text(codegen.module_source(model, length_defs))
+        (out / fname).write_text(codegen.module_source(model, length_defs, kin))
         names.append(fname[:-3])
         print(f"  {defn.name:<17} -> {out.name}/{fname}")
     (out / "layout.py").write_text(codegen.layout_source(FAMILY_ORDER))
@@ -41,18 +41,24 @@ def main(argv=None) -> int:
         print(f"  {defn.name:<19} -> {out.name}/{fname}")
     (out / "layout3d.py").write_text(codegen3d.layout_source(DEFINITIONS_3D))
     (out / "dispatch3d.py").write_text(codegen3d.dispatch_source(DEFINITIONS_3D))
-    init = ['"""GENERATED FILE - DO NOT EDIT.  Numba kernels of every model variant."""',
-            "from . import layout", *(f"from . import {n}" for n in names), "",
-            "MODELS = {", *(f"    {d.name!r}: {n}," for d, n in zip(DEFINITIONS, names)), "}", "",
-            "# 3-D models: their own state and parameter layout (generated/layout3d.py).",
-            *(f"from . import {n}" for n in names3d), "",
-            "MODELS_3D = {", *(f"    {d.name!r}: {n}," for d, n in zip(DEFINITIONS_3D, names3d)),
-            "}", ""]
-    (out / "__init__.py").write_text("\n".join(init))
-    (out / "dispatch.py").write_text(codegen.dispatch_source(DEFINITIONS))
     free = orbit_codegen.write_free_models(out)  # free orbit (issue 12), own layout
     for fname in free:
         print(f"  {fname[:-3].replace('_', '-'):<17} -> {out.name}/{fname}")
+    from .orbit import FREE_DEFINITIONS
+    # one registry of every model, in one order: the thesis variants, 3-D, free orbit
+    every = tuple(DEFINITIONS) + tuple(DEFINITIONS_3D) + tuple(FREE_DEFINITIONS)
+    modules = [codegen.module_filename(d.name)[:-3] for d in every]
+    init = ['"""GENERATED FILE - DO NOT EDIT.  Numba kernels of every model, by name.',
+            "",
+            "Each module carries its own layout (STATE, STATE_UNITS, PARAMETERS,",
+            "PARAMETER_UNITS, FAMILIES), what it models (DESCRIPTION, GEOMETRY, ORBIT)",
+            "and the kernels rhs, family_forces, jacobi, jacobian, tether_margins and",
+            "body_radii.  tethersim.model.registry reads this table; nothing else lists",
+            'the models."""',
+            *(f"from . import {n}" for n in modules), "",
+            "MODELS = {", *(f"    {d.name!r}: {n}," for d, n in zip(every, modules)), "}", ""]
+    (out / "__init__.py").write_text("\n".join(init))
+    (out / "dispatch.py").write_text(codegen.dispatch_source(every))
     print(f"derive: {len(names) + len(names3d) + len(free)} models in "
           f"{time.perf_counter() - t0:.1f} s")
     return 0

@@ -16,9 +16,10 @@ from __future__ import annotations
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
+from .geometry import geometry_source
 from .pipeline import Q_SYMBOLS, DerivedModel
 from .symbols import (PARAMETERS, STATE_NAMES, STATE_SYMBOLS, STATE_UNITS,
-                      TETHER_LENGTHS, TETHER_REST)
+                      TETHER_LENGTHS, TETHER_REST, state_substitution)
 
 INDENT = "    "
 _SIN, _COS = sp.Symbol("sin_theta", real=True), sp.Symbol("cos_theta", real=True)
@@ -212,15 +213,36 @@ def header(model: DerivedModel) -> list:
         "from numba import njit",
         "",
         f"MODEL = {model.name!r}",
+        f"DESCRIPTION = {model.definition.description!r}",
+        'GEOMETRY = "planar"  # (δx, δy, θ): the thesis plane',
+        'ORBIT = "circular"  # the COM held on a circle of radius r0 at rate ω (Eq 3.14)',
+        f"STATE = {STATE_NAMES!r}",
+        f"STATE_UNITS = {STATE_UNITS!r}",
+        f"PARAMETERS = {tuple(p.name for p in PARAMETERS)!r}",
+        f"PARAMETER_UNITS = {tuple(p.unit for p in PARAMETERS)!r}",
         f"FAMILIES = {tuple(f.name for f in model.families)!r}",
     ]
 
 
-def module_source(model: DerivedModel, length_defs) -> str:
+def planar_geometry_source(kin) -> list:
+    """tether_margins and body_radii of the planar models (Eqs 3.10-3.12, 3.37-3.42)."""
+    sub = state_substitution()
+    printer = NumbaPrinter()
+
+    def comps(vec):
+        return [printer.doprint(_prepare(vec.dot(axis).subs(sub))) for axis in (kin.L.x, kin.L.y)]
+
+    return geometry_source(_unpack(INDENT), [comps(v) for v in kin.tether_vectors],
+                           [_CODE_NAMES[r].name for r in TETHER_REST],
+                           [comps(r) for r in kin.positions], " (Eqs 3.10-3.12)")
+
+
+def module_source(model: DerivedModel, length_defs, kin) -> str:
     lines = header(model) + ["", ""] + rhs_source(model, length_defs)
     lines += ["", ""] + family_forces_source(model, length_defs)
     lines += ["", ""] + jacobi_source(model, length_defs)
     lines += ["", ""] + jacobian_source(model, length_defs)
+    lines += ["", ""] + planar_geometry_source(kin)
     return "\n".join(lines) + "\n"
 
 
@@ -238,7 +260,8 @@ def layout_source(families) -> str:
 
 
 def module_filename(name: str) -> str:
-    return name.replace("-", "_") + ".py"
+    """Model name -> module file name ('3d-exact-gravity' -> 'three_d_exact_gravity.py')."""
+    return name.replace("3d", "three_d").replace("-", "_") + ".py"
 
 
 def dispatch_source(definitions) -> str:

@@ -41,6 +41,13 @@ import math
 from numba import njit
 
 MODEL = 'exact-gravity'
+DESCRIPTION = 'derived model with exact point-mass gravity mu/|r| (no binomial expansion, no truncation)'
+GEOMETRY = "planar"  # (δx, δy, θ): the thesis plane
+ORBIT = "circular"  # the COM held on a circle of radius r0 at rate ω (Eq 3.14)
+STATE = ('delta_x', 'delta_y', 'theta', 'delta_x_dot', 'delta_y_dot', 'theta_dot')
+STATE_UNITS = ('m', 'm', 'rad', 'm/s', 'm/s', 'rad/s')
+PARAMETERS = ('m1', 'm2', 'm3', 'A1', 'A2', 'A3', 'a', 'b', 'l10', 'l20', 'E1', 'E2', 'c1', 'c2', 'CD', 'r0', 'mu', 'omega', 'omega_earth', 'rho1', 'rho2', 'rho3')
+PARAMETER_UNITS = ('kg', 'kg', 'kg', 'm^2', 'm^2', 'm^2', 'm', 'm', 'm', 'm', 'N', 'N', 'N s/m', 'N s/m', '1', 'm', 'm^3/s^2', 'rad/s', 'rad/s', 'kg/m^3', 'kg/m^3', 'kg/m^3')
 FAMILIES = ('drag1', 'drag2', 'drag3', 'spring1', 'spring2', 'damper1', 'damper2')
 
 
@@ -598,3 +605,78 @@ def jacobian(t, y, p, J):
     J[5, 3] = dQ2_3*ja17
     J[5, 4] = dQ2_4*ja17
     J[5, 5] = dQ2_5*ja17
+
+
+@njit(cache=True, inline="always")
+def tether_margins(y, p, g):
+    """g[j] = λ_j − l_j0 [m]: tether j is taut when g[j] > 0 (Eqs 3.39-3.42)."""
+    delta_x = y[0]
+    delta_y = y[1]
+    theta = y[2]
+    delta_x_dot = y[3]
+    delta_y_dot = y[4]
+    theta_dot = y[5]
+    m1 = p[0]
+    m2 = p[1]
+    m3 = p[2]
+    A1 = p[3]
+    A2 = p[4]
+    A3 = p[5]
+    a = p[6]
+    b = p[7]
+    l10 = p[8]
+    l20 = p[9]
+    E1 = p[10]
+    E2 = p[11]
+    c1 = p[12]
+    c2 = p[13]
+    CD = p[14]
+    r0 = p[15]
+    mu = p[16]
+    omega = p[17]
+    omega_earth = p[18]
+    rho1 = p[19]
+    rho2 = p[20]
+    rho3 = p[21]
+    sin_theta = math.sin(theta)
+    cos_theta = math.cos(theta)
+    g[0] = math.hypot(b*sin_theta - delta_x, b*cos_theta - delta_y) - l10
+    g[1] = math.hypot(-a*sin_theta - delta_x, -a*cos_theta - delta_y) - l20
+
+
+@njit(cache=True, inline="always")
+def body_radii(y, p, out):
+    """|R_i| [m] of tip-mass, bus, balloon from Earth's centre (Eqs 3.10-3.12)."""
+    delta_x = y[0]
+    delta_y = y[1]
+    theta = y[2]
+    delta_x_dot = y[3]
+    delta_y_dot = y[4]
+    theta_dot = y[5]
+    m1 = p[0]
+    m2 = p[1]
+    m3 = p[2]
+    A1 = p[3]
+    A2 = p[4]
+    A3 = p[5]
+    a = p[6]
+    b = p[7]
+    l10 = p[8]
+    l20 = p[9]
+    E1 = p[10]
+    E2 = p[11]
+    c1 = p[12]
+    c2 = p[13]
+    CD = p[14]
+    r0 = p[15]
+    mu = p[16]
+    omega = p[17]
+    omega_earth = p[18]
+    rho1 = p[19]
+    rho2 = p[20]
+    rho3 = p[21]
+    sin_theta = math.sin(theta)
+    cos_theta = math.cos(theta)
+    out[0] = math.hypot(b*sin_theta, b*cos_theta + r0)
+    out[1] = math.hypot(-a*sin_theta, -a*cos_theta + r0)
+    out[2] = math.hypot(delta_x, delta_y + r0)
