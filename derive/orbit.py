@@ -120,7 +120,7 @@ def offset_ratio(kin: Kinematics, i: int, scale=1):
 def _truncate_degree(expr, eps, degree: int):
     """Keep the terms of ``expr`` (a polynomial in eps) up to eps**degree, eps → 1."""
     poly = sp.Poly(sp.expand(expr), eps)
-    return sum(c * 1 for (k,), c in poly.terms() if k <= degree)
+    return sp.Add(*[c for (k,), c in poly.terms() if k <= degree])
 
 
 TRUNCATION_DEGREE = 3  # highest power of the offsets kept in V (= order 1/r0 in 3.28-3.30)
@@ -213,6 +213,7 @@ def derive_free(defn: FreeModelDefinition) -> FreeDerivedModel:
 
 
 def _tidy(q, tether):
+    """Expand a tether family's generalized force; leave drag (with its √) as derived."""
     return q if tether is None else sp.expand(q)
 
 

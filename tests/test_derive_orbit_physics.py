@@ -156,6 +156,12 @@ def test_j2_apsidal_and_mean_motion_rates_of_an_equatorial_orbit(module):
     # the J2 part of the mean motion (~1.4e-3 n) to 1 %
     assert np.all(np.abs((mean_motion - n) / (mean_motion_th - n) - 1) < 0.01), (
         mean_motion - n, mean_motion_th - n)
+    # control, J2 = 0: Kepler's ellipse closes and the period is 2π √(a³/μ)
+    p0 = params(module, **dumbbell())
+    _, t0, y0_per, _ = _apsides(module, p0, y0, 2.2 * 2 * math.pi * math.sqrt(MU / rp**3) ** -1)
+    a_kepler = semi_major_axis(module, p0, y0)
+    assert abs(np.diff(y0_per[:, Y["nu"]])[0] - 2 * math.pi) < 1e-3 * apsidal_th * t_r[0]
+    assert abs((t0[1] - t0[0]) / (2 * math.pi * math.sqrt(a_kepler**3 / MU)) - 1) < 1e-9
 
 
 # --------------------------------------------------------- (c) forced pitch
