@@ -46,9 +46,14 @@ def run(args) -> int:
         0; a failed or interrupted variant raises :class:`options.RunFailed` or
         :class:`options.Interrupted` after the output is written.
     """
-    from tethersim.experiments.compare import (COLUMNS, compare, comparison_table,
-                                               describe_runs, format_table,
-                                               outcome_differences)
+    from tethersim.experiments.compare import (
+        COLUMNS,
+        compare,
+        comparison_table,
+        describe_runs,
+        format_table,
+        outcome_differences,
+    )
     from tethersim.output.plots.compare import plot_compare
     from tethersim.output.tables import write_table
 

@@ -47,8 +47,13 @@ def run(args) -> int:
         0; a diverged or interrupted run raises :class:`options.RunFailed` or
         :class:`options.Interrupted` after its output is written.
     """
-    from tethersim.analysis.force_peaks import (COLUMNS, SAMPLES_PER_PERIOD, format_table,
-                                                largest_forces, table_rows)
+    from tethersim.analysis.force_peaks import (
+        COLUMNS,
+        SAMPLES_PER_PERIOD,
+        format_table,
+        largest_forces,
+        table_rows,
+    )
     from tethersim.engine.simulate import simulate
     from tethersim.output.plots.forces import plot_forces
     from tethersim.output.tables import write_table

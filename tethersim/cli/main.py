@@ -22,8 +22,19 @@ import threading
 import warnings
 
 from tethersim._version import __version__
-from tethersim.cli import (compare, equilibrium, forces, headlines, options, report, run, show,
-                           sweep, tune, validate)
+from tethersim.cli import (
+    compare,
+    equilibrium,
+    forces,
+    headlines,
+    options,
+    report,
+    run,
+    show,
+    sweep,
+    tune,
+    validate,
+)
 
 # in the order of `tethersim --help`
 COMMANDS = (run, validate, show, equilibrium, compare, forces, sweep, tune, report, headlines)

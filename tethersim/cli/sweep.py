@@ -10,9 +10,6 @@ command continues an interrupted sweep.
 from __future__ import annotations
 
 import argparse
-import contextlib
-import signal
-import threading
 from pathlib import Path
 
 from tethersim.cli import options

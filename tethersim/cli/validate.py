@@ -41,6 +41,7 @@ def run(args) -> int:
     from tethersim.model.presets import resolve
 
     names = args.satellites or ["satI", "satII", "dumbsat"]
-    rows = [validate(resolve(n), periods=args.periods) for n in names]
+    sats = [resolve(n) for n in names]  # all before the first run: a bad name costs nothing
+    rows = [validate(sat, periods=args.periods) for sat in sats]
     print(format_tables(rows))
     return 0
