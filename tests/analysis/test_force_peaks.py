@@ -163,7 +163,7 @@ def test_cli_faithful_default_out_and_scale(tmp_path, monkeypatch):
                                 "--scale", "c1=10", "--scale", "c2=10"])
     assert code == 0
     assert "fixed step 26.55 s (faithful to the thesis)" in stdout  # 200 steps per orbit
-    out = tmp_path / "results" / "satI-forces"
+    out = tmp_path / "results" / "satI" / "forces"  # one folder per satellite
     assert (out / "forces.csv").is_file() and (out / "forces_theta.png").is_file()
 
 

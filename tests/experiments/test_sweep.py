@@ -185,7 +185,7 @@ def test_cli_sweep_writes_store_csv_and_map(tmp_path, capsys):
     (["--periods", "1"], "one or two grids"),
     (["--E1", "0:1:2", "--E2", "0:1:2", "--c1", "0:1:2"], "one or two grids"),
     (["--E1", "0:0.01"], "start:stop:count"),
-    (["--E1", "0.004", "--workers", "0"], "--workers 0"),
+    (["--E1", "0.004", "--workers", "0"], "--workers: must be an integer >= 1, got 0"),
     (["--E1", "0.004", "--workers", "2", "--dask-workers", "2"], "alternatives"),
     (["--l10=-1,6"], "l10 = -1"),
 ])
