@@ -52,7 +52,7 @@ def test_help_of_every_command_exits_zero(argv, capsys):
 
 
 def test_no_command_is_a_one_line_usage_error(cli):
-    code, out, err = cli([])
+    code, _out, err = cli([])
     assert code == 2
     assert err.startswith("tethersim: error:") and err.count("\n") == 1
     assert "COMMAND" in err or "command" in err
@@ -109,7 +109,7 @@ def test_bad_input_exits_2_with_one_line_naming_the_option(argv, words, tmp_path
     monkeypatch.chdir(tmp_path)  # a default output folder would land here
     argv = [str(_bad_toml(tmp_path)) if a == "BAD_TOML"
             else str(tmp_path / "missing.toml") if a == "MISSING_TOML" else a for a in argv]
-    code, out, err = cli(argv)
+    code, _out, err = cli(argv)
     assert code == 2
     assert err.startswith("tethersim: error:")
     assert err.count("\n") == 1, err
@@ -126,7 +126,7 @@ def test_ctrl_c_prints_one_line_and_exits_130(cli, monkeypatch):
         raise KeyboardInterrupt
 
     monkeypatch.setattr(options, "satellite", interrupted)
-    code, out, err = cli(["show", "satI"])
+    code, _out, err = cli(["show", "satI"])
     assert code == 130
     assert err == "tethersim: interrupted\n"
 
@@ -138,7 +138,7 @@ def test_interrupted_sweep_says_how_to_continue(cli, monkeypatch, tmp_path):
         raise KeyboardInterrupt
 
     monkeypatch.setattr(sweep_pkg, "run_sweep", interrupted)
-    code, out, err = cli(["sweep", "satI", "--E1", "0.004", "--periods", "0.05", "--quiet",
+    code, _out, err = cli(["sweep", "satI", "--E1", "0.004", "--periods", "0.05", "--quiet",
                           "--out", str(tmp_path / "s")])
     assert code == 130
     assert err.count("\n") == 1
@@ -150,12 +150,12 @@ def test_console_entry_point_prints_warning_and_error_to_stderr(tmp_path):
     proc = subprocess.run(
         [sys.executable, "-m", "tethersim", "run", "satI", "--faithful", "--periods", "5",
          "--steps", "50", "--no-plots", "--no-check", "--quiet", "--out", str(tmp_path)],
-        capture_output=True, text=True, timeout=120)
+        check=False, capture_output=True, text=True, timeout=120)
     assert proc.returncode == 1
     assert "RK4StepWarning" in proc.stderr
     assert "Traceback" not in proc.stderr
     proc = subprocess.run([sys.executable, "-m", "tethersim", "run", "satI", "--periods", "0"],
-                          capture_output=True, text=True, timeout=120)
+                          check=False, capture_output=True, text=True, timeout=120)
     assert proc.returncode == 2
     assert proc.stderr.startswith("tethersim: error: argument --periods:")
     assert proc.stderr.count("\n") == 1 and "Traceback" not in proc.stderr

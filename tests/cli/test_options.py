@@ -17,8 +17,8 @@ THESIS_STEP = "RK4 step 26.55 s (200 per orbit, thesis ch. 5"
 
 
 def _args(**kw):
-    base = dict(periods=50.0, faithful=False, method=None, steps=None, locate_switches=False,
-                rtol=1e-10)
+    base = {"periods": 50.0, "faithful": False, "method": None, "steps": None,
+            "locate_switches": False, "rtol": 1e-10}
     return argparse.Namespace(**{**base, **kw})
 
 
@@ -51,8 +51,8 @@ def test_adaptive_default_locates_switches_and_steps_mean_output_samples():
 
 
 @pytest.mark.parametrize("kw, words", [
-    (dict(method="adaptive"), "--method adaptive"),
-    (dict(locate_switches=True), "--locate-switches"),
+    ({"method": "adaptive"}, "--method adaptive"),
+    ({"locate_switches": True}, "--locate-switches"),
 ])
 def test_faithful_refuses_contradicting_options(kw, words):
     with pytest.raises(options.UsageError, match=words):

@@ -116,7 +116,7 @@ def test_faithful_run_without_steps_uses_200_per_orbit(tmp_path, cli):
 
 def test_faithful_run_with_an_unstable_step_warns_and_reports_divergence(tmp_path, cli):
     # 5 periods in 50 steps: 531 s per step, far beyond the tether oscillation's RK4 limit
-    code, out, err = cli(["run", "satI", "--faithful", "--periods", "5", "--steps", "50",
+    code, _out, err = cli(["run", "satI", "--faithful", "--periods", "5", "--steps", "50",
                           "--no-plots", "--no-check", "--quiet", "--out", str(tmp_path)])
     assert code == 1  # the run diverged: status "diverged", exit 1
     warning_lines = [ln for ln in err.splitlines()
@@ -131,7 +131,7 @@ def test_faithful_run_with_an_unstable_step_warns_and_reports_divergence(tmp_pat
 
 def test_run_without_out_writes_results_per_satellite(in_tmp, cli):
     for name in ("satI", "SATII"):
-        code, out, err = cli(["run", name, *FAST])
+        code, _out, err = cli(["run", name, *FAST])
         assert code == 0, err
     a = json.loads((in_tmp / "results" / "satI" / "summary.json").read_text())
     b = json.loads((in_tmp / "results" / "satII" / "summary.json").read_text())
@@ -152,7 +152,7 @@ def test_run_refuses_to_replace_another_satellites_results(in_tmp, cli):
     assert cli(["run", "satI", *FAST])[0] == 0
     before = (in_tmp / "results" / "satI" / "timeseries.csv").read_bytes()
     target = in_tmp / "results" / "satI"
-    code, out, err = cli(["run", "satII", *FAST, "--out", str(target)])
+    code, _out, err = cli(["run", "satII", *FAST, "--out", str(target)])
     assert code == 2
     assert err.count("\n") == 1 and err.startswith("tethersim: error:")
     assert "SatI (satI)" in err and "SatII (satII)" in err and "--force" in err
