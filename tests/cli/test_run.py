@@ -175,3 +175,22 @@ def test_unusable_out_folder_exits_2_with_one_line_error(tmp_path, cli):
     code, _, err = cli(["run", "satI", *FAST, "--out", str(not_a_folder)])
     assert code == 2
     assert err.startswith("tethersim: error: --out") and err.count("\n") == 1
+
+
+def test_run_interrupted_writes_what_finished_and_exits_130_with_one_line(tmp_path, cli,
+                                                                          monkeypatch):
+    import dataclasses
+
+    from tethersim.engine import simulate as engine
+
+    real = engine.simulate
+
+    def interrupted(*args, **kwargs):  # what simulate returns after Ctrl-C: the run so far
+        return dataclasses.replace(real(*args, **kwargs), status="interrupted")
+
+    monkeypatch.setattr(engine, "simulate", interrupted)
+    code, _, err = cli(["run", "satI", *FAST, "--out", str(tmp_path)])
+    assert code == 130
+    assert err.startswith("tethersim: interrupted: the output holds the run up to t = ")
+    assert err.count("\n") == 1
+    assert json.loads((tmp_path / "summary.json").read_text())["status"] == "interrupted"
