@@ -158,9 +158,15 @@ def add_overrides(parser) -> None:
                         help="multiply a parameter, e.g. --scale c1=10 --scale c2=10; repeatable")
 
 
-FAITHFUL_HELP = ("the thesis's scheme: fixed-step RK4 at the thesis's chapter-5 step, 200 steps "
-                 "per orbit (26.55 s at 200 km), tether switches not located; --steps sets "
-                 "another step count")
+def _faithful_help() -> str:
+    """--faithful's one documented meaning, its numbers computed (200 per orbit, 26.55 s)."""
+    from tethersim.engine.simulate import FAITHFUL_STEPS_PER_PERIOD
+    from tethersim.model.constants import MU_EARTH, R_EARTH
+    period_200km = 2 * math.pi * math.sqrt((R_EARTH + 200e3) ** 3 / MU_EARTH)
+    return (f"the thesis's scheme: fixed-step RK4 at the thesis's chapter-5 step, "
+            f"{FAITHFUL_STEPS_PER_PERIOD} steps per orbit "
+            f"({period_200km / FAITHFUL_STEPS_PER_PERIOD:.2f} s at 200 km), tether switches "
+            f"not located; --steps sets another step count")
 
 
 def add_integrator(parser, *, rtol: float = 1e-10, fixed_step: bool = True) -> None:
@@ -177,15 +183,18 @@ def add_integrator(parser, *, rtol: float = 1e-10, fixed_step: bool = True) -> N
         False for commands that only choose between the converged and the
         faithful scheme (sweep).
     """
+    from tethersim.engine.simulate import FAITHFUL_STEPS_PER_PERIOD, STEPS_PER_PERIOD
+
     g = parser.add_argument_group("integrator")
-    g.add_argument("--faithful", action="store_true", help=FAITHFUL_HELP)
+    g.add_argument("--faithful", action="store_true", help=_faithful_help())
     if fixed_step:
         g.add_argument("--method", choices=("adaptive", "rk4"), default=None,
                        help="adaptive DOP853 (default, converged) or fixed-step RK4")
         g.add_argument("--steps", type=positive_int, default=None, metavar="N",
-                       help="RK4: number of steps in the whole run (default 200 per orbit "
-                            "with --faithful, 300 per orbit with --method rk4); adaptive: "
-                            "number of output samples")
+                       help=f"RK4: number of steps in the whole run (default "
+                            f"{FAITHFUL_STEPS_PER_PERIOD} per orbit with --faithful, "
+                            f"{STEPS_PER_PERIOD} per orbit with --method rk4); adaptive: "
+                            f"number of output samples")
         g.add_argument("--locate-switches", action="store_true",
                        help="RK4: split steps at taut/slack switches (not with --faithful)")
     g.add_argument("--rtol", type=rtol_float, default=rtol,
