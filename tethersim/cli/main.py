@@ -16,6 +16,7 @@ interruptions become messages and exit codes:
 from __future__ import annotations
 
 import contextlib
+import os
 import signal
 import sys
 import threading
@@ -111,6 +112,12 @@ def main(argv=None) -> int:
             warnings.simplefilter("always")
             warnings.showwarning = _show_warning
             return args.func(args)
+    except BrokenPipeError:
+        # the reader went away (`tethersim show satI | head`): not an error of the input;
+        # point stdout at devnull so the interpreter's final flush does not complain either
+        with contextlib.suppress(OSError, ValueError):  # in-process stdout may have no fd
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
     except (options.UsageError, SatelliteError, ValueError, OSError) as exc:
         return _error(exc)
     except options.RunFailed as exc:
