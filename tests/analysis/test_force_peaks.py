@@ -1,4 +1,4 @@
-"""Force breakdown (thesis Figs 5.7-5.20): tethersim/analysis/force_peaks.py, plot_forces.py; the command: tests/cli/test_forces.py."""
+"""Force breakdown (thesis Figs 5.7-5.20): analysis/force_peaks.py, plot_forces.py (command: tests/cli)."""
 from __future__ import annotations
 
 

@@ -1,4 +1,4 @@
-"""tethersim compare (tethersim/experiments/compare.py, plot_compare.py; the command: tests/cli/test_compare.py).
+"""tethersim compare: experiments/compare.py, plot_compare.py (the command: tests/cli).
 
 tests/test_generated.py already checks the model variants against each other
 at single states (right-hand sides and force families).  Here the truths are
