@@ -1,4 +1,4 @@
-"""Force breakdown (thesis Figs 5.7-5.20): analysis/force_peaks.py, plot_forces.py (command: tests/cli)."""
+"""Force breakdown (thesis Figs 5.7-5.20): force_peaks.py, plot_forces.py (command: tests/cli)."""
 from __future__ import annotations
 
 
