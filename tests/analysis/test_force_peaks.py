@@ -1,9 +1,6 @@
-"""Force breakdown (thesis Figs 5.7-5.20): tethersim/analysis/force_peaks.py, plot_forces.py, `tethersim forces`."""
+"""Force breakdown (thesis Figs 5.7-5.20): force_peaks.py, plot_forces.py (command: tests/cli)."""
 from __future__ import annotations
 
-import contextlib
-import csv
-import io
 
 import numpy as np
 import pytest
@@ -11,9 +8,8 @@ import pytest
 import tethersim as ts
 from tethersim.generated import dispatch
 from tethersim.generated import layout as L
-from tethersim.cli.main import main
 from tethersim.analysis.equilibrium import find_equilibrium
-from tethersim.analysis.force_peaks import (COORDINATES, LargestForce, largest_forces, largest_forces_from,
+from tethersim.analysis.force_peaks import (LargestForce, largest_forces, largest_forces_from,
                               small_families)
 from tethersim.model.registry import model_index
 from tethersim.model.satellite import parameter_vector
@@ -127,50 +123,3 @@ def test_all_zero_coordinate_and_bad_shape():
         largest_forces_from(t, np.zeros((5, 3, 7)), period=5.0)
     with pytest.raises(ValueError, match="samples"):
         largest_forces_from(t[:4], Q, period=5.0)
-
-
-def _run_cli(argv):
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(argv)
-    return code, out.getvalue(), err.getvalue()
-
-
-def test_cli_writes_three_pngs_and_csv(tmp_path):
-    out = tmp_path / "f"
-    code, stdout, _ = _run_cli(["forces", "satI", "--periods", "1", "--out", str(out), "--quiet"])
-    assert code == 0
-    for name in ("forces_delta_x.png", "forces_delta_y.png", "forces_theta.png"):
-        assert (out / name).read_bytes()[:8] == PNG_MAGIC, name
-        assert name in stdout
-    with (out / "forces.csv").open() as fh:
-        rows = list(csv.DictReader(fh))
-    assert [r["coordinate"] for r in rows] == [c[0] for c in COORDINATES]
-    assert [r["unit"] for r in rows] == ["N", "N", "N m"]
-    x = rows[0]
-    assert x["family"] in L.FAMILIES and x["runner_up"] in L.FAMILIES
-    assert 0.1 < float(x["max_abs_Q"]) < 0.3  # the balloon's drag, ~0.18 N (docs/metrics.md)
-    assert 0.0 <= float(x["time [orbits]"]) <= 1.0
-    assert float(x["time [s]"]) == pytest.approx(
-        float(x["time [orbits]"]) * ts.load_preset("satI").period)
-    assert "δx [N]" in stdout and "θ [N m]" in stdout and "runner-up" in stdout
-    assert "DOP853" in stdout
-
-
-def test_cli_faithful_default_out_and_scale(tmp_path, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    code, stdout, _ = _run_cli(["forces", "SATI", "--periods", "1", "--faithful", "--quiet",
-                                "--scale", "c1=10", "--scale", "c2=10"])
-    assert code == 0
-    assert "fixed step 26.55 s (faithful to the thesis)" in stdout  # 200 steps per orbit
-    out = tmp_path / "results" / "satI-forces"
-    assert (out / "forces.csv").is_file() and (out / "forces_theta.png").is_file()
-
-
-def test_cli_bad_set_name_exits_2_and_names_it(tmp_path):
-    out = tmp_path / "never"
-    code, stdout, stderr = _run_cli(["forces", "satI", "--periods", "1", "--set", "E9=0.1",
-                                     "--out", str(out), "--quiet"])
-    assert code == 2
-    assert "E9" in stderr and "error" in stderr
-    assert not out.exists()  # checked before the run and before any output

@@ -8,7 +8,6 @@ import pytest
 
 import tethersim as ts
 from tethersim.experiments import headlines as hl
-from tethersim.cli.main import main
 from tethersim.analysis.metrics import wrap
 from tethersim.model.params import with_values
 from tethersim.engine.linearise import rk4_max_step
@@ -188,23 +187,3 @@ def test_objective_damper_equilibria_do_not_move_with_damping(sat):
     der = [r for r in rows if r["model"] == "derived"]
     # the thesis damper's rest torque ω(c1 b² + c2 a²) > 0 tilts the upright one towards +θ
     assert der[1]["eq0_theta"] > der[0]["eq0_theta"]
-
-
-# --- command line --------------------------------------------------------------------------------
-def test_cli_headlines_tiny_case_exits_zero_and_writes(tmp_path, capsys):
-    out = tmp_path / "hl"
-    code = main(["headlines", "--cases", "nominal", "--models", "derived", "--periods", "0.2",
-                 "--out", str(out), "--quiet"])
-    assert code == 0
-    stdout = capsys.readouterr().out
-    assert "nominal" in stdout and "thesis" in stdout
-    assert (out / "headlines.csv").read_text().splitlines()[0].startswith("case,")
-    assert (out / "headlines_verdicts.csv").is_file()
-    png = out / "headlines_nominal.png"
-    assert png.read_bytes()[:8] == PNG_MAGIC
-
-
-def test_cli_headlines_rejects_an_unknown_case(tmp_path, capsys):
-    code = main(["headlines", "--cases", "no-such-case", "--out", str(tmp_path), "--quiet"])
-    assert code == 2
-    assert "allowed values" in capsys.readouterr().err

@@ -16,7 +16,6 @@ import tethersim as ts
 
 from tethersim import load_preset, simulate
 from tethersim.analysis.classify import classify
-from tethersim.cli.main import main
 from tethersim.analysis.metrics import pitch_metrics
 from tethersim.model.params import parse_grid
 from tethersim.model.satellite import SatelliteError
@@ -168,28 +167,3 @@ def test_bad_grid_specs_are_refused_naming_the_option(spec, message):
 def test_sweep_function_returns_the_store_dataset(tmp_path):
     ds = sweep(SAT, {"c1": [3e-4]}, tmp_path / "s.zarr", periods=1.0, progress=False)
     assert ds.c1.values.tolist() == [3e-4] and bool(ds.done.all())
-
-
-def test_cli_sweep_writes_store_csv_and_map(tmp_path, capsys):
-    out = tmp_path / "cli"
-    rc = main(["sweep", "satI", "--E1", "0.0038,0.0042", "--E2", "0.042:0.043:2",
-               "--periods", "1", "--out", str(out), "--quiet"])
-    assert rc == 0
-    for name in ("sweep.zarr", "sweep.csv", "stability_map.png"):
-        assert (out / name).exists()
-    text = capsys.readouterr().out
-    assert "4 runs of 1 orbits" in text and "stable" in text
-
-
-@pytest.mark.parametrize("argv, message", [
-    (["--periods", "1"], "one or two grids"),
-    (["--E1", "0:1:2", "--E2", "0:1:2", "--c1", "0:1:2"], "one or two grids"),
-    (["--E1", "0:0.01"], "start:stop:count"),
-    (["--E1", "0.004", "--workers", "0"], "--workers 0"),
-    (["--E1", "0.004", "--workers", "2", "--dask-workers", "2"], "alternatives"),
-    (["--l10=-1,6"], "l10 = -1"),
-])
-def test_cli_sweep_bad_input_exits_2_naming_the_field(argv, message, tmp_path, capsys):
-    rc = main(["sweep", "satI", *argv, "--out", str(tmp_path / "x"), "--quiet"])
-    assert rc == 2
-    assert message in capsys.readouterr().err

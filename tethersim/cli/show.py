@@ -1,0 +1,60 @@
+"""``tethersim show``: a satellite's parameters in the units ``--set`` takes.
+
+Every settable parameter is printed in its edge unit (tethersim.model.params:
+E1, E2 in N/mm^2, altitude in km, else SI) and exactly (the shortest text
+that reads back as the same float), so a printed value fed back through
+``--set NAME=VALUE`` gives the same satellite.
+"""
+from __future__ import annotations
+
+from tethersim.cli import options
+
+HELP = "print a satellite's parameters in the units --set takes"
+
+
+def add_parser(sub) -> None:
+    """Declare ``show`` and its options on the subparsers ``sub``."""
+    p = sub.add_parser(
+        "show", help=HELP,
+        description="Print a satellite's parameters in the units --set and --scale take "
+                    "(E1, E2 in N/mm^2, altitude in km, else SI), then its initial state and "
+                    "derived orbit (SI).")
+    options.add_satellite(p)
+    options.add_overrides(p)
+    p.set_defaults(func=run)
+
+
+def exact(value: float) -> str:
+    """Short text for ``value`` that reads back as the same float (15 digits, else repr)."""
+    text = f"{value:.15g}"
+    return text if float(text) == value else repr(float(value))
+
+
+def run(args) -> int:
+    """Run the command.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The parsed options of ``show``.
+
+    Returns
+    -------
+    int
+        0.
+    """
+    from tethersim.model import params
+
+    sat = options.satellite(args)
+    print(f"{sat.name}  ({sat.source})")
+    print("  parameters in the units --set takes (E1, E2 in N/mm^2, altitude in km, else SI):")
+    for name in params.NAMES:
+        print(f"  {name:<12} {exact(params.edge_value(sat, name)):<22} {params.unit(name)}")
+    print("  initial state (SI):")
+    names = ("delta_x [m]", "delta_y [m]", "theta [rad]", "delta_x_dot [m/s]",
+             "delta_y_dot [m/s]", "theta_dot [rad/s]")
+    for n, v in zip(names, sat.initial):
+        print(f"  {n:<18} {v:.6g}")
+    print(f"  r0 {sat.r0:.6g} m, omega {sat.omega:.6g} rad/s, period {sat.period:.6g} s, "
+          f"rho {sat.rho:.4g} kg/m^3, density {sat.density_mode}")
+    return 0
