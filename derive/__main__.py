@@ -34,9 +34,10 @@ def main(argv=None) -> int:
         print(f"  {defn.name:<17} -> {out.name}/{fname}")
     (out / "layout.py").write_text(codegen.layout_source(FAMILY_ORDER))
     names3d = []
+    geometry3d = codegen3d.geometry_lines()
     for defn in DEFINITIONS_3D:
         fname = codegen3d.module_filename(defn.name)
-        (out / fname).write_text(codegen3d.module_source(derive3d(defn)))
+        (out / fname).write_text(codegen3d.module_source(derive3d(defn), geometry3d))
         names3d.append(fname[:-3])
         print(f"  {defn.name:<19} -> {out.name}/{fname}")
     (out / "layout3d.py").write_text(codegen3d.layout_source(DEFINITIONS_3D))

@@ -210,7 +210,7 @@ def _layout_constants() -> list:
             *(f"P_{p.name.upper()} = {i}" for i, p in enumerate(FREE_PARAMETERS))]
 
 
-def module_source(model: FreeDerivedModel, length_defs) -> str:
+def module_source(model: FreeDerivedModel, length_defs, geometry=()) -> str:
     lines = ['"""GENERATED FILE - DO NOT EDIT.', "",
              f"Model {model.name!r}: {model.definition.description}.",
              "Produced by `make derive` (python -m derive) from derive/orbit.py and",
@@ -218,11 +218,32 @@ def module_source(model: FreeDerivedModel, length_defs) -> str:
              f"Reduces to the planar model {model.definition.circular!r} on a circular orbit.", "",
              *_index_tables(), '"""', "import math", "", "from numba import njit", "",
              f"MODEL = {model.name!r}",
+             f"DESCRIPTION = {model.definition.description!r}",
+             'GEOMETRY = "planar"  # (δx, δy, θ) in the orbit plane',
+             'ORBIT = "free"  # r and ν are coordinates: gravity, J2 and drag move the orbit',
              f"FAMILIES = {tuple(f.name for f in model.families)!r}",
              *_layout_constants()]
     for part in (rhs_source, family_forces_source, jacobi_source, jacobian_source):
         lines += ["", ""] + part(model, length_defs)
+    if geometry:
+        lines += ["", ""] + list(geometry)
     return "\n".join(lines) + "\n"
+
+
+def geometry_lines(kin, sub) -> list:
+    """tether_margins and body_radii on the free state (positions about r, Eqs 3.10-3.12)."""
+    from .codegen import _CODE_NAMES, NumbaPrinter, _prepare
+    from .geometry import geometry_source
+    from .symbols import TETHER_REST
+
+    printer = NumbaPrinter()
+
+    def comps(vec):
+        return [printer.doprint(_prepare(vec.dot(axis).subs(sub))) for axis in (kin.L.x, kin.L.y)]
+
+    return geometry_source(_unpack(INDENT), [comps(v) for v in kin.tether_vectors],
+                           [_CODE_NAMES[r].name for r in TETHER_REST], [comps(r) for r in kin.positions],
+                           " (Eqs 3.10-3.12 about the orbit radius r)")
 
 
 def dispatch_source(definitions) -> str:
@@ -251,11 +272,13 @@ def write_free_models(out) -> list:
     from .orbit import FREE_DEFINITIONS, derive_free, free_kinematics, free_state_substitution
 
     sub = free_state_substitution()
-    length_defs = {lam: d.subs(sub) for lam, d in free_kinematics().tether_length_defs.items()}
+    kin = free_kinematics()
+    length_defs = {lam: d.subs(sub) for lam, d in kin.tether_length_defs.items()}
+    geometry = geometry_lines(kin, sub)
     written = []
     for defn in FREE_DEFINITIONS:
         fname = defn.name.replace("-", "_") + ".py"
-        (out / fname).write_text(module_source(derive_free(defn), length_defs))
+        (out / fname).write_text(module_source(derive_free(defn), length_defs, geometry))
         written.append(fname)
     (out / "free_dispatch.py").write_text(dispatch_source(FREE_DEFINITIONS))
     return written

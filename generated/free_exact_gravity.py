@@ -46,6 +46,9 @@ import math
 from numba import njit
 
 MODEL = 'free-exact-gravity'
+DESCRIPTION = 'free orbit (r, nu as coordinates), exact point-mass gravity mu/|r_i|, thesis dampers'
+GEOMETRY = "planar"  # (δx, δy, θ) in the orbit plane
+ORBIT = "free"  # r and ν are coordinates: gravity, J2 and drag move the orbit
 FAMILIES = ('drag1', 'drag2', 'drag3', 'spring1', 'spring2', 'damper1', 'damper2')
 STATE = ('delta_x', 'delta_y', 'theta', 'r', 'nu', 'delta_x_dot', 'delta_y_dot', 'theta_dot', 'r_dot', 'nu_dot')
 STATE_UNITS = ('m', 'm', 'rad', 'm', 'rad', 'm/s', 'm/s', 'rad/s', 'm/s', 'rad/s')
@@ -1920,3 +1923,86 @@ def jacobian(t, y, p, J):
     J[7, 9] = -Z9_2
     J[8, 9] = -Z9_3
     J[9, 9] = -Z9_4
+
+
+@njit(cache=True, inline="always")
+def tether_margins(y, p, g):
+    """g[j] = λ_j − l_j0 [m]: tether j is taut when g[j] > 0 (Eqs 3.39-3.42)."""
+    delta_x = y[0]
+    delta_y = y[1]
+    theta = y[2]
+    r = y[3]
+    nu = y[4]
+    delta_x_dot = y[5]
+    delta_y_dot = y[6]
+    theta_dot = y[7]
+    r_dot = y[8]
+    nu_dot = y[9]
+    m1 = p[0]
+    m2 = p[1]
+    m3 = p[2]
+    A1 = p[3]
+    A2 = p[4]
+    A3 = p[5]
+    a = p[6]
+    b = p[7]
+    l10 = p[8]
+    l20 = p[9]
+    E1 = p[10]
+    E2 = p[11]
+    c1 = p[12]
+    c2 = p[13]
+    CD = p[14]
+    mu = p[15]
+    omega_earth = p[16]
+    rho1 = p[17]
+    rho2 = p[18]
+    rho3 = p[19]
+    J2 = p[20]
+    R_E = p[21]
+    sin_theta = math.sin(theta)
+    cos_theta = math.cos(theta)
+    g[0] = math.hypot(b*sin_theta - delta_x, b*cos_theta - delta_y) - l10
+    g[1] = math.hypot(-a*sin_theta - delta_x, -a*cos_theta - delta_y) - l20
+
+
+@njit(cache=True, inline="always")
+def body_radii(y, p, out):
+    """|R_i| [m] of tip-mass, bus, balloon from Earth's centre (Eqs 3.10-3.12 about the orbit radius r)."""
+    delta_x = y[0]
+    delta_y = y[1]
+    theta = y[2]
+    r = y[3]
+    nu = y[4]
+    delta_x_dot = y[5]
+    delta_y_dot = y[6]
+    theta_dot = y[7]
+    r_dot = y[8]
+    nu_dot = y[9]
+    m1 = p[0]
+    m2 = p[1]
+    m3 = p[2]
+    A1 = p[3]
+    A2 = p[4]
+    A3 = p[5]
+    a = p[6]
+    b = p[7]
+    l10 = p[8]
+    l20 = p[9]
+    E1 = p[10]
+    E2 = p[11]
+    c1 = p[12]
+    c2 = p[13]
+    CD = p[14]
+    mu = p[15]
+    omega_earth = p[16]
+    rho1 = p[17]
+    rho2 = p[18]
+    rho3 = p[19]
+    J2 = p[20]
+    R_E = p[21]
+    sin_theta = math.sin(theta)
+    cos_theta = math.cos(theta)
+    out[0] = math.hypot(b*sin_theta, b*cos_theta + r)
+    out[1] = math.hypot(-a*sin_theta, -a*cos_theta + r)
+    out[2] = math.hypot(delta_x, delta_y + r)

@@ -53,6 +53,9 @@ import math
 from numba import njit
 
 MODEL = '3d-exact-gravity'
+DESCRIPTION = '3-D model with exact point-mass gravity and MacCullagh box terms (no expansion, no truncation), thesis dampers'
+GEOMETRY = "3d"  # roll, pitch, yaw and an out-of-plane balloon
+ORBIT = "circular"  # the COM held on a circle of radius r0 at rate ω
 STATE = ('delta_x', 'delta_y', 'delta_z', 'phi', 'theta', 'psi', 'delta_x_dot', 'delta_y_dot', 'delta_z_dot', 'phi_dot', 'theta_dot', 'psi_dot')
 STATE_UNITS = ('m', 'm', 'm', 'rad', 'rad', 'rad', 'm/s', 'm/s', 'm/s', 'rad/s', 'rad/s', 'rad/s')
 PARAMETERS = ('m1', 'm2', 'm3', 'A1', 'A2', 'A3', 'a', 'b', 'l10', 'l20', 'E1', 'E2', 'c1', 'c2', 'CD', 'r0', 'mu', 'omega', 'omega_earth', 'rho1', 'rho2', 'rho3', 'I1_roll', 'I1_pitch', 'I1_yaw', 'I2_roll', 'I2_pitch', 'I2_yaw')
@@ -2562,3 +2565,110 @@ def jacobian(t, y, p, J):
             J[11, c] = 0.0
         else:
             J[9, c], J[10, c], J[11, c] = _solve3(M33, M34, M35, M44, M45, M55, J[9, c], J[10, c], J[11, c])
+
+
+@njit(cache=True, inline="always")
+def tether_margins(y, p, g):
+    """g[j] = λ_j − l_j0 [m]: tether j is taut when g[j] > 0 (Eqs 3.39-3.42)."""
+    delta_x = y[0]
+    delta_y = y[1]
+    delta_z = y[2]
+    phi = y[3]
+    theta = y[4]
+    psi = y[5]
+    delta_x_dot = y[6]
+    delta_y_dot = y[7]
+    delta_z_dot = y[8]
+    phi_dot = y[9]
+    theta_dot = y[10]
+    psi_dot = y[11]
+    m1 = p[0]
+    m2 = p[1]
+    m3 = p[2]
+    A1 = p[3]
+    A2 = p[4]
+    A3 = p[5]
+    a = p[6]
+    b = p[7]
+    l10 = p[8]
+    l20 = p[9]
+    E1 = p[10]
+    E2 = p[11]
+    c1 = p[12]
+    c2 = p[13]
+    CD = p[14]
+    r0 = p[15]
+    mu = p[16]
+    omega = p[17]
+    omega_earth = p[18]
+    rho1 = p[19]
+    rho2 = p[20]
+    rho3 = p[21]
+    I1_roll = p[22]
+    I1_pitch = p[23]
+    I1_yaw = p[24]
+    I2_roll = p[25]
+    I2_pitch = p[26]
+    I2_yaw = p[27]
+    sin_phi = math.sin(phi)
+    cos_phi = math.cos(phi)
+    sin_theta = math.sin(theta)
+    cos_theta = math.cos(theta)
+    sin_psi = math.sin(psi)
+    cos_psi = math.cos(psi)
+    g[0] = math.sqrt((b*cos_phi*sin_theta - delta_x)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*sin_phi - delta_z)**2) - l10
+    g[1] = math.sqrt((-a*cos_phi*sin_theta - delta_x)**2 + (-a*cos_phi*cos_theta - delta_y)**2 + (-a*sin_phi - delta_z)**2) - l20
+
+
+@njit(cache=True, inline="always")
+def body_radii(y, p, out):
+    """|R_i| [m] of tip-mass, bus, balloon from Earth's centre (docs/three-d.md)."""
+    delta_x = y[0]
+    delta_y = y[1]
+    delta_z = y[2]
+    phi = y[3]
+    theta = y[4]
+    psi = y[5]
+    delta_x_dot = y[6]
+    delta_y_dot = y[7]
+    delta_z_dot = y[8]
+    phi_dot = y[9]
+    theta_dot = y[10]
+    psi_dot = y[11]
+    m1 = p[0]
+    m2 = p[1]
+    m3 = p[2]
+    A1 = p[3]
+    A2 = p[4]
+    A3 = p[5]
+    a = p[6]
+    b = p[7]
+    l10 = p[8]
+    l20 = p[9]
+    E1 = p[10]
+    E2 = p[11]
+    c1 = p[12]
+    c2 = p[13]
+    CD = p[14]
+    r0 = p[15]
+    mu = p[16]
+    omega = p[17]
+    omega_earth = p[18]
+    rho1 = p[19]
+    rho2 = p[20]
+    rho3 = p[21]
+    I1_roll = p[22]
+    I1_pitch = p[23]
+    I1_yaw = p[24]
+    I2_roll = p[25]
+    I2_pitch = p[26]
+    I2_yaw = p[27]
+    sin_phi = math.sin(phi)
+    cos_phi = math.cos(phi)
+    sin_theta = math.sin(theta)
+    cos_theta = math.cos(theta)
+    sin_psi = math.sin(psi)
+    cos_psi = math.cos(psi)
+    out[0] = math.sqrt((b*cos_phi*sin_theta)**2 + (b*cos_phi*cos_theta + r0)**2 + (b*sin_phi)**2)
+    out[1] = math.sqrt((-a*cos_phi*sin_theta)**2 + (-a*cos_phi*cos_theta + r0)**2 + (-a*sin_phi)**2)
+    out[2] = math.sqrt((delta_x)**2 + (delta_y + r0)**2 + (delta_z)**2)

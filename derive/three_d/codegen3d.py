@@ -257,17 +257,40 @@ def layout_constants() -> list:
             f"FAMILIES = {FAMILY_ORDER!r}"]
 
 
-def module_source(model: DerivedModel3D) -> str:
+def geometry_lines() -> list:
+    """tether_margins and body_radii of the 3-D models (positions in the local frame L)."""
+    from ..geometry import geometry_source
+    from .kinematics3d import kinematics_3d
+    from .symbols3d import state_substitution
+
+    kin = kinematics_3d()
+    sub = state_substitution()
+    printer = NumbaPrinter()
+
+    def comps(vec):
+        return [printer.doprint(prepare(sp.sympify(c).subs(sub))) for c in kin.components(vec)]
+
+    return geometry_source(_unpack(INDENT), [comps(v) for v in kin.tether_vectors],
+                           [str(_CODE_NAMES[r]) for r in TETHER_REST],
+                           [comps(r) for r in kin.positions], " (docs/three-d.md)")
+
+
+def module_source(model: DerivedModel3D, geometry=()) -> str:
     head = ['"""GENERATED FILE - DO NOT EDIT.', "",
             f"Model {model.name!r}: {model.definition.description}.",
             "Produced by `make derive` (python -m derive) from derive/three_d/; regenerate",
             f"instead of editing.  sympy {sp.__version__}.  Conventions: docs/three-d.md.", "",
             *index_tables(), '"""', "import math", "", "from numba import njit", "",
-            f"MODEL = {model.name!r}", *layout_constants()]
+            f"MODEL = {model.name!r}", f"DESCRIPTION = {model.definition.description!r}",
+            'GEOMETRY = "3d"  # roll, pitch, yaw and an out-of-plane balloon',
+            'ORBIT = "circular"  # the COM held on a circle of radius r0 at rate ω',
+            *layout_constants()]
     assert tuple(f.name for f in model.families) == FAMILY_ORDER
     lines = head + SOLVERS + ["", ""] + rhs_source(model)
     for part in (family_forces_source, jacobi_source, jacobian_source):
         lines += ["", ""] + part(model)
+    if geometry:
+        lines += ["", ""] + list(geometry)
     return "\n".join(lines) + "\n"
 
 

@@ -1,20 +1,128 @@
-"""Model variants available to the runtime (all produced by derive/).
+"""The one registry of models: what `make derive` produced, read from generated/.
 
-derived           default: the clean derivation of the thesis model
-printed           Eqs 3.48-3.50 exactly as printed (errata in docs/errata.md)
-exact-gravity     no binomial expansion of 1/|r|
-objective-damper  Kelvin-Voigt tether dampers (stretch rate only)
+Every generated module carries its own layout and description (``STATE``,
+``STATE_UNITS``, ``PARAMETERS``, ``PARAMETER_UNITS``, ``FAMILIES``,
+``DESCRIPTION``, ``GEOMETRY``, ``ORBIT``); ``tethersim.generated.MODELS`` lists
+them in index order.  Nothing else in tethersim lists the models: a model that
+`make derive` adds (another state size, another geometry) appears here, in the
+CLI's ``--model`` choices and in the engine's compiled loops with no edit.
+
+Geometry and orbit kinds:
+
+* ``planar`` / ``circular``: the thesis's models (derived, printed,
+  exact-gravity, objective-damper), the COM held on a circular orbit;
+* ``3d`` / ``circular``: roll, pitch, yaw and an out-of-plane balloon (docs/three-d.md);
+* ``planar`` / ``free``: the orbit radius r and anomaly ν as coordinates (docs/orbit.md).
 """
 from __future__ import annotations
 
-from tethersim.generated.dispatch import MODEL_NAMES
+from dataclasses import dataclass
+from types import ModuleType
+
+import tethersim.generated as generated
 
 DEFAULT_MODEL = "derived"
 
 
-def model_index(model: str) -> int:
-    """Index of a model name for the jitted dispatcher; clear error if unknown."""
-    try:
-        return MODEL_NAMES.index(model)
-    except ValueError:
-        raise ValueError(f"model = {model!r}: allowed values {', '.join(MODEL_NAMES)}") from None
+@dataclass(frozen=True)
+class Model:
+    """One generated model and its layout.
+
+    Attributes
+    ----------
+    name : str
+        Model name (``--model``).
+    index : int
+        Position in ``tethersim.generated.MODELS`` (the compiled loops' literal).
+    description : str
+        What distinguishes it (from derive/).
+    geometry : str
+        ``"planar"`` or ``"3d"``.
+    orbit : str
+        ``"circular"`` (COM held on its circle) or ``"free"`` (r, ν coordinates).
+    state, state_units : tuple of str
+        Names and SI units of the model's state vector.
+    parameters, parameter_units : tuple of str
+        Names and SI units of its parameter vector.
+    families : tuple of str
+        Force families of ``family_forces``.
+    module : module
+        The generated kernels.
+    """
+
+    name: str
+    index: int
+    description: str
+    geometry: str
+    orbit: str
+    state: tuple
+    state_units: tuple
+    parameters: tuple
+    parameter_units: tuple
+    families: tuple
+    module: ModuleType
+
+    @property
+    def n_state(self) -> int:
+        """Length of the model's own state vector."""
+        return len(self.state)
+
+    @property
+    def n_coordinates(self) -> int:
+        """Number of generalized coordinates (half the state)."""
+        return len(self.state) // 2
+
+    @property
+    def thesis_variant(self) -> bool:
+        """True for the planar, circular-orbit models of the thesis."""
+        return self.geometry == "planar" and self.orbit == "circular"
+
+
+def _model(index: int, name: str, module: ModuleType) -> Model:
+    return Model(name=name, index=index, description=module.DESCRIPTION,
+                 geometry=module.GEOMETRY, orbit=module.ORBIT, state=tuple(module.STATE),
+                 state_units=tuple(module.STATE_UNITS), parameters=tuple(module.PARAMETERS),
+                 parameter_units=tuple(module.PARAMETER_UNITS),
+                 families=tuple(module.FAMILIES), module=module)
+
+
+MODELS = tuple(_model(i, n, m) for i, (n, m) in enumerate(generated.MODELS.items()))
+NAMES = tuple(m.name for m in MODELS)
+BY_NAME = {m.name: m for m in MODELS}
+THESIS_VARIANTS = tuple(m.name for m in MODELS if m.thesis_variant)
+
+
+def get_model(name: str, supported=None, what: str = "") -> Model:
+    """The registered model called ``name``.
+
+    Parameters
+    ----------
+    name : str
+        Model name.
+    supported : sequence of str, optional
+        Names this caller can handle (default: every model).
+    what : str, optional
+        The feature asking, for the error message (e.g. ``"equilibrium"``).
+
+    Returns
+    -------
+    Model
+
+    Raises
+    ------
+    ValueError
+        One line naming the model and the allowed values.
+    """
+    allowed = NAMES if supported is None else tuple(supported)
+    if name not in BY_NAME:
+        raise ValueError(f"model = {name!r}: allowed values {', '.join(allowed)}")
+    if name not in allowed:
+        raise ValueError(f"model = {name!r}: {what or 'this'} supports {', '.join(allowed)} "
+                         f"(not yet the {BY_NAME[name].geometry} / {BY_NAME[name].orbit}-orbit "
+                         f"models)")
+    return BY_NAME[name]
+
+
+def model_index(name: str, supported=None, what: str = "") -> int:
+    """Index of model ``name`` for the compiled kernels (see :func:`get_model`)."""
+    return get_model(name, supported, what).index
