@@ -18,6 +18,7 @@ from tqdm.auto import tqdm
 from .dynamics import initial_state, state_size
 from .integrators.dop853 import STATUS_OK, dop853_run
 from .integrators.rk4 import rk4_run
+from .integrators.select import specialised
 from .models import DEFAULT_MODEL, model_index
 from .result import SimResult
 from .satellite import Satellite, parameter_vector
@@ -142,12 +143,15 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
     t0 = time.perf_counter()
     chunk = steps if progress is False else max(1, steps // CHUNKS)
     done = 0
+    loop = None
     with _bar(periods, f"{sat.name} RK4", progress) as bar:
         try:
             while done < steps:
                 n = min(chunk, steps - done)
-                rows, sw, st = rk4_run(m, per_body, done * h, y, h, n, 1, p, pw, locate, out_t,
-                                       out_y, row)
+                args = (per_body, done * h, y, h, n, 1, p, pw, locate, out_t, out_y, row)
+                if loop is None:  # this model's compiled loop, chosen once per run
+                    loop = specialised(rk4_run, m, args)
+                rows, sw, st = loop(m, *args)
                 row += rows
                 switches += sw
                 done += n
@@ -177,6 +181,7 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress) -> S
     counters = np.zeros(5, dtype=np.int64)
     t, h, i_out, status, message = 0.0, 0.0, 1, "ok", ""
     max_steps = int(MAX_STEPS_PER_PERIOD * periods)
+    loop = None
     t0 = time.perf_counter()
     with _bar(periods, f"{sat.name} DOP853", progress) as bar:
         try:
@@ -185,9 +190,11 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress) -> S
             for k in range(1, chunks + 1):
                 t_pause = math.inf if k == chunks else t_end * k / chunks
                 t_prev = t
-                t, h, i_out, st = dop853_run(m, per_body, t, t_end, y, h, p, pw, rtol, atol,
-                                             locate, out_t, out_y, i_out, max_steps, counters,
-                                             t_pause)
+                args = (per_body, t, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y,
+                        i_out, max_steps, counters, t_pause)
+                if loop is None:  # this model's compiled loop, chosen once per run
+                    loop = specialised(dop853_run, m, args)
+                t, h, i_out, st = loop(m, *args)
                 bar.update((t - t_prev) / sat.period)
                 if st != STATUS_OK:
                     status = "diverged" if st == 1 else "failed"
