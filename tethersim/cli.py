@@ -156,7 +156,7 @@ def cmd_compare(args) -> int:
         steps = max(1, round(STEPS_PER_PERIOD * args.periods))
     results = compare(sat, models, periods=args.periods, steps=steps, method=method,
                       rtol=args.rtol, locate_switches=False if args.faithful else None,
-                      progress=None if not args.quiet else False)
+                      check=True, progress=None if not args.quiet else False)
     rows = comparison_table(results)
     notes = outcome_differences(rows)
     written = [write_csv(rows, out / "compare.csv")]
