@@ -299,7 +299,7 @@ def test_bad_rtol_raises_value_error_naming_rtol(rtol):
 
 @pytest.fixture(scope="module")
 def short_run():
-    return tethersim.simulate(SAT, periods=0.2, progress=False)
+    return tethersim.simulate(SAT, periods=0.2, check=True, progress=False)
 
 
 def test_simulate_returns_simresult_with_equal_length_si_arrays(short_run):

@@ -3,9 +3,11 @@
 numba revalidates a cached function against its own source file only, so a
 loop that inlines an edited kernel from another file would keep running stale
 machine code.  The cache folder is therefore keyed on a hash of every source
-file that holds jitted code (any ``.py`` under ``tethersim/`` or the generated
-kernels that mentions ``njit``): editing such a file starts a fresh folder,
-editing anything else (the CLI, plots, docs) reuses the compiled kernels.
+file that holds compiled code (the generated kernels, and any tethersim module
+with a numba decorator: ``@njit``, ``@intrinsic``, ``@overload``) plus the
+modules whose constants compiled code bakes in (:data:`BAKED`): editing one of
+them starts a fresh folder, editing anything else (the CLI, plots, docs)
+reuses the compiled kernels.
 
 This module is imported first by ``tethersim/__init__.py``: numba reads
 ``numba.config.CACHE_DIR`` when a ``cache=True`` function is decorated, so it
@@ -18,11 +20,15 @@ from __future__ import annotations
 
 import hashlib
 import os
+import re
 from pathlib import Path
 
 import numba
 
 PACKAGE = Path(__file__).resolve().parent
+# modules without a numba decorator whose values compiled code captures as constants
+BAKED = ("model/constants.py", "engine/integrators/dop853_tableau.py")
+DECORATOR = re.compile(r"@(njit|intrinsic|overload|jit)\b")
 
 
 def _generated_folder() -> Path:
@@ -35,11 +41,11 @@ def _generated_folder() -> Path:
 
 def jitted_sources() -> list:
     """Source files holding jitted code, in a fixed order (the cache key's input)."""
-    files = []
-    for folder in (_generated_folder(), PACKAGE):
-        for f in sorted(folder.rglob("*.py")):
-            if "njit" in f.read_text(encoding="utf-8"):
-                files.append(f)
+    files = sorted(_generated_folder().glob("*.py"))
+    for f in sorted(PACKAGE.rglob("*.py")):
+        rel = f.relative_to(PACKAGE).as_posix()
+        if rel in BAKED or DECORATOR.search(f.read_text(encoding="utf-8")):
+            files.append(f)
     return files
 
 

@@ -101,8 +101,8 @@ def test_orbit_stays_circular_two_body(sat):
 def test_convergence_check_flags_a_step_that_is_too_long(sat):
     s = _switching_case(sat)
     # 20 s steps: inside RK4's stability limit (~30 s) but far from accurate
-    coarse = simulate(s, periods=0.5, steps=133, method="rk4")
-    fine = simulate(s, periods=0.5, method="adaptive")
+    coarse = simulate(s, periods=0.5, steps=133, method="rk4", check=True)
+    fine = simulate(s, periods=0.5, method="adaptive").estimate_error()
     assert fine.converged is True
     assert coarse.converged is False
     assert "NOT converged" in coarse.label

@@ -90,7 +90,7 @@ def test_exact_gravity_differs_from_derived_by_order_length_over_r0(satI):
     terms.  Over one orbit the pitch difference, relative to the libration
     amplitude, is of the order of the longest offset over r0 (b = 10.5 m, the
     29 m trail: 1.6e-6 to 4.4e-6), far above the estimated integration error."""
-    res = compare(satI, ["derived", "exact-gravity"], periods=1, progress=False)
+    res = compare(satI, ["derived", "exact-gravity"], periods=1, check=True, progress=False)
     r = dict(res)
     d = _max_diff(res, "derived", "exact-gravity")
     rel_theta = d[2] / np.max(np.abs(r["derived"].theta))

@@ -56,6 +56,7 @@ class SimResult:
     message: str = ""
     error_estimate: tuple | None = None
     wall_time: float = field(default=0.0, compare=False)
+    periods: float | None = None  # length of the run asked for, in orbits (for reruns)
 
     # --- arrays --------------------------------------------------------------
     x = property(lambda self: self.states[:, 0])
@@ -92,6 +93,20 @@ class SimResult:
             conv = "converged" if self.converged else "NOT converged"
             conv += f" (estimated final error in θ {self.error_estimate[2]:.2g} rad)"
         return f"{self.satellite.name}, model {self.model}: {kind}; {conv}"
+
+    def estimate_error(self) -> "SimResult":
+        """Rerun finer and return this result with ``error_estimate`` set.
+
+        Returns
+        -------
+        SimResult
+            A copy with error_estimate (and so ``converged``) from a rerun at
+            half the step (RK4) or at rtol/100 (adaptive), exactly what
+            ``simulate(..., check=True)`` returns; this result itself when the
+            run did not finish with status "ok".
+        """
+        from .simulation import estimate_error
+        return estimate_error(self)
 
     @property
     def cfg(self) -> np.ndarray:

@@ -18,6 +18,7 @@ from tqdm.auto import tqdm
 from tethersim.engine.dynamics import initial_state, state_size
 from tethersim.engine.integrators.dop853 import STATUS_OK, dop853_run
 from tethersim.engine.integrators.rk4 import rk4_run
+from tethersim.engine.integrators.select import specialised
 from tethersim.engine.linearise import rk4_amplification
 from tethersim.engine.result import SimResult
 from tethersim.model.registry import DEFAULT_MODEL, model_index
@@ -59,15 +60,17 @@ def _kernel_args(sat: Satellite, model: str) -> tuple:
 def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
              method: str = "adaptive", model: str = DEFAULT_MODEL, *,
              rtol: float = 1e-10, atol: float = 1e-12, locate_switches: bool | None = None,
-             samples: int | None = None, check: bool = True,
+             samples: int | None = None, check: bool = False,
              progress: bool | None = None, step_warning: bool = True) -> SimResult:
     """Integrate a satellite for ``periods`` orbits.
 
     steps: RK4 step count (step = periods x orbital period / steps), default
       300 per orbit as in the thesis; for "adaptive" it sets the number of
       output samples instead (default 200 per orbit) unless ``samples`` is given.
-    check: estimate the error of the final state (RK4: rerun at half the step;
-      adaptive: rerun at rtol/100) and report it in result.error_estimate.
+    check: also estimate the error of the final state (RK4: rerun at half the
+      step; adaptive: rerun at rtol/100) into result.error_estimate, which
+      costs a second, longer integration.  Off by default (one integration, as
+      scipy's solve_ivp); ``result.estimate_error()`` does it on demand.
     progress: show a progress bar (None: only if the run takes over a second).
       False also runs the whole integration in one compiled call (no bar to update):
       the same steps, fewer GIL hand-overs for sweeps on threads; Ctrl-C is then
@@ -86,10 +89,7 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
                                 else max(1, round(STEPS_PER_PERIOD * periods)), integer=True)
         locate = False if locate_switches is None else bool(locate_switches)
         run = _run_rk4(sat, periods, steps, model, locate, progress, step_warning)
-        if check and run.status == "ok":
-            fine = _run_rk4(sat, periods, 2 * steps, model, locate, False, False)
-            run = _with_error(run, fine)
-        return run
+        return estimate_error(run) if check else run
     rtol = _check_positive("rtol", rtol)
     atol = _check_positive("atol", atol)
     if rtol < 1e-14:
@@ -102,10 +102,35 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
         n_out = max(2, round(SAMPLES_PER_PERIOD * periods))
     locate = True if locate_switches is None else bool(locate_switches)
     run = _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress)
-    if check and run.status == "ok":
-        fine = _run_adaptive(sat, periods, n_out, model, rtol / 100, atol / 100, locate, False)
-        run = _with_error(run, fine)
-    return run
+    return estimate_error(run) if check else run
+
+
+def estimate_error(run: SimResult) -> SimResult:
+    """The run with ``error_estimate`` set from a finer rerun (SimResult.estimate_error).
+
+    Parameters
+    ----------
+    run : SimResult
+        A finished run of :func:`simulate`.
+
+    Returns
+    -------
+    SimResult
+        A copy of ``run`` whose error_estimate holds |final state - final state
+        of the rerun| in (δx, δy, θ): RK4 reruns at half the step, the adaptive
+        method at rtol/100 and atol/100.  ``run`` itself (unchanged) when it did
+        not end with status "ok", when the rerun fails, or when it has no
+        record of its length (``periods``).
+    """
+    if run.status != "ok" or run.periods is None:
+        return run
+    if run.method == "rk4":
+        fine = _run_rk4(run.satellite, run.periods, 2 * run.n_accepted, run.model,
+                        run.locate_switches, False, False)
+    else:
+        fine = _run_adaptive(run.satellite, run.periods, run.t.size - 1, run.model,
+                             run.rtol / 100, run.atol / 100, run.locate_switches, False)
+    return _with_error(run, fine)
 
 
 def _with_error(run: SimResult, fine: SimResult) -> SimResult:
@@ -142,12 +167,16 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
     t0 = time.perf_counter()
     chunk = steps if progress is False else max(1, steps // CHUNKS)
     done = 0
+    # this model's compiled loop, chosen (compiled or loaded) once, before the bar
+    # starts: its rate, hence its ETA, then counts integration only
+    loop = specialised(rk4_run, m, (per_body, 0.0, y, h, chunk, 1, p, pw, locate, out_t, out_y,
+                                    row))
     with _bar(periods, f"{sat.name} RK4", progress) as bar:
         try:
             while done < steps:
                 n = min(chunk, steps - done)
-                rows, sw, st = rk4_run(m, per_body, done * h, y, h, n, 1, p, pw, locate, out_t,
-                                       out_y, row)
+                rows, sw, st = loop(m, per_body, done * h, y, h, n, 1, p, pw, locate, out_t,
+                                    out_y, row)
                 row += rows
                 switches += sw
                 done += n
@@ -160,6 +189,7 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
         except KeyboardInterrupt:
             status, message = "interrupted", f"interrupted at t = {out_t[row - 1]:.6g} s"
     return SimResult(sat, model, "rk4", out_t[:row].copy(), out_y[:row].copy(), step=h,
+                     periods=periods,
                      locate_switches=locate, nfev=4 * done, n_accepted=done,
                      n_switches=switches, status=status, message=message,
                      wall_time=time.perf_counter() - t0)
@@ -177,6 +207,10 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress) -> S
     counters = np.zeros(5, dtype=np.int64)
     t, h, i_out, status, message = 0.0, 0.0, 1, "ok", ""
     max_steps = int(MAX_STEPS_PER_PERIOD * periods)
+    # this model's compiled loop, chosen (compiled or loaded) once, before the bar
+    # starts: its rate, hence its ETA, then counts integration only
+    loop = specialised(dop853_run, m, (per_body, t, t_end, y, h, p, pw, rtol, atol, locate, out_t,
+                                       out_y, i_out, max_steps, counters, math.inf))
     t0 = time.perf_counter()
     with _bar(periods, f"{sat.name} DOP853", progress) as bar:
         try:
@@ -185,9 +219,8 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress) -> S
             for k in range(1, chunks + 1):
                 t_pause = math.inf if k == chunks else t_end * k / chunks
                 t_prev = t
-                t, h, i_out, st = dop853_run(m, per_body, t, t_end, y, h, p, pw, rtol, atol,
-                                             locate, out_t, out_y, i_out, max_steps, counters,
-                                             t_pause)
+                t, h, i_out, st = loop(m, per_body, t, t_end, y, h, p, pw, rtol, atol, locate,
+                                       out_t, out_y, i_out, max_steps, counters, t_pause)
                 bar.update((t - t_prev) / sat.period)
                 if st != STATUS_OK:
                     status = "diverged" if st == 1 else "failed"
@@ -197,6 +230,7 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress) -> S
         except KeyboardInterrupt:
             status, message = "interrupted", f"interrupted at t = {t:.6g} s"
     return SimResult(sat, model, "adaptive", out_t[:i_out].copy(), out_y[:i_out].copy(),
+                     periods=periods,
                      rtol=rtol, atol=atol, locate_switches=locate, nfev=int(counters[0]),
                      n_accepted=int(counters[1]), n_rejected=int(counters[2]),
                      n_switches=int(counters[3]), status=status, message=message,

@@ -121,7 +121,7 @@ def section_nominal(page: Page, periods: float) -> dict:
     rows, figs, results = [], [], {}
     for n in SATS:
         sat = load_preset(n)
-        res = simulate(sat, periods, progress=False)
+        res = simulate(sat, periods, check=True, progress=False)  # the table reports it
         results[n] = res
         m = outcome(res, forces=False).metrics
         tail = steady_state_window(res.t)

@@ -1,0 +1,126 @@
+"""The compiled time loops (issue 10): one loop per model, no reference counting
+per step, a cache keyed on the jitted sources only, one integration by default."""
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import tethersim.generated as generated
+from tethersim import _jit
+from tethersim.generated.dispatch import MODEL_NAMES
+from tethersim import load_preset, simulate
+from tethersim.dynamics import KERNELS, N_STATE, state_size
+
+REPO = Path(__file__).resolve().parents[2]
+
+
+@pytest.fixture(scope="module")
+def sat():
+    return load_preset("satI")
+
+
+def test_kernel_registry_is_the_generated_model_list():
+    # make derive writes both: the loop of model i runs generated.MODELS's i-th kernel
+    assert tuple(generated.MODELS) == MODEL_NAMES
+    assert KERNELS == tuple(generated.MODELS.values())
+    assert all(state_size(i) == N_STATE for i in range(len(MODEL_NAMES)))
+
+
+@pytest.mark.parametrize("method", ["rk4", "adaptive"])
+def test_simulate_integrates_once_unless_asked_for_an_error_estimate(sat, method):
+    kw = dict(periods=0.2, method=method, progress=False)
+    if method == "rk4":
+        kw["steps"] = 60
+    one = simulate(sat, **kw)
+    assert one.error_estimate is None and one.converged is None
+    checked = simulate(sat, check=True, **kw)
+    later = one.estimate_error()
+    # the same rerun either way, and the run itself is untouched
+    assert later.error_estimate == checked.error_estimate is not None
+    np.testing.assert_array_equal(later.states, one.states)
+    assert later.converged is checked.converged is not None
+
+
+def test_estimate_error_leaves_a_failed_run_alone(sat):
+    bad = simulate(sat, periods=5, steps=50, method="rk4", step_warning=False, progress=False)
+    assert bad.status == "diverged"
+    assert bad.estimate_error() is bad
+
+
+def _jitted_modules() -> set:
+    # modules that define compiled code (or hand constants to it via numba)
+    found = set()
+    for f in (REPO / "tethersim").rglob("*.py"):
+        src = f.read_text()
+        if re.search(r"@(njit|intrinsic|overload|jit)\b", src):
+            found.add(f.resolve())
+    return found
+
+
+def test_cache_key_covers_every_jitted_module_and_not_the_cli():
+    keyed = {f.resolve() for f in _jit.jitted_sources()}
+    assert _jitted_modules() <= keyed, sorted(map(str, _jitted_modules() - keyed))
+    assert {f.resolve() for f in (REPO / "generated").glob("*.py")} <= keyed
+    # modules that only drive or present the kernels do not recompile them
+    for name in ("cli/main.py", "cli/run.py", "engine/simulate.py", "engine/result.py",
+                 "output/report.py", "output/plots/run.py"):
+        assert (REPO / "tethersim" / name).resolve() not in keyed
+
+
+def _python(code: str, env: dict, timeout: float = 900) -> subprocess.CompletedProcess:
+    full = dict(os.environ)
+    full.pop("NUMBA_CACHE_DIR", None)
+    full.update(env)
+    return subprocess.run([sys.executable, "-c", textwrap.dedent(code)], cwd=REPO, env=full,
+                          capture_output=True, text=True, timeout=timeout)
+
+
+def test_cache_folder_honours_tethersim_cache_dir(tmp_path):
+    r = _python("import numba, tethersim; print(numba.config.CACHE_DIR)",
+                {"TETHERSIM_CACHE_DIR": str(tmp_path), "NUMBA_CACHE_DIR": "/nonexistent"})
+    assert r.returncode == 0, r.stderr
+    assert Path(r.stdout.strip()).parent == tmp_path
+
+
+RUN = """
+import sys
+from tethersim import load_preset, simulate
+n = int(sys.argv[1])
+sat = load_preset("satI")
+# N fixed steps and N/20 orbits adaptive (about 3N/2 steps): work that scales with N
+simulate(sat, periods=n / 300, steps=n, method="rk4", progress=False)
+simulate(sat, periods=n / 20, progress=False)
+"""
+
+
+def _nrt_ops(n: int, env: dict) -> int:
+    r = subprocess.run([sys.executable, "-c", RUN, str(n)], cwd=REPO, env=env,
+                       capture_output=True, text=True, timeout=900)
+    assert r.returncode == 0, r.stderr[-2000:]
+    # numba/core/runtime/nrtdynmod.py prints one line per non-NULL incref/decref
+    return sum(line.startswith(("*** NRT_Incref", "*** NRT_Decref"))
+               for line in r.stdout.splitlines())
+
+
+@pytest.mark.slow
+def test_reference_count_operations_do_not_grow_with_the_step_count(tmp_path):
+    """NUMBA_DEBUG_NRT=1 prints every atomic reference-count operation: a run of
+    twice the steps must do exactly as many (before issue 10: ~92 per RK4 step)."""
+    env = dict(os.environ)
+    env.pop("NUMBA_CACHE_DIR", None)
+    env.update(TETHERSIM_CACHE_DIR=str(tmp_path), NUMBA_DEBUG_NRT="1")
+    # cold cache: compiles once (with the debug prints) and says so, once
+    first = subprocess.run([sys.executable, "-c", RUN, "30"], cwd=REPO, env=env,
+                           capture_output=True, text=True, timeout=900)
+    assert first.returncode == 0, first.stderr[-2000:]
+    assert first.stderr.count("compiling numerical kernels once") == 1
+    small, large = _nrt_ops(300, env), _nrt_ops(600, env)
+    assert small == large
+    assert small < 100  # a few per run (allocations, arguments), none per step
