@@ -5,8 +5,9 @@ for one layout (planar, free orbit, 3-D):
 
 ``tether_margins(y, p, g)``  g[j] = λ_j − l_j0 [m], tether j taut when g[j] > 0
                              (Eqs 3.39-3.42): where the right-hand side switches
-``body_radii(y, p, out)``    |R_i| [m] of tip-mass, bus and balloon from Earth's
-                             centre (Eqs 3.10-3.12): each body's own altitude
+``body_radii(y, p)``         (|R_1|, |R_2|, |R_3|) [m] of tip-mass, bus and balloon
+                             from Earth's centre (Eqs 3.10-3.12), a tuple: each
+                             body's own altitude, with no array to allocate
 
 Each emitter (planar codegen, free-orbit codegen, 3-D codegen) passes the
 components of the three body positions and the two tether vectors, printed
@@ -46,8 +47,8 @@ def geometry_source(unpack: list, tethers, rests, bodies, note: str = "") -> lis
            f'{i1}"""g[j] = λ_j − l_j0 [m]: tether j is taut when g[j] > 0 (Eqs 3.39-3.42)."""']
     out += unpack
     out += [f"{i1}g[{j}] = {_norm(c)} - {rest}" for j, (c, rest) in enumerate(zip(tethers, rests))]
-    out += ["", "", "@njit(cache=True, inline=\"always\")", "def body_radii(y, p, out):",
-            f'{i1}"""|R_i| [m] of tip-mass, bus, balloon from Earth\'s centre{note}."""']
+    out += ["", "", "@njit(cache=True, inline=\"always\")", "def body_radii(y, p):",
+            f'{i1}"""(|R_1|, |R_2|, |R_3|) [m]: tip-mass, bus, balloon from Earth\'s centre{note}."""']
     out += unpack
-    out += [f"{i1}out[{i}] = {_norm(c)}" for i, c in enumerate(bodies)]
+    out += [f"{i1}return ({', '.join(_norm(c) for c in bodies)})"]
     return out

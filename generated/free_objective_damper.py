@@ -1962,8 +1962,8 @@ def tether_margins(y, p, g):
 
 
 @njit(cache=True, inline="always")
-def body_radii(y, p, out):
-    """|R_i| [m] of tip-mass, bus, balloon from Earth's centre (Eqs 3.10-3.12 about the orbit radius r)."""
+def body_radii(y, p):
+    """(|R_1|, |R_2|, |R_3|) [m]: tip-mass, bus, balloon from Earth's centre (Eqs 3.10-3.12 about the orbit radius r)."""
     delta_x = y[0]
     delta_y = y[1]
     theta = y[2]
@@ -1998,6 +1998,4 @@ def body_radii(y, p, out):
     R_E = p[21]
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
-    out[0] = math.hypot(b*sin_theta, b*cos_theta + r)
-    out[1] = math.hypot(-a*sin_theta, -a*cos_theta + r)
-    out[2] = math.hypot(delta_x, delta_y + r)
+    return (math.hypot(b*sin_theta, b*cos_theta + r), math.hypot(-a*sin_theta, -a*cos_theta + r), math.hypot(delta_x, delta_y + r))

@@ -2447,8 +2447,8 @@ def tether_margins(y, p, g):
 
 
 @njit(cache=True, inline="always")
-def body_radii(y, p, out):
-    """|R_i| [m] of tip-mass, bus, balloon from Earth's centre (docs/three-d.md)."""
+def body_radii(y, p):
+    """(|R_1|, |R_2|, |R_3|) [m]: tip-mass, bus, balloon from Earth's centre (docs/three-d.md)."""
     delta_x = y[0]
     delta_y = y[1]
     delta_z = y[2]
@@ -2495,6 +2495,4 @@ def body_radii(y, p, out):
     cos_theta = math.cos(theta)
     sin_psi = math.sin(psi)
     cos_psi = math.cos(psi)
-    out[0] = math.sqrt((b*cos_phi*sin_theta)**2 + (b*cos_phi*cos_theta + r0)**2 + (b*sin_phi)**2)
-    out[1] = math.sqrt((-a*cos_phi*sin_theta)**2 + (-a*cos_phi*cos_theta + r0)**2 + (-a*sin_phi)**2)
-    out[2] = math.sqrt((delta_x)**2 + (delta_y + r0)**2 + (delta_z)**2)
+    return (math.sqrt((b*cos_phi*sin_theta)**2 + (b*cos_phi*cos_theta + r0)**2 + (b*sin_phi)**2), math.sqrt((-a*cos_phi*sin_theta)**2 + (-a*cos_phi*cos_theta + r0)**2 + (-a*sin_phi)**2), math.sqrt((delta_x)**2 + (delta_y + r0)**2 + (delta_z)**2))

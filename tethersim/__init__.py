@@ -11,11 +11,12 @@ from tethersim import _jit  # noqa: F401  (first: numba's cache folder, before a
 from tethersim.generated import dispatch
 from tethersim.generated.layout import FAMILIES, PARAMETERS, STATE
 
-from tethersim.engine.dynamics import body_densities
-from tethersim.model.registry import DEFAULT_MODEL, model_index
+from tethersim.engine.dynamics import densities_at
+from tethersim.model.inputs import parameter_vector
+from tethersim.model.registry import DEFAULT_MODEL, NAMES, get_model
 from tethersim.model.presets import load, load_preset
 from tethersim.engine.result import SimResult
-from tethersim.model.satellite import Satellite, SatelliteError, parameter_vector
+from tethersim.model.satellite import Satellite, SatelliteError
 from tethersim.model.satellite import parameters as _parameters
 from tethersim.engine.simulate import RK4StepWarning, simulate
 from tethersim.analysis.outcome import Outcome, outcome
@@ -28,45 +29,114 @@ __all__ = ["Satellite", "SatelliteError", "SimResult", "RK4StepWarning", "Outcom
            "MODELS", "FAMILIES", "STATE", "PARAMETERS", "__version__", "find_equilibrium",
            "Equilibrium", "SweepSpec", "run_sweep"]
 from tethersim._version import __version__  # noqa: E402
-MODELS = dispatch.MODEL_NAMES
+MODELS = NAMES  # every generated model (tethersim.model.registry)
 
 
 def parameters(sat: Satellite) -> dict:
-    """Thesis symbols (m1 ... rho) as SI floats; see generated/layout.py for units."""
+    """The thesis symbols of a satellite as SI floats.
+
+    Parameters
+    ----------
+    sat : Satellite
+        The satellite.
+
+    Returns
+    -------
+    dict
+        {symbol: value} for m1 ... rho3 (units in ``tethersim.PARAMETERS`` order,
+        generated/layout.py), plus r0, omega and the uniform density rho.
+
+    Examples
+    --------
+    >>> import tethersim
+    >>> round(tethersim.parameters(tethersim.load_preset("satI"))["r0"] / 1e3, 3)
+    6578.137
+    """
     return _parameters(sat)
 
 
-def _state_and_params(sat: Satellite, state):
+def _state_and_params(sat: Satellite, state, model: str):
     if not isinstance(sat, Satellite):
         raise TypeError(f"sat must be a Satellite, got {type(sat).__name__}")
+    m = get_model(model)
     y = np.asarray(state, dtype=float)
-    if y.shape != (6,) or not np.all(np.isfinite(y)):
-        raise ValueError(f"state = {state!r}: must be 6 finite numbers "
-                         f"(δx [m], δy [m], θ [rad], δẋ [m/s], δẏ [m/s], θ̇ [rad/s])")
-    p = parameter_vector(sat)
+    if y.shape != (m.n_state,) or not np.all(np.isfinite(y)):
+        names = ", ".join(f"{n} [{u}]" for n, u in zip(m.state, m.state_units))
+        raise ValueError(f"state = {state!r}: must be {m.n_state} finite numbers ({names})")
+    p = parameter_vector(sat, model)
     if sat.density_mode == "per-body":
         pw = p.copy()
-        body_densities(y, p, pw)
+        densities_at(m.index, y, p, pw)
         p = pw
-    return y, p
+    return m, np.ascontiguousarray(y), p
 
 
 def accelerations(sat: Satellite, state, model: str = DEFAULT_MODEL) -> np.ndarray:
-    """(δẍ [m/s²], δÿ [m/s²], θ̈ [rad/s²]) at state (δx, δy, θ, δẋ, δẏ, θ̇) in SI."""
-    m = model_index(model)
-    y, p = _state_and_params(sat, state)
-    d = np.empty(6)
-    dispatch.rhs(m, 0.0, y, p, d)
-    return d[3:].copy()
+    """Generalized accelerations of a model at one state (SI).
+
+    Parameters
+    ----------
+    sat : Satellite
+        The satellite.
+    state : array_like
+        The model's state in its STATE order; for the thesis models
+        (δx [m], δy [m], θ [rad], δẋ [m/s], δẏ [m/s], θ̇ [rad/s]).
+    model : str, optional
+        Model name (``tethersim.MODELS``), default ``"derived"``.
+
+    Returns
+    -------
+    numpy.ndarray
+        q̈ in the order of the model's coordinates (thesis models: δẍ [m/s²],
+        δÿ [m/s²], θ̈ [rad/s²]).
+
+    Raises
+    ------
+    ValueError
+        A state of the wrong length or with a non-finite entry, or an unknown model.
+
+    Examples
+    --------
+    >>> import tethersim
+    >>> sat = tethersim.load_preset("satI")
+    >>> tethersim.accelerations(sat, [0, 0, 0, 0, 0, 0]).shape
+    (3,)
+    """
+    m, y, p = _state_and_params(sat, state, model)
+    d = np.empty(m.n_state)
+    dispatch.rhs(m.index, 0.0, y, p, d)
+    return d[m.n_coordinates:].copy()
 
 
 def generalized_forces(sat: Satellite, state, model: str = DEFAULT_MODEL) -> dict:
-    """{family: (Q_δx [N], Q_δy [N], Q_θ [N m])} for every force family (Eqs 3.31-3.47)."""
-    m = model_index(model)
-    y, p = _state_and_params(sat, state)
-    out = np.zeros((len(FAMILIES), 3))
-    dispatch.family_forces(m, y, p, out)
-    return {f: out[i].copy() for i, f in enumerate(FAMILIES)}
+    """Generalized force of every force family at one state (Eqs 3.31-3.47).
+
+    Parameters
+    ----------
+    sat : Satellite
+        The satellite.
+    state : array_like
+        The model's state in its STATE order (see :func:`accelerations`).
+    model : str, optional
+        Model name, default ``"derived"``.
+
+    Returns
+    -------
+    dict
+        {family: array of Q on each coordinate} (thesis models: Q_δx [N],
+        Q_δy [N], Q_θ [N m]); families drag1-3, spring1-2, damper1-2.
+
+    Examples
+    --------
+    >>> import tethersim
+    >>> q = tethersim.generalized_forces(tethersim.load_preset("satI"), [29, 0, 0, 0, 0, 0])
+    >>> sorted(q)[:3]
+    ['damper1', 'damper2', 'drag1']
+    """
+    m, y, p = _state_and_params(sat, state, model)
+    out = np.zeros((len(m.families), m.n_coordinates))
+    dispatch.family_forces(m.index, y, p, out)
+    return {f: out[i].copy() for i, f in enumerate(m.families)}
 
 
 # heavier parts of the API (scipy.optimize, xarray/zarr) load on first use

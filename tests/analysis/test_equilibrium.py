@@ -5,11 +5,12 @@ from __future__ import annotations
 import pytest
 
 import tethersim as ts
+from tethersim.model.registry import THESIS_VARIANTS
 from tethersim.analysis.equilibrium import find_equilibrium, format_equilibrium
 from tethersim.engine.simulate import simulate
 
 
-@pytest.mark.parametrize("model", ts.MODELS)
+@pytest.mark.parametrize("model", THESIS_VARIANTS)
 @pytest.mark.parametrize("preset", ["satI", "satII", "dumbsat"])
 def test_equilibrium_residual_is_below_1e_10(preset, model):
     eq = find_equilibrium(ts.load_preset(preset), model=model)

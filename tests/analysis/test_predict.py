@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import tethersim as ts
+from tethersim.model.registry import THESIS_VARIANTS
 from tethersim.model import params
 from tethersim.analysis.classify import (CLASSES, FAILED, OFFSET, STABLE, TUMBLING, UNSETTLED,
                                 flag_attrs)
@@ -24,7 +25,7 @@ PRESETS = ["satI", "satII", "dumbsat"]
 
 
 # --- torque balance -------------------------------------------------------------
-@pytest.mark.parametrize("model", ts.MODELS)
+@pytest.mark.parametrize("model", THESIS_VARIANTS)
 @pytest.mark.parametrize("preset", PRESETS)
 def test_balanced_E2_puts_the_equilibrium_at_zero_pitch(preset, model):
     sat = ts.load_preset(preset)
@@ -34,7 +35,7 @@ def test_balanced_E2_puts_the_equilibrium_at_zero_pitch(preset, model):
     assert eq.residual < 1e-10 and eq.taut == (True, True)
 
 
-@pytest.mark.parametrize("model", ts.MODELS)
+@pytest.mark.parametrize("model", THESIS_VARIANTS)
 @pytest.mark.parametrize("preset", PRESETS)
 def test_formula_TB4_is_exact_at_the_balanced_trail(preset, model):
     # TB4 is the θ = 0 pitch equation solved for E2: exact up to rounding (claim 1)
@@ -195,7 +196,7 @@ def test_agreement_counts_hand_made_maps():
 
 
 # --- eigenvalues with no tethers and no drag (issue 5) --------------------------------
-@pytest.mark.parametrize("model", ts.MODELS)
+@pytest.mark.parametrize("model", THESIS_VARIANTS)
 def test_free_balloon_has_the_hill_clohessy_wiltshire_modes(model):
     """No tethers, dampers or drag: the balloon's in-plane block is Hill's / CW's.
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 import csv
 
 import pytest
-from tethersim.generated.dispatch import MODEL_NAMES
+from tethersim.model.registry import THESIS_VARIANTS as MODEL_NAMES
 
 from tethersim.analysis.classify import CLASSES
 from tethersim.cli.main import main

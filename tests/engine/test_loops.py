@@ -16,7 +16,8 @@ import tethersim.generated as generated
 from tethersim import _jit
 from tethersim.generated.dispatch import MODEL_NAMES
 from tethersim import load_preset, simulate
-from tethersim.dynamics import KERNELS, N_STATE, state_size
+from tethersim.engine.dynamics import KERNELS, state_size
+from tethersim.model.registry import MODELS
 
 REPO = Path(__file__).resolve().parents[2]
 
@@ -28,9 +29,11 @@ def sat():
 
 def test_kernel_registry_is_the_generated_model_list():
     # make derive writes both: the loop of model i runs generated.MODELS's i-th kernel
-    assert tuple(generated.MODELS) == MODEL_NAMES
+    assert tuple(generated.MODELS) == MODEL_NAMES == tuple(m.name for m in MODELS)
     assert KERNELS == tuple(generated.MODELS.values())
-    assert all(state_size(i) == N_STATE for i in range(len(MODEL_NAMES)))
+    # each loop integrates the model's own state, plus the COM orbit when it is held circular
+    for m in MODELS:
+        assert state_size(m.index) == m.n_state + (4 if m.orbit == "circular" else 0)
 
 
 @pytest.mark.parametrize("method", ["rk4", "adaptive"])

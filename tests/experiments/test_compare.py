@@ -13,7 +13,7 @@ import pytest
 from scipy.integrate import cumulative_trapezoid
 
 import tethersim as ts
-from tethersim.generated.dispatch import MODEL_NAMES
+from tethersim.model.registry import THESIS_VARIANTS as MODEL_NAMES
 from tethersim.analysis.classify import CLASSES, classify
 from tethersim.experiments.compare import (
     COLUMNS,

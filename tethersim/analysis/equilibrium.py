@@ -17,7 +17,7 @@ from scipy.optimize import root
 from tethersim.generated import dispatch
 
 from tethersim.analysis.metrics import SETTLING_TOL, wrap
-from tethersim.model.registry import DEFAULT_MODEL, model_index
+from tethersim.model.registry import DEFAULT_MODEL, THESIS_VARIANTS, model_index
 from tethersim.model.satellite import Satellite, parameter_vector
 from tethersim.engine.linearise import attitude_jacobian, rk4_max_step
 
@@ -109,7 +109,7 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     >>> round(eq.delta_x)
     29
     """
-    m = model_index(model)
+    m = model_index(model, THESIS_VARIANTS, "find_equilibrium")
     p = parameter_vector(sat)
     g = np.array(guess if guess is not None else (sat.initial[0], sat.initial[1], 0.0), float)
     d = np.empty(6)

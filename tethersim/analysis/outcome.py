@@ -27,7 +27,6 @@ from tethersim.analysis.metrics import (SETTLING_TOL, PitchMetrics, pitch_metric
                                         steady_state_window)
 from tethersim.engine.evaluate import family_force_peaks
 from tethersim.engine.result import SimResult
-from tethersim.model.satellite import parameter_vector
 
 NAN3 = (math.nan, math.nan, math.nan)
 
@@ -158,6 +157,7 @@ def outcome(res: SimResult, tol: float = SETTLING_TOL, forces: bool = True) -> O
     """
     n = finite_prefix(res)
     t, states = res.t[:n], res.states[:n]
+    ix, iy, ith = (res.layout.state.index(s) for s in ("delta_x", "delta_y", "theta"))
     reason = ""
     if res.status != "ok":
         reason = res.message or res.status
@@ -169,16 +169,16 @@ def outcome(res: SimResult, tol: float = SETTLING_TOL, forces: bool = True) -> O
     if n >= 2:
         with warnings.catch_warnings(), np.errstate(all="ignore"):
             warnings.simplefilter("ignore", RuntimeWarning)  # a diverging run's huge values
-            m = pitch_metrics(t, states[:, 2], tol=tol)
+            m = pitch_metrics(t, states[:, ith], tol=tol)
     cls = FAILED if reason else classify(m, tol=tol)
     trail = (math.nan, math.nan)
     if n >= 2:
         tail = steady_state_window(t)
-        trail = (float(np.mean(states[tail, 0])), float(np.mean(states[tail, 1])))
+        trail = (float(np.mean(states[tail, ix])), float(np.mean(states[tail, iy])))
     peak = NAN3
     if forces and n >= 1:
-        peak = tuple(float(v) for v in family_force_peaks(res.cfg, states,
-                                                           parameter_vector(res.satellite)))
+        q = family_force_peaks(res.layout.index, res.per_body, states, res.parameters)
+        peak = tuple(float(q[i]) for i in (ix, iy, ith))  # coordinates lead the state
     return Outcome(status=res.status, reason=reason, stability_class=int(cls), metrics=m,
                    trail_delta_x=trail[0], trail_delta_y=trail[1], max_force=peak,
                    error_estimate=res.error_estimate, converged=res.converged)

@@ -97,7 +97,7 @@ from tethersim.analysis.classify import (CLASSES, FAILED, OFFSET, SETTLING_REQUI
 from tethersim.analysis.equilibrium import find_equilibrium
 from tethersim.analysis.torque_balance import PitchTorque
 from tethersim.analysis.metrics import SETTLING_TOL, SS_FRACTION
-from tethersim.model.registry import DEFAULT_MODEL, model_index
+from tethersim.model.registry import DEFAULT_MODEL, THESIS_VARIANTS, model_index
 from tethersim.model.satellite import Satellite, SatelliteError
 
 WALK_STEP = math.radians(5.0)  # rad, step of the walk along θ from 0
@@ -293,7 +293,7 @@ def predicted_map(sat: Satellite, name_x: str, values_x, name_y: str, values_y,
         raise ValueError(f"the two axes must differ, both are {name_x!r}")
     if not (isinstance(periods, (int, float)) and math.isfinite(periods) and periods > 0):
         raise ValueError(f"periods = {periods!r}: must be a finite number > 0")
-    model_index(model)
+    model_index(model, THESIS_VARIANTS, "the stability prediction")
     xs = np.asarray(values_x, dtype=float).ravel()
     ys = np.asarray(values_y, dtype=float).ravel()
     for name, v in ((name_x, xs), (name_y, ys)):

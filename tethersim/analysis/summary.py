@@ -5,7 +5,6 @@ import numpy as np
 
 from tethersim.analysis.outcome import Outcome, finite_prefix, outcome
 from tethersim.engine.result import SimResult
-from tethersim.generated.layout import FAMILIES
 
 
 def run_summary(res: SimResult, out: Outcome | None = None) -> dict:
@@ -28,7 +27,9 @@ def run_summary(res: SimResult, out: Outcome | None = None) -> dict:
     period = res.satellite.period
     n = max(1, finite_prefix(res))  # a diverged run: up to its last finite sample
     tension = res.tether_tensions()[:n].max(axis=0)
-    peak = np.abs(res.forces[:n]).max(axis=0)  # (family, coordinate)
+    lay = res.layout
+    ix, iy, ith = (lay.state.index(s) for s in ("delta_x", "delta_y", "theta"))
+    peak = np.abs(res.forces[:n]).max(axis=0)[:, [ix, iy, ith]]  # (family, δx δy θ)
     biggest = peak.argmax(axis=0)
     nan = float("nan")
     return {
@@ -41,11 +42,11 @@ def run_summary(res: SimResult, out: Outcome | None = None) -> dict:
         "largest tension tether 1 [N]": float(tension[0]),
         "largest tension tether 2 [N]": float(tension[1]),
         "largest force on dx [N]": float(peak[biggest[0], 0]),
-        "largest force on dx: family": FAMILIES[biggest[0]],
+        "largest force on dx: family": lay.families[biggest[0]],
         "largest force on dy [N]": float(peak[biggest[1], 1]),
-        "largest force on dy: family": FAMILIES[biggest[1]],
+        "largest force on dy: family": lay.families[biggest[1]],
         "largest torque on theta [N m]": float(peak[biggest[2], 2]),
-        "largest torque on theta: family": FAMILIES[biggest[2]],
+        "largest torque on theta: family": lay.families[biggest[2]],
         "tumbled": bool(m.tumbled) if m else None,
         "upside down": bool(m.upside_down) if m else None,
         "final delta_x [m]": float(res.x[n - 1]),

@@ -16,7 +16,7 @@ from tethersim.generated.layout import (P_A, P_A1, P_A2, P_B, P_C1, P_C2, P_CD, 
                               P_L20, P_OMEGA, P_OMEGA_EARTH, P_R0, P_RHO1, P_RHO2)
 
 from tethersim.analysis.equilibrium import RESIDUAL_TOL
-from tethersim.model.registry import DEFAULT_MODEL, model_index
+from tethersim.model.registry import DEFAULT_MODEL, THESIS_VARIANTS, model_index
 from tethersim.model.satellite import Satellite, parameter_vector
 
 
@@ -41,7 +41,7 @@ class PitchTorque:
     """
 
     def __init__(self, sat: Satellite, model: str, trail=None):
-        self.m = model_index(model)
+        self.m = model_index(model, THESIS_VARIANTS, "the torque balance")
         self.p = parameter_vector(sat)
         self.y = np.zeros(6)
         self.d = np.empty(6)
@@ -126,7 +126,7 @@ def torque_balance_terms(sat: Satellite, delta_x: float, delta_y: float,
     d2 = 0.5 * p[P_CD] * p[P_RHO2] * p[P_A2] * ((w - we) * (r0 - a)) ** 2
     kind = _DAMPER_AT_REST.get(model)
     if kind is None:
-        model_index(model)
+        model_index(model, THESIS_VARIANTS, "the torque balance")
         raise ValueError(f"model {model!r}: no torque-balance formula for its dampers")
     c1, c2 = p[P_C1], p[P_C2]
     m_c = 0.0 if kind == "none" else w * (c1 * b * h1 + c2 * a * h2)
@@ -167,7 +167,7 @@ def balanced_E2(sat: Satellite, E1: float | None = None, model: str = DEFAULT_MO
     if Newton fails.
     """
     E1 = sat.E1 if E1 is None else float(E1)
-    m = model_index(model)
+    m = model_index(model, THESIS_VARIANTS, "the torque balance")
     s = sat.replace(E1=E1, E2=E1 * sat.b / sat.a)
     trail = balloon_trail_at_zero_pitch(s, model)
     E2 = torque_balance_terms(s, trail[0], trail[1], model)["ratio"] * E1 if E1 > 0 else 0.0

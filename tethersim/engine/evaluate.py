@@ -1,58 +1,133 @@
-"""Jitted loops that evaluate generated functions along a trajectory."""
+"""Jitted loops that evaluate a model's generated kernels along a trajectory.
+
+Each takes the model index as a literal (one specialised loop per model, like
+the integrators), the per-body density flag, the samples Y (n, integrated
+state) and the parameter vector; the model's own layout (number of
+coordinates, families) comes from its generated module.
+"""
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import literally, njit, types
+from numba.extending import overload
 
-from tethersim.generated import dispatch
+from tethersim.engine.dynamics import KERNELS, model_densities, model_tether_margins
+from tethersim.model.registry import MODELS
 
-from tethersim.engine.dynamics import CFG_MODEL, CFG_PER_BODY, N_ATTITUDE, body_densities
+
+def model_family_forces(model, y, p, out):
+    """Generated family_forces of model ``model`` (compiled code, literal model only)."""
+    raise NotImplementedError("model_family_forces is only callable from compiled code")
+
+
+def model_jacobi(model, y, p):
+    """Generated jacobi of model ``model`` (compiled code, literal model only)."""
+    raise NotImplementedError("model_jacobi is only callable from compiled code")
+
+
+def model_shape(model):
+    """(families, coordinates) of model ``model`` (compiled code, literal model only)."""
+    raise NotImplementedError("model_shape is only callable from compiled code")
+
+
+def _literal(model):
+    return model.literal_value if isinstance(model, types.IntegerLiteral) else None
+
+
+@overload(model_family_forces, inline="always", prefer_literal=True)
+def _model_family_forces(model, y, p, out):
+    if (k := _literal(model)) is None:
+        return None
+    f = KERNELS[k].family_forces
+
+    def impl(model, y, p, out):
+        f(y, p, out)
+    return impl
+
+
+@overload(model_jacobi, inline="always", prefer_literal=True)
+def _model_jacobi(model, y, p):
+    if (k := _literal(model)) is None:
+        return None
+    f = KERNELS[k].jacobi
+
+    def impl(model, y, p):
+        return f(y, p)
+    return impl
+
+
+@overload(model_shape, inline="always", prefer_literal=True)
+def _model_shape(model):
+    if (k := _literal(model)) is None:
+        return None
+    shape = (len(MODELS[k].families), MODELS[k].n_coordinates)
+
+    def impl(model):
+        return shape
+    return impl
 
 
 @njit(cache=True, nogil=True)  # nogil: sweeps evaluate forces on threads
-def family_forces_series(cfg, Y, p):
-    """Q[i, f, k]: generalized force of family f on q_k at sample i."""
+def family_forces_series(model, per_body, Y, p):
+    """Q[i, f, k]: generalized force of family f on coordinate k at sample i (SI)."""
+    literally(model)
+    nf, nq = model_shape(model)
     n = Y.shape[0]
-    out = np.zeros((n, 7, 3))
+    out = np.zeros((n, nf, nq))
     pw = p.copy()
     for i in range(n):
         par = p
-        if cfg[CFG_PER_BODY] == 1:
-            body_densities(Y[i], p, pw)
+        if per_body:
+            model_densities(model, Y[i], p, pw)
             par = pw
-        dispatch.family_forces(cfg[CFG_MODEL], Y[i, :N_ATTITUDE], par, out[i])
+        model_family_forces(model, Y[i], par, out[i])
     return out
 
 
 @njit(cache=True)
-def jacobi_series(cfg, Y, p):
+def jacobi_series(model, Y, p):
     """Jacobi integral (+ spring energy) [J] at each sample."""
+    literally(model)
     n = Y.shape[0]
     out = np.empty(n)
     for i in range(n):
-        out[i] = dispatch.jacobi(cfg[CFG_MODEL], Y[i, :N_ATTITUDE], p)
+        out[i] = model_jacobi(model, Y[i], p)
     return out
 
 
 @njit(cache=True, nogil=True)
-def family_force_peaks(cfg, Y, p):
-    """Largest |Q| of any single family on each coordinate over the samples (3,).
+def family_force_peaks(model, per_body, Y, p):
+    """Largest |Q| of any single family on each coordinate over the samples.
 
-    What a sweep keeps of the force breakdown, without the (n, 7, 3) array and
-    without holding the GIL (threads of a sweep run this side by side).
+    What a sweep keeps of the force breakdown, without the (n, families,
+    coordinates) array and without holding the GIL (threads of a sweep run this
+    side by side).
     """
-    out = np.zeros(3)
-    q = np.zeros((7, 3))
+    literally(model)
+    nf, nq = model_shape(model)
+    out = np.zeros(nq)
+    q = np.zeros((nf, nq))
     pw = p.copy()
     for i in range(Y.shape[0]):
         par = p
-        if cfg[CFG_PER_BODY] == 1:
-            body_densities(Y[i], p, pw)
+        if per_body:
+            model_densities(model, Y[i], p, pw)
             par = pw
-        dispatch.family_forces(cfg[CFG_MODEL], Y[i, :N_ATTITUDE], par, q)
-        for f in range(7):
-            for k in range(3):
+        model_family_forces(model, Y[i], par, q)
+        for f in range(nf):
+            for k in range(nq):
                 a = abs(q[f, k])
                 if a > out[k]:
                     out[k] = a
+    return out
+
+
+@njit(cache=True)
+def tether_margin_series(model, Y, p):
+    """g[i, j] = λ_j − l_j0 [m] of tether j at sample i (taut when positive)."""
+    literally(model)
+    n = Y.shape[0]
+    out = np.empty((n, 2))
+    for i in range(n):
+        model_tether_margins(model, Y[i], p, out[i])
     return out

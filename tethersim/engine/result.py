@@ -13,12 +13,14 @@ from functools import cached_property
 
 import numpy as np
 
-from tethersim.generated.layout import FAMILIES
 
-from tethersim.engine.dynamics import CFG_MODEL, CFG_PER_BODY
-from tethersim.engine.evaluate import family_forces_series, jacobi_series
-from tethersim.model.registry import model_index
-from tethersim.model.satellite import Satellite, parameter_vector
+from tethersim.engine.dynamics import has_com_orbit
+from tethersim.engine.evaluate import (family_forces_series, jacobi_series,
+                                       tether_margin_series)
+from tethersim.model.constants import R_EARTH
+from tethersim.model.inputs import parameter_vector
+from tethersim.model.registry import Model, get_model
+from tethersim.model.satellite import Satellite
 
 ORBIT_COLUMNS = ("X", "Y", "VX", "VY")
 ORBIT_UNITS = ("m", "m", "m/s", "m/s")
@@ -31,12 +33,43 @@ DISSIPATIVE = ("drag1", "drag2", "drag3", "damper1", "damper2")
 class SimResult:
     """Time series (SI) and bookkeeping of one run.
 
-    t [s]; x, y [m] balloon offsets δx, δy; theta [rad]; xdot, ydot [m/s];
-    thetadot [rad/s]; orbit (n, 4): COM inertial X, Y [m], VX, VY [m/s].
-    method: "rk4" or "adaptive"; faithful: fixed-step RK4 without switch
-    location, as in the thesis; error_estimate: estimated error of the final
-    state in (δx [m], δy [m], θ [rad]) — step halving for RK4, a tighter-
-    tolerance rerun for the adaptive method — or None if not checked.
+    Attributes
+    ----------
+    satellite : Satellite
+        What was simulated.
+    model : str
+        Model name (``tethersim.MODELS``); its state layout is
+        ``tethersim.model.registry.get_model(model).state``.
+    method : str
+        ``"rk4"`` or ``"adaptive"``.
+    t : numpy.ndarray
+        Sample times [s].
+    states : numpy.ndarray
+        (n, integrated state): the model's state, then for a circular-orbit
+        model the COM's inertial X, Y [m], VX, VY [m/s].
+    step : float or None
+        RK4 step [s].
+    rtol, atol : float or None
+        Tolerances of the adaptive run.
+    locate_switches : bool
+        Whether taut/slack switches were located.
+    nfev, n_accepted, n_rejected, n_switches : int
+        Right-hand-side evaluations, accepted and rejected steps, switches located.
+    status : str
+        ``"ok"``, ``"diverged"``, ``"failed"`` or ``"interrupted"``.
+    message : str
+        What happened, for a status other than ok.
+    error_estimate : tuple or None
+        Estimated error of the final state in (δx [m], δy [m], θ [rad]): step
+        halving for RK4, a tighter-tolerance rerun for the adaptive method;
+        None if not checked (``estimate_error()``).
+    wall_time : float
+        Seconds the integration took.
+    periods : float or None
+        Length of the run asked for, in orbits.
+
+    The series of any state by name: ``res.series("theta")``; shortcuts ``x``,
+    ``y``, ``theta``, ``xdot``, ``ydot``, ``thetadot`` (δx, δy, θ and rates).
     """
 
     satellite: Satellite
@@ -59,13 +92,46 @@ class SimResult:
     periods: float | None = None  # length of the run asked for, in orbits (for reruns)
 
     # --- arrays --------------------------------------------------------------
-    x = property(lambda self: self.states[:, 0])
-    y = property(lambda self: self.states[:, 1])
-    theta = property(lambda self: self.states[:, 2])
-    xdot = property(lambda self: self.states[:, 3])
-    ydot = property(lambda self: self.states[:, 4])
-    thetadot = property(lambda self: self.states[:, 5])
-    orbit = property(lambda self: self.states[:, 6:10])
+    @property
+    def layout(self) -> Model:
+        """The model's registry entry (state names and units, parameters, kind)."""
+        return get_model(self.model)
+
+    def series(self, name: str) -> np.ndarray:
+        """Samples of the state called ``name`` (a name in ``layout.state``)."""
+        try:
+            return self.states[:, self.layout.state.index(name)]
+        except ValueError:
+            raise KeyError(f"{name!r}: model {self.model} has states "
+                           f"{', '.join(self.layout.state)}") from None
+
+    x = property(lambda self: self.series("delta_x"))
+    y = property(lambda self: self.series("delta_y"))
+    theta = property(lambda self: self.series("theta"))
+    xdot = property(lambda self: self.series("delta_x_dot"))
+    ydot = property(lambda self: self.series("delta_y_dot"))
+    thetadot = property(lambda self: self.series("theta_dot"))
+
+    @property
+    def model_states(self) -> np.ndarray:
+        """(n, model state): the states without the appended COM orbit."""
+        return self.states[:, :self.layout.n_state]
+
+    @property
+    def orbit(self) -> np.ndarray:
+        """(n, 4): the COM's inertial X, Y [m] and VX, VY [m/s] (circular-orbit models)."""
+        m = self.layout
+        if not has_com_orbit(m.index):
+            raise AttributeError(f"model {self.model} integrates r and nu itself: see "
+                                 f"res.series('r'), res.series('nu')")
+        return self.states[:, m.n_state:m.n_state + 4]
+
+    @property
+    def altitude(self) -> np.ndarray:
+        """Altitude of the reference point (the boom's COM) above R_E [m], per sample."""
+        if has_com_orbit(self.layout.index):
+            return np.hypot(self.orbit[:, 0], self.orbit[:, 1]) - R_EARTH
+        return self.series("r") - R_EARTH
 
     @property
     def faithful(self) -> bool:
@@ -105,30 +171,35 @@ class SimResult:
             ``simulate(..., check=True)`` returns; this result itself when the
             run did not finish with status "ok".
         """
-        from .simulation import estimate_error
+        from tethersim.engine.simulate import estimate_error
         return estimate_error(self)
 
     @property
-    def cfg(self) -> np.ndarray:
-        cfg = np.zeros(2, dtype=np.int64)
-        cfg[CFG_MODEL] = model_index(self.model)
-        cfg[CFG_PER_BODY] = 1 if self.satellite.density_mode == "per-body" else 0
-        return cfg
+    def per_body(self) -> bool:
+        """True when each body sees the air density at its own altitude."""
+        return self.satellite.density_mode == "per-body"
+
+    @property
+    def parameters(self) -> np.ndarray:
+        """The parameter vector the run used (the model's PARAMETERS order)."""
+        return parameter_vector(self.satellite, self.model)
 
     # --- derived quantities ----------------------------------------------------
     @cached_property
     def forces(self) -> np.ndarray:
-        """Generalized force of each family (n, 7, 3): N, N, N m (families in FAMILIES)."""
-        return family_forces_series(self.cfg, self.states, parameter_vector(self.satellite))
+        """Generalized force of each family on each coordinate (n, families, coordinates).
+
+        SI: N on lengths, N m on angles; families in ``layout.families``.
+        """
+        return family_forces_series(self.layout.index, self.per_body, self.states,
+                                    self.parameters)
 
     def tether_tensions(self) -> np.ndarray:
         """Spring tension of tethers 1 and 2 (n, 2) [N], zero while slack (Eqs 3.35-3.36)."""
         s = self.satellite
-        th, dx, dy = self.theta, self.x, self.y
-        lam1 = np.hypot(s.b * np.sin(th) - dx, s.b * np.cos(th) - dy)
-        lam2 = np.hypot(-s.a * np.sin(th) - dx, -s.a * np.cos(th) - dy)
-        return np.column_stack([s.E1 * np.maximum(lam1 / s.l10 - 1, 0),
-                                s.E2 * np.maximum(lam2 / s.l20 - 1, 0)])
+        g = tether_margin_series(self.layout.index, self.states, self.parameters)
+        return np.column_stack([s.E1 * np.maximum(g[:, 0] / s.l10, 0),
+                                s.E2 * np.maximum(g[:, 1] / s.l20, 0)])
 
     def inertial_positions(self) -> dict:
         """Inertial (GCE-plane) positions [m] of "tip-mass", "bus", "balloon": (n, 2) each.
@@ -158,10 +229,12 @@ class SimResult:
         residual measures integration error (and that of Simpson's rule on the
         samples: sample the run finely, well below the tether period, ~70 s).
         """
-        h = jacobi_series(self.cfg, self.states, parameter_vector(self.satellite))
+        m = self.layout
+        h = jacobi_series(m.index, self.states, self.parameters)
         Q = self.forces
-        idx = [FAMILIES.index(f) for f in DISSIPATIVE]
-        power = np.einsum("ifk,ik->i", Q[:, idx, :], self.states[:, 3:6])
+        idx = [m.families.index(f) for f in DISSIPATIVE]
+        rates = self.states[:, m.n_coordinates:m.n_state]
+        power = np.einsum("ifk,ik->i", Q[:, idx, :], rates)
         from scipy.integrate import cumulative_simpson  # lazy: 0.4 s of import time
 
         work = cumulative_simpson(power, x=self.t, initial=0.0)

@@ -22,7 +22,8 @@ from tethersim.engine.integrators.select import specialised
 from tethersim.engine.linearise import rk4_amplification
 from tethersim.engine.result import SimResult
 from tethersim.model.registry import DEFAULT_MODEL, model_index
-from tethersim.model.satellite import Satellite, parameter_vector
+from tethersim.model.inputs import initial_model_state, parameter_vector
+from tethersim.model.satellite import Satellite
 
 METHODS = ("adaptive", "rk4")
 STEPS_PER_PERIOD = 300  # thesis default: 1500 steps for 5 periods (p. 5-1)
@@ -149,7 +150,7 @@ def _bar(total, desc, progress):
 
 def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
     m, per_body = _kernel_args(sat, model)
-    p = parameter_vector(sat)
+    p = parameter_vector(sat, model)
     pw = p.copy()
     h = periods * sat.period / steps
     if warn and (amp := rk4_amplification(sat, h, model)) > 1.0:
@@ -158,7 +159,7 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
             f"(spurious amplification per step {amp:.4g} > 1): a tether oscillation will grow "
             f"numerically. "
             f"Use more steps or method='adaptive'."), stacklevel=3)
-    y = initial_state(sat.initial, sat.r0, sat.r0 * sat.omega)
+    y = initial_state(m, initial_model_state(sat, model), sat.r0, sat.r0 * sat.omega)
     out_t = np.empty(steps + 1)
     out_y = np.empty((steps + 1, state_size(m)))
     out_t[0], out_y[0] = 0.0, y
@@ -197,10 +198,10 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
 
 def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress) -> SimResult:
     m, per_body = _kernel_args(sat, model)
-    p = parameter_vector(sat)
+    p = parameter_vector(sat, model)
     pw = p.copy()
     t_end = periods * sat.period
-    y = initial_state(sat.initial, sat.r0, sat.r0 * sat.omega)
+    y = initial_state(m, initial_model_state(sat, model), sat.r0, sat.r0 * sat.omega)
     out_t = np.linspace(0.0, t_end, n_out + 1)
     out_y = np.full((n_out + 1, state_size(m)), np.nan)
     out_y[0] = y

@@ -22,7 +22,7 @@ import math
 
 import numpy as np
 
-from tethersim.generated.dispatch import MODEL_NAMES
+from tethersim.model.registry import NAMES, THESIS_VARIANTS
 
 from tethersim.analysis.metrics import SS_FRACTION, steady_state_window
 from tethersim.analysis.outcome import ROW_COLUMNS, outcome
@@ -38,17 +38,17 @@ COLUMNS = (("model", "model"), *ROW_COLUMNS,
 def parse_models(models) -> tuple:
     """Model names from a sequence or a comma-separated string; clear error if unknown.
 
-    Allowed values: generated.dispatch.MODEL_NAMES.  Order is kept (the first
+    Allowed values: tethersim.MODELS.  Order is kept (the first
     model is the reference of the θ differences); repeats are an error.
     """
     if isinstance(models, str):
         models = [m.strip() for m in models.split(",") if m.strip()]
     models = tuple(models)
-    allowed = ", ".join(MODEL_NAMES)
+    allowed = ", ".join(NAMES)
     if not models:
         raise ValueError(f"models: none given; allowed values {allowed}")
     for m in models:
-        if m not in MODEL_NAMES:
+        if m not in NAMES:
             raise ValueError(f"models: unknown model {m!r}; allowed values {allowed}")
     repeated = sorted({m for m in models if models.count(m) > 1})
     if repeated:
@@ -56,7 +56,7 @@ def parse_models(models) -> tuple:
     return models
 
 
-def compare(sat: Satellite, models=MODEL_NAMES, **simulate_kwargs) -> list:
+def compare(sat: Satellite, models=THESIS_VARIANTS, **simulate_kwargs) -> list:
     """[(model, SimResult)] for each model, run with the same ``simulate`` arguments.
 
     ``simulate_kwargs`` go to :func:`tethersim.engine.simulate.simulate` (periods,

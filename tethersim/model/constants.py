@@ -11,3 +11,4 @@ R_EARTH = 6378.137e3  # m, WGS-84 equatorial radius
 OMEGA_EARTH = 7.292115e-5  # rad/s, Earth's rotation rate (Vallado Eq 3-39 value)
 CD_DEFAULT = 2.0  # drag coefficient of every body (thesis p. 3-9)
 TETHER_AREA = 1e-6  # m^2: the thesis's assumed 1 mm^2 cross-section (p. 3-1)
+J2_EARTH = 1.08262668e-3  # 1, Earth's second zonal harmonic (EGM-96, Vallado Table D-3)

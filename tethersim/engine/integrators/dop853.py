@@ -19,7 +19,7 @@ import math
 import numpy as np
 from numba import literally, njit
 
-from tethersim.engine.dynamics import derivative, tether_margins
+from tethersim.engine.dynamics import derivative, model_tether_margins
 from tethersim.engine.integrators import switching
 from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.steps import (N_K, dop853_dense, dop853_error_norm,
@@ -115,8 +115,8 @@ def _dop853_loop(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, ou
             rejected = True
             counters[2] += 1
         if locate:
-            tether_margins(y, p, g0)
-            tether_margins(y_new, p, g1)
+            model_tether_margins(model, y, p, g0)
+            model_tether_margins(model, y_new, p, g1)
             if switching.crossed(g0, g1) >= 0:
                 h_try = switching.locate(1, model, per_body, t, y, f, h_try, p, pw, work, y_new,
                                          g0, g1, g[2])
@@ -150,10 +150,10 @@ def dop853_run(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, out_
     Parameters
     ----------
     model : int
-        Model index (generated.dispatch.MODEL_NAMES); each value compiles
+        Model index (tethersim.model.registry order); each value compiles
         (once, cached on disk) its own loop.
     per_body : bool
-        Air density at each body's own altitude (dynamics.body_densities).
+        Air density at each body's own altitude (dynamics.model_densities).
     t0, t_end : float
         Start and end time [s].
     y : ndarray

@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import literally, njit
 
-from tethersim.engine.dynamics import tether_margins
+from tethersim.engine.dynamics import model_tether_margins
 from tethersim.engine.integrators import switching
 from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.steps import rk4_step
@@ -38,8 +38,8 @@ def rk4_advance(model, per_body, t, y, h, p, pw, work, y_new, g0, g1, g):
     remaining = h
     while remaining > 0.0:
         rk4_step(model, per_body, t, y, remaining, p, pw, work, y_new)
-        tether_margins(y, p, g0)
-        tether_margins(y_new, p, g1)
+        model_tether_margins(model, y, p, g0)
+        model_tether_margins(model, y_new, p, g1)
         if switching.crossed(g0, g1) < 0:
             y[:] = y_new
             break
@@ -92,10 +92,10 @@ def rk4_run(model, per_body, t0, y, h, n_steps, stride, p, pw, locate, out_t, ou
     Parameters
     ----------
     model : int
-        Model index (generated.dispatch.MODEL_NAMES); each value compiles
+        Model index (tethersim.model.registry order); each value compiles
         (once, cached on disk) its own loop.
     per_body : bool
-        Air density at each body's own altitude (dynamics.body_densities).
+        Air density at each body's own altitude (dynamics.model_densities).
     t0, y, h : float, ndarray, float
         Start time, state (advanced in place), step.
     n_steps, stride : int

@@ -78,7 +78,7 @@ def specialised(dispatcher, model: int, args: tuple):
     dispatcher : numba Dispatcher
         A run function whose first argument is the model index.
     model : int
-        Model index (generated.dispatch.MODEL_NAMES).
+        Model index (tethersim.model.registry order).
     args : tuple
         The remaining arguments as they will be passed (their types select
         the signature).

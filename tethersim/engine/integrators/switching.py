@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from numba import njit
 
-from tethersim.engine.dynamics import tether_margins
+from tethersim.engine.dynamics import model_tether_margins
 from tethersim.engine.integrators.steps import dop853_step, rk4_step
 
 RTOL_TAU = 1e-12  # bracket width, relative to the step, at which the search stops
@@ -34,7 +34,7 @@ def _trial(method, model, per_body, t, y, f, tau, p, pw, work, y_new, g):
         rk4_step(model, per_body, t, y, tau, p, pw, work, y_new)
     else:
         dop853_step(model, per_body, t, y, f, tau, p, pw, work[:16], work[16], y_new)
-    tether_margins(y_new, p, g)
+    model_tether_margins(model, y_new, p, g)
 
 
 # Out of line on purpose: switches are rare, and keeping this search (with its

@@ -1,0 +1,66 @@
+"""A satellite as the inputs of one model: its parameter vector and initial state.
+
+Each generated model names its own parameter vector (``Model.parameters``) and
+state (``Model.state``); this module fills them from a :class:`Satellite` by
+name, so a model with another layout (3-D, free orbit) needs no code here
+beyond the values it adds:
+
+* ``I1_roll``, ``I1_pitch``, ``I1_yaw``, ``I2_*`` [kg m²]: principal moments of the
+  tip-mass (1) and bus (2) boxes, thesis Eq 4.4 (I = m · 2A / 12 about every
+  axis) unless the satellite sets ``inertia = "points"`` (all zero);
+* ``J2`` (0 unless the satellite asks for it) and ``R_E`` [m];
+* the out-of-plane initial state (δz, roll φ, yaw ψ and rates), zero unless set;
+* for a free orbit, r = r0 and ν = 0 at t = 0, ṙ = 0 and ν̇ the circular rate
+  (with J2, the rate that keeps an equatorial orbit circular,
+  ν̇² = μ/r³ · (1 + 3/2 J2 (R_E/r)²)).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from tethersim.model.constants import J2_EARTH, MU_EARTH, R_EARTH
+from tethersim.model.registry import get_model
+from tethersim.model.satellite import Satellite, parameters
+
+
+def box_inertias(sat: Satellite) -> dict:
+    """Principal moments [kg m²] of the tip-mass and bus boxes (thesis Eq 4.4)."""
+    if getattr(sat, "inertia", "boxes") == "points":
+        return {f"I{k}_{axis}": 0.0 for k in (1, 2) for axis in ("roll", "pitch", "yaw")}
+    i1, i2 = sat.m1 * 2 * sat.A1 / 12, sat.m2 * 2 * sat.A2 / 12
+    return {f"I{k}_{axis}": v for k, v in ((1, i1), (2, i2))
+            for axis in ("roll", "pitch", "yaw")}
+
+
+def model_values(sat: Satellite) -> dict:
+    """Every named input any model reads, SI."""
+    values = parameters(sat)
+    values.update(box_inertias(sat))
+    values["J2"] = J2_EARTH if getattr(sat, "j2", False) else 0.0
+    values["R_E"] = R_EARTH
+    return values
+
+
+def parameter_vector(sat: Satellite, model: str) -> np.ndarray:
+    """The parameter vector of ``model`` for ``sat`` (the model's PARAMETERS order)."""
+    values = model_values(sat)
+    return np.array([values[n] for n in get_model(model).parameters], dtype=np.float64)
+
+
+def initial_model_state(sat: Satellite, model: str) -> np.ndarray:
+    """The model's own initial state (its STATE order) for ``sat``."""
+    dx, dy, th, dxd, dyd, thd = sat.initial
+    extra = {"delta_z": 0.0, "phi": 0.0, "psi": 0.0, "delta_z_dot": 0.0, "phi_dot": 0.0,
+             "psi_dot": 0.0}
+    extra.update(getattr(sat, "initial_3d", {}) or {})
+    values = {"delta_x": dx, "delta_y": dy, "theta": th, "delta_x_dot": dxd,
+              "delta_y_dot": dyd, "theta_dot": thd, **extra}
+    m = get_model(model)
+    if m.orbit == "free":
+        r = sat.r0
+        j2 = J2_EARTH if getattr(sat, "j2", False) else 0.0
+        values.update(r=r, nu=0.0, r_dot=0.0,
+                      nu_dot=math.sqrt(MU_EARTH / r**3 * (1 + 1.5 * j2 * (R_EARTH / r) ** 2)))
+    return np.array([values[n] for n in m.state], dtype=np.float64)
