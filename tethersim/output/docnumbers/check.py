@@ -78,10 +78,13 @@ def locate(text: str, at) -> tuple:
     """
     pos = 0
     for a in at:
-        i = text.find(a, pos)
-        if i < 0:
+        # a space in an anchor matches any run of white space (docs wrap their lines)
+        m = re.compile(r"\s+".join(re.escape(w) for w in re.split(r"\s+", a))
+                       + (r"\s*" if a[-1:].isspace() else "")).search(text, pos)
+        if m is None:
             raise LookupError(f"anchor {a!r} not found (after offset {pos})")
-        pos = i + len(a)
+        pos = m.end()
+    pos += len(text[pos:]) - len(text[pos:].lstrip(" "))
     m = NUMBER.match(text, pos)
     if m is None:
         raise LookupError(f"no number right after {at[-1]!r}: {text[pos:pos + 30]!r}")

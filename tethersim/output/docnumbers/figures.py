@@ -137,3 +137,8 @@ for _f, _c in ((1, "3e-4"), (10, "3e-3"), (30, "9e-3"), (70, "0.021"), (100, "0.
     if _f <= 70:
         FIGURES.append(Figure(H, (_SCAN, _row, " | ", " | ", " | ", " | "),
                               f"scan_inverted_{_f}"))
+
+from tethersim.output.docnumbers import figures_more as _more  # noqa: E402
+
+QUANTITIES.update(_more.QUANTITIES)
+FIGURES += _more.FIGURES
