@@ -108,7 +108,6 @@ FIGURES += [Figure(README, ("±0.05 rad after ",), "run_settling_orbits", slow=T
             Figure(README, ("SatI, 50 orbits: δx ", "δy "), "run_delta_y", slow=True),
             Figure(README, ("SatI, 50 orbits: δx ", "θ "), "run_theta", slow=True),
             Figure(H, (_NOM, "θ_ss "), "hl_nominal_ss", slow=True),
-            Figure(H, (_NOM, "mean "), "hl_nominal_mean", slow=True),
             Figure(H, (_NOM, "mean ", "mean "), "hl_nominal_mean", slow=True),
             Figure(H, (_NOM, "settled in "), "hl_nominal_settling", slow=True),
             Figure(H, (_NOM, "settled in ", "h ("), "hl_nominal_settling_printed", slow=True),
