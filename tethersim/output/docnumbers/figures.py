@@ -142,3 +142,8 @@ from tethersim.output.docnumbers import figures_more as _more  # noqa: E402
 
 QUANTITIES.update(_more.QUANTITIES)
 FIGURES += _more.FIGURES
+
+from tethersim.output.docnumbers import figures_cases as _cases  # noqa: E402
+
+QUANTITIES.update(_cases.QUANTITIES)
+FIGURES += _cases.FIGURES

@@ -15,7 +15,7 @@ import numpy as np
 from tethersim.analysis.equilibrium import find_equilibrium
 from tethersim.analysis.metrics import wrap
 from tethersim.engine.linearise import rk4_amplification, rk4_max_step
-from tethersim.model.params import edge_value, with_values
+from tethersim.model.params import edge_value, with_values  # noqa: F401 (edge_value: figures)
 from tethersim.model.presets import load_preset
 
 FAITHFUL_STEP = (50, 10_000)  # Sec 5.2: 50 orbits in 10,000 steps
