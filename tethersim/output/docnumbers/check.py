@@ -71,6 +71,18 @@ def parse(text: str) -> tuple:
 def locate(text: str, at) -> tuple:
     """Position and text of the number after the anchors ``at`` in ``text``.
 
+    Parameters
+    ----------
+    text : str
+        The doc.
+    at : sequence of str
+        Anchors, found one after the other; white space matches any white space.
+
+    Returns
+    -------
+    tuple of (int, str)
+        Offset of the number in ``text`` and the number as printed.
+
     Raises
     ------
     LookupError
@@ -92,7 +104,27 @@ def locate(text: str, at) -> tuple:
 
 
 def agrees(printed: str, value: float, absolute: bool = False) -> bool:
-    """True when ``value`` rounds to the ``printed`` number at its printed precision."""
+    """True when ``value`` rounds to the ``printed`` number at its printed precision.
+
+    Parameters
+    ----------
+    printed : str
+        The number as the doc prints it.
+    value : float
+        The computed value, in the doc's unit.
+    absolute : bool, optional
+        Compare magnitudes (the doc gives the sign in words).
+
+    Returns
+    -------
+    bool
+        Whether ``|value - printed|`` is within half a unit of the last printed digit.
+
+    Examples
+    --------
+    >>> agrees("80.97", 80.9714), agrees("88", 80.9714)
+    (True, False)
+    """
     number, half = parse(printed)
     if absolute:
         number, value = abs(number), abs(value)
@@ -110,7 +142,19 @@ _NOT_FIGURES = re.compile(r"(?:p\.|pp\.|Eqs?|Figs?|Figures?|Tables?|Sec|issue|E|
 
 
 def numbers_in(text: str) -> list:
-    """(offset, printed) of every number in prose and tables, outside code and references."""
+    """Every number in prose and tables, outside code, headings and references.
+
+    Parameters
+    ----------
+    text : str
+        A markdown doc.
+
+    Returns
+    -------
+    list of (int, str)
+        Offset and printed text of each number (page, equation, figure and table
+        numbers, code spans and blocks, and headings left out).
+    """
     out, in_code = [], False
     offset = 0
     for line in text.splitlines(keepends=True):

@@ -13,7 +13,6 @@ from tethersim.output.docnumbers.check import Figure
 
 H, TB, README, CONV = "docs/headlines.md", "docs/torque-balance.md", "README.md", \
     "docs/conventions.md"
-DEC = 86400 / 3600  # hours per day
 
 
 def _nominal():

@@ -71,6 +71,19 @@ def fold_factor(model: str = "derived", tol: float = 1e-3) -> float:
     Bisection on the factor: the branch exists at f when it can be continued
     from the last factor where it existed, in four steps, each landing on a
     stable equilibrium within 0.1 rad of the last.
+
+    Parameters
+    ----------
+    model : str
+        Model variant (the thesis damper: ``derived`` or ``printed``).
+    tol : float
+        Width of the final bracket (in units of the damping factor).
+
+    Returns
+    -------
+    float
+        The largest factor (to ``tol``) at which the inverted equilibrium of SatI,
+        with c1, c2 times that factor, still exists and is stable.
     """
     lo, hi = 1.0, 1000.0
     eq = branch(model, math.pi, lo)
