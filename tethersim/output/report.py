@@ -108,8 +108,10 @@ def section_nominal(page: Page, periods: float) -> dict:
         + "".join(figs))
     s1 = outcome(results["satI"], forces=False).metrics
     page.fact("SatI with damping: mean pitch 0.02 rad, settled after a little over two days",
-              "5-7", f"mean pitch {s1.mean_pitch:+.3f} rad, settled in "
-              f"{s1.settling_time / 3600:.1f} h ({s1.settling_time / 86400:.2f} days)",
+              "5-7", f"mean pitch {s1.mean_pitch:+.3f} rad, " + (
+                  f"settled in {s1.settling_time / 3600:.1f} h "
+                  f"({s1.settling_time / 86400:.2f} days)" if math.isfinite(s1.settling_time)
+                  else f"not settled within {periods:g} orbits"),
               "yes" if 36 * 3600 <= s1.settling_time <= 72 * 3600 else "no",
               "SatI's damping was chosen for this (preset comment); the settling time is a "
               "consequence of c, which the thesis's lost table held")
