@@ -60,6 +60,7 @@ QUANTITIES = {
     "max_step_x10": lambda: q.scan_row(10.0, "max_step"),
     "amp_nominal": lambda: q.scan_row(1.0, "amp"),
     "air_speed": q.air_speed,
+    "amp_moduli": lambda: q.rk4_amplification(q.sat(factor=0.0), q.step(q.MODULI_STEP), "derived"),
 }
 for _f in (1, 10, 100, 1000, 10000):
     QUANTITIES[f"upright_{_f}"] = (lambda f: lambda: q.branch("derived", 0.0, float(f)).theta)(_f)
@@ -114,6 +115,10 @@ FIGURES = [
     Figure(H, ("it lengthens it slightly** (", "s → "), "max_step_x10"),
     Figure(H, ("| nominal (5-7) |", "amplification "), "amp_nominal"),
     Figure(H, ("| damping ×10 (5-13) |", "amplification "), "amp_x10"),
+    Figure(H, ("up to the linear limit\n(",), "rk4_limit"),
+    Figure(H, ("up to the linear limit\n(", "s and "), "max_step_x10"),
+    Figure(H, ("| moduli only (5-2) |", "amplification "), "amp_moduli"),
+    Figure("docs/numbers.md", ("puts the fold at\n×",), "fold"),
     Figure(CONV, ("air speed of the COM is (ω − ω_E) r0 ≈ ",), "air_speed"),
     Figure(README, ("1500 steps) and ",), "faithful_step"),
     Figure(README, ("come out exactly: ",), "moduli_step"),
