@@ -16,7 +16,7 @@ from __future__ import annotations
 import html
 import math
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -25,9 +25,9 @@ from tethersim.model import params
 from tethersim.analysis.metrics import steady_state_window
 from tethersim.analysis.outcome import outcome
 from tethersim.model.presets import load_preset
+from tethersim.output.page import Page, pre as _pre, table as _table, write_html
 
 SATS = ("satI", "satII", "dumbsat")
-FACTS_SOURCE = "shared/thesis/facts.md"
 
 
 @dataclass(frozen=True)
@@ -55,38 +55,6 @@ MAPS = (
     MapSpec("dumbsat", "5.27", ("E1", 0.0, 0.06), ("E2", 0.0, 0.06)),
     MapSpec("dumbsat", "5.28", ("c1", 0.0, 0.06), ("c2", 0.0, 0.06)),
 )
-
-
-@dataclass
-class Page:
-    """HTML fragments, figures and the facts table, filled in section by section."""
-
-    out: Path
-    sections: list = field(default_factory=list)
-    facts: list = field(default_factory=list)  # (statement, page, ours, agrees, why)
-    timings: list = field(default_factory=list)
-
-    def img(self, path: Path, caption: str) -> str:
-        rel = Path(path).relative_to(self.out)
-        return (f'<figure><img src="{html.escape(str(rel))}" style="max-width:100%">'
-                f"<figcaption>{html.escape(caption)}</figcaption></figure>")
-
-    def add(self, title: str, body: str) -> None:
-        self.sections.append((title, body))
-
-    def fact(self, statement, page, ours, agrees, why="") -> None:
-        self.facts.append((statement, page, ours, agrees, why))
-
-
-def _pre(text: str) -> str:
-    return f"<pre>{html.escape(text)}</pre>"
-
-
-def _table(header, rows) -> str:
-    h = "".join(f"<th>{html.escape(str(c))}</th>" for c in header)
-    body = "".join("<tr>" + "".join(f"<td>{html.escape(str(c))}</td>" for c in r) + "</tr>"
-                   for r in rows)
-    return f"<table><tr>{h}</tr>{body}</table>"
 
 
 def _g(v, fmt=".3g"):
@@ -134,11 +102,16 @@ def section_nominal(page: Page, periods: float) -> dict:
     page.add("Nominal runs", _table(
         ("satellite", "mean pitch [rad]", "steady pitch [rad]", "settling [h]",
          "settling [orbits]", "balloon trail δx [m]", "δy half-range, last fifth [m]",
-         "converged"), rows) + "".join(figs))
+         "converged"), rows,
+        reasons={"settling [h]": f"no run settled within {periods:g} orbits",
+                 "settling [orbits]": f"no run settled within {periods:g} orbits"})
+        + "".join(figs))
     s1 = outcome(results["satI"], forces=False).metrics
     page.fact("SatI with damping: mean pitch 0.02 rad, settled after a little over two days",
-              "5-7", f"mean pitch {s1.mean_pitch:+.3f} rad, settled in "
-              f"{s1.settling_time / 3600:.1f} h ({s1.settling_time / 86400:.2f} days)",
+              "5-7", f"mean pitch {s1.mean_pitch:+.3f} rad, " + (
+                  f"settled in {s1.settling_time / 3600:.1f} h "
+                  f"({s1.settling_time / 86400:.2f} days)" if math.isfinite(s1.settling_time)
+                  else f"not settled within {periods:g} orbits"),
               "yes" if 36 * 3600 <= s1.settling_time <= 72 * 3600 else "no",
               "SatI's damping was chosen for this (preset comment); the settling time is a "
               "consequence of c, which the thesis's lost table held")
@@ -156,27 +129,40 @@ def section_nominal(page: Page, periods: float) -> dict:
     return results
 
 
+def _yes_no(d: dict) -> str:
+    return ", ".join(f"{m} {'yes' if ok else 'no'}" for m, ok in d.items()) or "—"
+
+
 def section_headlines(page: Page) -> list:
-    from tethersim.experiments.headlines import format_verdicts, run_headlines, verdicts
+    from tethersim.experiments.headlines import run_headlines, verdicts
     from tethersim.output.plots.headlines import plot_cases
 
     rows = run_headlines(progress=False)
     vs = verdicts(rows)
     figs = plot_cases(rows, page.out / "img")
+    cells = [(v["case"], v["page"], v["claim"], f"{v['converged_outcome']} "
+              f"({v['converged_model']})", _yes_no(v["converged_claim_holds"]),
+              _yes_no(v["faithful_reproduces"]),
+              "yes" if v["step_dependent"] else "no", v["step_notes"],
+              "yes" if v["model_dependent"] else "no", v["verdict"]) for v in vs]
     page.add("SatI headline results: faithful RK4 against converged integration",
              "<p>Each thesis claim rerun with the thesis's fixed RK4 step, half and a quarter of "
              "it, and adaptive DOP853, under the derived, printed and objective-damper models. "
-             "Analysis and scans: docs/headlines.md.</p>" + _pre(format_verdicts(vs))
+             "Analysis and scans: docs/headlines.md.</p>"
+             + _table(("case", "page", "thesis", "converged outcome (model)",
+                       "claim holds, converged", "claim holds, thesis's RK4 step",
+                       "step-dependent", "why step-dependent", "model-dependent", "verdict"),
+                      cells, reasons={"why step-dependent": "no run depends on the step"})
              + "".join(page.img(p, p.stem.replace("_", " ")) for p in figs))
     for v in vs:
         if not v.get("claim"):
             continue
         holds = v["converged_claim_holds"]
-        page.fact(v["claim"], v["page"], v["converged_outcome"],
+        # the four "modulus 10 % off" cases share a claim: the case names the statement
+        page.fact(f"{v['case']}: {v['claim']}", v["page"], v["converged_outcome"],
                   {"survives": "yes", "does not survive": "no"}.get(v["verdict"], "partly"),
                   f"{v['verdict']}" + (f"; {v['step_notes']}" if v["step_notes"] else "")
-                  + ("; models: " + ", ".join(f"{m} {'yes' if ok else 'no'}"
-                                              for m, ok in holds.items())))
+                  + "; models: " + _yes_no(holds))
     return rows
 
 
@@ -208,7 +194,7 @@ def section_forces(page: Page, periods: float) -> None:
     growth = [x / n - 1 for x, n in zip(peaks["x10"], peaks["nominal"])]
     page.fact("Damping x 10 raises the largest forces by about 50 %", "5-14",
               "change of the largest force: " + ", ".join(
-                  f"{c} {100 * g:+.0f} %" for c, g in zip(("x", "y", "θ"), growth)),
+                  f"{c} {round(100 * g) or 0:+d} %" for c, g in zip(("x", "y", "θ"), growth)),
               "yes" if all(0.25 <= g <= 1.0 for g in growth) else "no",
               "a ratio, so independent of the lost units; ours barely changes because the "
               "springs and drag dominate and the dampers stay small")
@@ -292,7 +278,11 @@ def section_maps(page: Page, grid: int, periods: float, workers, progress) -> li
              + _table(("satellite", "thesis figure", "axes", "classes (converged)",
                        "band slope E2/E1", "predicted vs simulated: same stable verdict",
                        "same class", "faithful differs at", "faithful vs converged: same class"),
-                      summary) + "".join(body))
+                      summary, reasons={
+                          "band slope E2/E1": "no stable band on these grids (c1 x c2 maps "
+                                              "have none by construction)",
+                          "faithful differs at": "the thesis's RK4 step gives the converged "
+                                                 "class at every point"}) + "".join(body))
     return summary
 
 
@@ -320,7 +310,8 @@ def section_torque_balance(page: Page, maps: list) -> None:
                      f"map, the balance puts the band at {exact:.3g} ≈ b/a"))
     page.add("Why E2/E1 ≈ b/a: torque balance (docs/torque-balance.md)", _table(
         ("satellite", "b/a", "formula TB4", "exact balanced E2/E1", "preset E2/E1",
-         "sweep band slope"), rows))
+         "sweep band slope"), rows,
+        reasons={"sweep band slope": "no stable band on the E1 x E2 grids of this report"}))
 
 
 def section_facts(page: Page) -> None:
@@ -331,36 +322,6 @@ def section_facts(page: Page) -> None:
         page.fact(f"Step size {printed} s for {periods} periods in {n} steps", pg, f"{h:.4g} s",
                   "yes" if abs(h - printed) / printed < 0.005 else "no",
                   "needs R_E = 6378.137 km, not the 6375 km of p. 3-3")
-
-
-def write_html(page: Page) -> Path:
-    css = ("body{font-family:sans-serif;max-width:1200px;margin:auto;padding:1em}"
-           "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;"
-           "padding:3px 6px;font-size:13px;vertical-align:top}th{background:#eee}"
-           "pre{background:#f6f6f6;padding:8px;overflow-x:auto;font-size:12px}"
-           "figure{margin:1em 0}figcaption{font-size:12px;color:#555}"
-           ".yes{background:#e8f5e9}.no{background:#ffebee}.partly{background:#fff8e1}")
-    facts = "".join(
-        f'<tr class="{html.escape(a)}"><td>{html.escape(s)}</td><td>{html.escape(str(p))}</td>'
-        f"<td>{html.escape(o)}</td><td>{html.escape(a)}</td><td>{html.escape(w)}</td></tr>"
-        for s, p, o, a, w in page.facts)
-    toc = "".join(f'<li><a href="#s{i}">{html.escape(t)}</a></li>'
-                  for i, (t, _) in enumerate(page.sections))
-    secs = "".join(f'<h2 id="s{i}">{html.escape(t)}</h2>{b}'
-                   for i, (t, b) in enumerate(page.sections))
-    timing = ", ".join(f"{t} {s:.0f} s" for t, s in page.timings)
-    doc = (f"<!doctype html><html><head><meta charset='utf-8'><title>tethersim report</title>"
-           f"<style>{css}</style></head><body><h1>tethersim: thesis chapter 5, recomputed</h1>"
-           f"<p>Maramba (AFIT 2005), rebuilt. Conventions: docs/conventions.md; errata of the "
-           f"printed equations: docs/errata.md; metrics: docs/metrics.md. Presets are "
-           f"reconstructions (the thesis's Table 4.1 was lost): see their comments.</p>"
-           f"<h2>The thesis's statements beside ours ({FACTS_SOURCE})</h2>"
-           f"<table><tr><th>thesis</th><th>page</th><th>tethersim</th><th>agrees</th>"
-           f"<th>why / notes</th></tr>{facts}</table><ul>{toc}</ul>{secs}"
-           f"<p style='font-size:12px;color:#777'>Section wall times: {timing}.</p></body></html>")
-    path = page.out / "index.html"
-    path.write_text(doc)
-    return path
 
 
 def build_report(out, grid: int = 41, periods: float = 50.0, workers=None,

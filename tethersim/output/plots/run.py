@@ -1,8 +1,17 @@
-"""PNG plots of a result: θ, δx, δy against time (orbits below, hours above)."""
+"""PNG plots of a result: θ, δx, δy against time (orbits below, hours above).
+
+The pitch panel marks θ_ss, the thesis's ±0.05 rad band about it and the settling
+time.  The balloon's taut-tether bounce (period ~70-80 s) is far faster than the
+plot's resolution and often than the sampling, so δx and δy are drawn as their
+range (rolling min-max) and mean over two tether periods, with an inset zoom of
+the first two orbits, where that oscillation is large.
+"""
 from __future__ import annotations
 
 import math
 from pathlib import Path
+
+import numpy as np
 
 from tethersim.analysis.metrics import SETTLING_TOL
 from tethersim.analysis.outcome import outcome
@@ -11,6 +20,70 @@ from tethersim.engine.result import SimResult
 FAST_PNG = {"compress_level": 1}  # zlib level 1: a third of the encode time, ~1.3x the bytes
 PANELS = (("theta", "pitch θ [rad]"), ("x", "balloon δx [m] (+x: wake)"),
           ("y", "balloon δy [m] (+y: up)"))
+
+
+ZOOM_ORBITS = 2.0  # inset: the first orbits, where the tether bounce is large
+
+
+def tether_period(res: SimResult) -> float:
+    """Period [s] of the fastest taut-tether mode of the run's satellite (NaN if none)."""
+    from tethersim.engine.linearise import taut_tether_modes
+
+    w = float(np.max(np.abs(np.imag(taut_tether_modes(res.satellite)))))
+    return 2 * math.pi / w if w > 0 else math.nan
+
+
+def envelope(t, y, window: float) -> tuple:
+    """Rolling (min, mean, max) of ``y`` over ``window`` seconds, centred.
+
+    Parameters
+    ----------
+    t, y : ndarray
+        Sample times [s] (uniform or not) and values.
+    window : float
+        Width of the window [s]; at least three samples are taken.
+
+    Returns
+    -------
+    tuple of ndarray
+        Lower envelope, rolling mean and upper envelope, each the size of ``y``.
+    """
+    y = np.asarray(y, float)
+    dt = float(np.median(np.diff(t))) if len(t) > 1 else window
+    n = max(3, int(math.ceil(window / dt)) | 1)  # odd, so the window is centred
+    if y.size < n:
+        return y, y, y
+    pad = np.pad(y, n // 2, mode="edge")
+    win = np.lib.stride_tricks.sliding_window_view(pad, n)
+    return win.min(axis=1), win.mean(axis=1), win.max(axis=1)
+
+
+def _draw_fast(ax, res, orbits, y, label, zoom: bool):
+    """δx or δy as a min-max band and a mean over two tether periods (+ an inset zoom)."""
+    tp = tether_period(res)
+    if not math.isfinite(tp) or res.t.size < 10:
+        ax.plot(orbits, y, lw=0.8)
+        return
+    lo, mean, hi = envelope(res.t, y, 2 * tp)
+    ax.fill_between(orbits, lo, hi, color="tab:blue", alpha=0.3, lw=0,
+                    label=f"range over 2 tether periods (2 × {tp:.0f} s)")
+    ax.plot(orbits, mean, lw=0.9, color="tab:blue", label="mean over 2 tether periods")
+    ax.legend(loc="lower right", fontsize=8)
+    if not zoom or orbits[-1] < 3 * ZOOM_ORBITS:
+        return
+    first = orbits <= ZOOM_ORBITS
+    # room for the inset: the data right of mid-axis stay in the lower 45 %
+    right = orbits >= orbits[0] + 0.5 * (orbits[-1] - orbits[0])
+    y0, y1 = ax.get_ylim()
+    ax.set_ylim(y0, max(y1, y0 + (float(np.nanmax(hi[right])) - y0) / 0.45))
+    ins = ax.inset_axes([0.55, 0.6, 0.43, 0.32])
+    ins.fill_between(orbits[first], lo[first], hi[first], color="tab:blue", alpha=0.3, lw=0)
+    ins.plot(orbits[first], y[first], lw=0.5, color="tab:blue", alpha=0.8)
+    ins.plot(orbits[first], mean[first], lw=0.9, color="k")
+    ins.set_title(f"first {ZOOM_ORBITS:g} orbits (samples every "
+                  f"{float(np.median(np.diff(res.t))):.0f} s)", fontsize=7)
+    ins.tick_params(labelsize=7)
+    ins.grid(alpha=0.3)
 
 
 def _hours_on_top(ax, period):
@@ -37,7 +110,10 @@ def plot_result(res: SimResult, out_dir, prefix: str = "") -> list:
         fig, ax = plt.subplots(figsize=(10, 4))
         fig.subplots_adjust(left=0.09, right=0.97, top=0.78, bottom=0.13)
         for a in (ax, ax_all):
-            a.plot(orbits, getattr(res, attr), lw=0.8)
+            if attr == "theta":
+                a.plot(orbits, res.theta, lw=0.8)
+            else:
+                _draw_fast(a, res, orbits, getattr(res, attr), label, zoom=True)
             a.set_ylabel(label)
             a.grid(alpha=0.3)
         if attr == "theta":

@@ -1,11 +1,20 @@
-"""Stability maps of a 2-D sweep (thesis Figures 5.13, 5.21-5.23, 5.27-5.28)."""
+"""Stability maps of a 2-D sweep (thesis Figures 5.13, 5.21-5.23, 5.27-5.28).
+
+The steady-pitch panel's colour scale follows the data: symmetric about 0 up
+to the larger of the 2nd and 98th percentiles of |θ_ss| (values beyond are
+clipped, the colour bar's arrows say so), linear when that is within a few
+times the ±0.05 rad band and a symmetric log (linear inside the band) when the
+map spans decades; the band's edges are marked on the colour bar.
+"""
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
 
 from tethersim.analysis.classify import CLASS_COLORS, CLASSES, STABLE
+from tethersim.analysis.metrics import SETTLING_TOL
 from tethersim.output.plots.run import FAST_PNG
 
 
@@ -15,6 +24,50 @@ def _edges(v):
         return np.array([v[0] - 0.5, v[0] + 0.5])
     mid = 0.5 * (v[1:] + v[:-1])
     return np.concatenate([[2 * v[0] - mid[0]], mid, [2 * v[-1] - mid[-1]]])
+
+
+def pitch_scale(ss) -> tuple:
+    """Colour norm, colour-bar label and clipping of a steady-pitch map.
+
+    Parameters
+    ----------
+    ss : ndarray
+        Steady-state pitch [rad]; NaN where there is none.
+
+    Returns
+    -------
+    tuple of (matplotlib.colors.Normalize, str, str)
+        The norm, the colour-bar label, and the colour bar's ``extend`` ("neither",
+        "both", ...).
+    """
+    from matplotlib.colors import Normalize, SymLogNorm
+
+    v = np.asarray(ss, float)
+    v = v[np.isfinite(v)]
+    if v.size == 0:
+        return Normalize(-SETTLING_TOL, SETTLING_TOL), "steady-state pitch θ_ss [rad]", "neither"
+    lim = float(max(abs(np.percentile(v, 2)), abs(np.percentile(v, 98))))
+    lim = min(max(lim, SETTLING_TOL), math.pi)
+    clipped = bool(np.any(np.abs(v) > lim * (1 + 1e-9)))
+    extend = "both" if clipped else "neither"
+    if lim > 4 * SETTLING_TOL:
+        norm = SymLogNorm(linthresh=SETTLING_TOL, linscale=1.0, vmin=-lim, vmax=lim, base=10)
+        scale = f"symmetric log, linear within ±{SETTLING_TOL:g}"
+    else:
+        norm, scale = Normalize(-lim, lim), "linear"
+    label = scale + (f"; clipped at ±{lim:.3g} rad (2-98 % of |θ_ss|)" if clipped else "")
+    return norm, label, extend
+
+
+def _pitch_ticks(norm) -> list:
+    """Plain ticks for the steady-pitch colour bar, within its range."""
+    lim = norm.vmax
+    from matplotlib.ticker import MaxNLocator
+
+    cand = [0.0, SETTLING_TOL, 0.1, 0.3, 1.0, 3.0] if lim > 4 * SETTLING_TOL else \
+        [abs(v) for v in MaxNLocator(6, symmetric=True).tick_values(-lim, lim)]
+    pos = sorted({round(c, 6) for c in cand if c <= lim * (1 + 1e-9)})
+    return sorted({-c for c in pos} | set(pos))
 
 
 def plot_stability_map(ds, path, *, title: str = "", nominal: dict | None = None,
@@ -32,6 +85,7 @@ def plot_stability_map(ds, path, *, title: str = "", nominal: dict | None = None
     import matplotlib.pyplot as plt
     from matplotlib.colors import BoundaryNorm, ListedColormap
     from matplotlib.patches import Patch
+    from matplotlib.ticker import MaxNLocator
 
     yname, xname = ds.stability_class.dims
     x, y = ds[xname].values, ds[yname].values
@@ -44,11 +98,17 @@ def plot_stability_map(ds, path, *, title: str = "", nominal: dict | None = None
     ax.pcolormesh(_edges(x), _edges(y), cls, cmap=cmap, norm=norm)
     # the steady pitch itself shows the band even where it is narrower than the grid
     ss = np.where(ds.done.values & (ds.tumbled.values == 0), ds.steady_state_pitch.values, np.nan)
-    im = ax2.pcolormesh(_edges(x), _edges(y), ss, cmap="coolwarm", vmin=-np.pi / 2, vmax=np.pi / 2)
-    fig.colorbar(im, ax=ax2, label="steady-state pitch θ_ss [rad] (blank: tumbled)")
+    norm, label, extend = pitch_scale(ss)
+    im = ax2.pcolormesh(_edges(x), _edges(y), ss, cmap="coolwarm", norm=norm)
+    cbar = fig.colorbar(im, ax=ax2, extend=extend, ticks=_pitch_ticks(norm))
+    cbar.ax.set_yticklabels([f"{v:+.3g}" if v else "0" for v in cbar.get_ticks()], fontsize=8)
+    cbar.set_label("steady-state pitch θ_ss [rad]")
+    for edge in (-SETTLING_TOL, SETTLING_TOL):
+        cbar.ax.axhline(edge, color="k", lw=1.5)
     if np.nanmin(ss, initial=np.inf) < 0 < np.nanmax(ss, initial=-np.inf) and min(x.size, y.size) > 1:
         ax2.contour(x, y, np.nan_to_num(ss, nan=np.pi), levels=[0.0], colors="k", linewidths=1.0)
-    ax2.set_title("steady-state pitch; black line: θ_ss = 0", fontsize=9)
+    ax2.set_title(f"steady-state pitch (blank: tumbled); black line: θ_ss = 0\ncolours: {label}; "
+                  f"bar lines: the ±{SETTLING_TOL:g} rad band", fontsize=8)
     handles = [Patch(color=c, label=n.replace("_", " ")) for n, c in zip(CLASSES, CLASS_COLORS)]
     if predicted is not None:
         pred = (np.asarray(predicted) == STABLE).astype(float)
@@ -70,6 +130,7 @@ def plot_stability_map(ds, path, *, title: str = "", nominal: dict | None = None
         handles.append(plt.Line2D([], [], marker="*", color="w", mec="k", ms=12, ls="",
                                   label="preset"))
     for a in (ax, ax2):
+        a.xaxis.set_major_locator(MaxNLocator(5))
         a.set_xlim(_edges(x)[[0, -1]])
         a.set_ylim(_edges(y)[[0, -1]])
         a.set_xlabel(f"{xname} [{ds[xname].attrs.get('units', '')}]")
