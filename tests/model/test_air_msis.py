@@ -10,7 +10,7 @@ import numpy as np
 import pymsis
 import pytest
 
-from tethersim import atmosphere
+from tethersim.model import atmosphere
 from tethersim.model.air import AirModel, air_density
 from tethersim.model.air.model import msis_direct
 

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from tethersim import atmosphere
+from tethersim.model import atmosphere
 from tethersim.model.air import solar_cycle_densities
 from tethersim.model.air.check import PUBLISHED_200KM, solar_cycle_table
 

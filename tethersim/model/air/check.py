@@ -12,7 +12,7 @@ import time
 import numpy as np
 from numba import njit
 
-from tethersim import atmosphere
+from tethersim.model import atmosphere
 from tethersim.model.air import grid as _grid
 from tethersim.model.air.model import (SOLAR_CYCLE, SOLAR_CYCLE_EPOCH,
                                        SOLAR_CYCLE_LOCAL_TIME_H, AirModel, msis_direct,

@@ -1,6 +1,6 @@
 """The air record (:class:`AirModel`) and its densities.
 
-``kind = "vallado"`` is the thesis's exponential table (tethersim.atmosphere);
+``kind = "vallado"`` is the thesis's exponential table (tethersim.model.atmosphere);
 ``kind = "nrlmsise00"`` is NRLMSISE-00 through pymsis (``version=0``) on the
 equator (latitude 0: the planar model's orbit is equatorial), at the body's
 longitude and the instant ``epoch + t``.  Solar and geomagnetic indices are
@@ -211,7 +211,7 @@ def air_density(air: AirModel, altitude_m: float, t: float = 0.0,
     """
     h = check_altitude(air, altitude_m)
     if air.kind == "vallado":
-        from tethersim import atmosphere
+        from tethersim.model import atmosphere
         return atmosphere.density(h)
     return float(msis_direct(air, h, float(t), float(longitude_rad)))
 
