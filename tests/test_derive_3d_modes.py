@@ -25,7 +25,7 @@ import pytest
 import tethersim.generated as generated
 from tethersim.generated import layout3d
 
-MODELS = tuple(generated.MODELS_3D)
+MODELS = tuple(n for n, m in generated.MODELS.items() if m.GEOMETRY == "3d")
 R0 = 6.578e6
 MU = 3.986004418e14
 N = math.sqrt(MU / R0**3)
@@ -48,7 +48,7 @@ def params(m=50.0, half_length=5.0, box=(0.0, 0.0, 0.0)):
 
 def jacobian_at_rest(model, p):
     J = np.full((12, 12), np.nan)
-    generated.MODELS_3D[model].jacobian(0.0, np.zeros(12), p, J)
+    generated.MODELS[model].jacobian(0.0, np.zeros(12), p, J)
     return J
 
 
