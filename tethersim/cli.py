@@ -20,15 +20,16 @@ from .models import DEFAULT_MODEL
 PRESET_HELP = "preset name (satI, satII, dumbsat; any case) or path to a satellite .toml file"
 
 
-def _sat(arg):
+def _sat(arg, allow_implausible=False):
     from .presets import resolve
-    return resolve(arg)
+    return resolve(arg, allow_implausible)
 
 
 def _sat_args(args):
     """The satellite of ``args.satellite`` with --set/--scale applied (edge units)."""
     from .params import apply_overrides
-    return apply_overrides(_sat(args.satellite), getattr(args, "set", None) or (),
+    sat = _sat(args.satellite, getattr(args, "allow_implausible", False))
+    return apply_overrides(sat, getattr(args, "set", None) or (),
                            getattr(args, "scale", None) or ())
 
 
@@ -39,6 +40,9 @@ def add_override_args(parser) -> None:
                              "altitude in km, else SI); repeatable")
     parser.add_argument("--scale", action="append", metavar="NAME=FACTOR", default=[],
                         help="multiply a parameter, e.g. --scale c1=10 --scale c2=10; repeatable")
+    parser.add_argument("--allow-implausible", action="store_true",
+                        help="run values outside the plausible ranges (tethersim.plausibility); "
+                             "the summary lists them")
 
 
 def _add_model_arg(parser, note: str = "") -> None:
@@ -581,6 +585,9 @@ def main(argv=None) -> int:
     except (SatelliteError, ValueError, OSError) as exc:
         print(f"tethersim: error: {exc}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:  # Ctrl-C outside a run that keeps its own partial output
+        print("tethersim: interrupted (Ctrl-C)", file=sys.stderr)
+        return 130
 
 
 if __name__ == "__main__":

@@ -24,6 +24,10 @@ from .stability import attitude_jacobian, rk4_max_step
 RESIDUAL_TOL = 1e-10  # largest |acceleration| accepted at an equilibrium [SI]
 
 
+class NoEquilibrium(RuntimeError, ValueError):
+    """No equilibrium exists or none was found; a one-line message (a ValueError for the CLI)."""
+
+
 @dataclass(frozen=True)
 class Equilibrium:
     """delta_x, delta_y [m]; theta [rad]; residual: max |q̈| there [SI]."""
@@ -65,6 +69,11 @@ class Equilibrium:
 def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> Equilibrium:
     """Solve q̈(δx, δy, θ, 0, 0, 0) = 0 from ``guess`` (default: the initial state, θ = 0)."""
     m = model_index(model)
+    if sat.E1 == 0 and sat.E2 == 0:
+        # nothing holds the balloon against drag: the root finder would wander off
+        raise NoEquilibrium("E1 = E2 = 0 N/mm^2: no tether holds the balloon, so drag carries "
+                            "it away and there is no equilibrium; allowed range for an "
+                            "equilibrium: E1 > 0 or E2 > 0")
     p = parameter_vector(sat)
     g = np.array(guess if guess is not None else (sat.initial[0], sat.initial[1], 0.0), float)
     d = np.empty(6)
@@ -82,7 +91,8 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     q = sol.x
     res = float(np.max(np.abs(f(q))))
     if not sol.success and res > RESIDUAL_TOL:
-        raise RuntimeError(f"no equilibrium found from guess {tuple(g)}: {sol.message} "
+        why = " ".join(str(sol.message).split())  # scipy's message spans lines
+        raise NoEquilibrium(f"no equilibrium found from guess {tuple(float(x) for x in g)}: {why} "
                            f"(residual {res:.3g})")
     th = float(wrap(q[2]))
     lam1 = math.hypot(sat.b * math.sin(th) - q[0], sat.b * math.cos(th) - q[1])

@@ -176,7 +176,13 @@ class SimResult:
             "final delta_x [m]": float(self.x[-1]),
             "final delta_y [m]": float(self.y[-1]),
             "status": self.status,
+            **self._implausible_summary(),
         }
+
+    def _implausible_summary(self) -> dict:
+        """The plausibility violations the run was allowed (``allow_implausible``), if any."""
+        found = self.satellite.implausible if self.satellite.allow_implausible else ()
+        return {"implausible inputs (allowed)": "; ".join(found)} if found else {}
 
     # --- exports ---------------------------------------------------------------
     def to_xarray(self):
@@ -186,6 +192,8 @@ class SimResult:
                 for i, (n, u) in enumerate(zip(STATE + ORBIT_COLUMNS, STATE_UNITS + ORBIT_UNITS))}
         attrs = {"satellite": self.satellite.name, "model": self.model, "method": self.method,
                  "label": self.label, "status": self.status,
+                 **{k.split(" (")[0].replace(" ", "_"): v
+                    for k, v in self._implausible_summary().items()},
                  "conventions": "docs/conventions.md: local frame rotating with omega z, "
                                 "COM moves along -x, theta from +y towards +x"}
         for k, v in self.satellite.to_dict().items():
