@@ -251,6 +251,8 @@ def cmd_sweep(args) -> int:
     sat = _sat_args(args)
     axes = [(n, params.parse_grid(n, getattr(args, n))) for n in params.NAMES
             if getattr(args, n) is not None]
+    from .guards import check_sweep
+    check_sweep([len(v) for _, v in axes], [n for n, _ in axes])  # at once, before any work
     if not 1 <= len(axes) <= 2:
         raise ValueError(f"give one or two grids, e.g. --E1 0:0.02:41 --E2 0:0.06:41; got "
                          f"{len(axes)} ({', '.join(n for n, _ in axes) or 'none'})")
@@ -393,7 +395,8 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--periods", type=float, default=50.0, help="orbits to simulate (default 50)")
     run.add_argument("--steps", type=int, default=None,
                      help="RK4: number of steps (default 300 per orbit, as the thesis); "
-                          "adaptive: number of output samples (default 200 per orbit)")
+                          "adaptive: number of output samples (default 200 per orbit); output "
+                          "memory is limited (TETHERSIM_MAX_OUTPUT_BYTES, default 2 GiB)")
     run.add_argument("--method", choices=("adaptive", "rk4"), default="adaptive",
                      help="adaptive DOP853 (default, converged) or fixed-step RK4")
     run.add_argument("--faithful", action="store_true",
@@ -509,7 +512,8 @@ def build_parser() -> argparse.ArgumentParser:
     cmp_.add_argument("--periods", type=float, default=50.0, help="orbits to simulate (default 50)")
     cmp_.add_argument("--steps", type=int, default=None,
                       help="RK4: number of steps (default 300 per orbit); adaptive: number of "
-                           "output samples (default 200 per orbit)")
+                           "output samples (default 200 per orbit); output memory is limited "
+                           "(TETHERSIM_MAX_OUTPUT_BYTES, default 2 GiB)")
     cmp_.add_argument("--method", choices=("adaptive", "rk4"), default="adaptive",
                       help="adaptive DOP853 (default, converged) or fixed-step RK4")
     cmp_.add_argument("--faithful", action="store_true",
