@@ -10,7 +10,9 @@ from __future__ import annotations
 from .point import VARIABLES, run_point
 from .runner import SweepInterrupted, run_sweep
 from .spec import SweepSpec
-from .store import StoreMismatch, open_dataset
+from .lock import StoreLocked
+from .store import StoreMismatch, StoreRepaired, open_dataset
+from .verify import StoreDamaged
 
 
 def sweep(sat, axes: dict, out, **options):
@@ -26,5 +28,6 @@ def sweep(sat, axes: dict, out, **options):
     return run_sweep(spec, out, **run_opts).dataset()
 
 
-__all__ = ["SweepSpec", "SweepInterrupted", "StoreMismatch", "VARIABLES", "open_dataset",
+__all__ = ["SweepSpec", "SweepInterrupted", "StoreMismatch", "StoreLocked", "StoreDamaged",
+           "StoreRepaired", "VARIABLES", "open_dataset",
            "run_point", "run_sweep", "sweep"]
