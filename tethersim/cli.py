@@ -289,6 +289,10 @@ def cmd_sweep(args) -> int:
                                           band_slope=slope))
     for name, n in class_counts(ds).items():
         print(f"  {name:<12} {n}")
+    failed = int((ds.status.values[ds.done.values] != 0).sum())
+    if failed:  # their NaN metrics have a reason: say it, and how to see the message
+        print(f"  {failed} point(s) failed (status attribute: diverged or integrator_failed; "
+              f"metrics NaN): 'tethersim run' one with --set for its message")
     if math.isfinite(slope):
         print(f"  stable band centre: {spec.names[1]} = {slope:.4g} x {spec.names[0]}")
     print("wrote " + ", ".join(str(p) for p in written))

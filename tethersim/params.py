@@ -127,7 +127,13 @@ def parse_assignment(text: str, option: str = "--set") -> tuple:
         raise ValueError(f"{option} {text!r}: expected NAME=VALUE, e.g. E1=0.006")
     name, value = text.split("=", 1)
     name = check_name(name.strip())
-    return name, _float(value.strip(), f"{option} {text}")
+    try:
+        return name, _float(value.strip(), f"{option} {text}")
+    except ValueError as exc:  # say what a good value looks like
+        p = PARAMETERS[name]
+        expected = ("a factor" if option == "--scale" else
+                    f"{name} in {p.unit}, plausible range {p.low:g}..{p.high:g}")
+        raise ValueError(f"{exc} (expected {expected})") from None
 
 
 def apply_overrides(sat: Satellite, sets=(), scales=()) -> Satellite:
