@@ -75,6 +75,8 @@ def cmd_run(args) -> int:
     res = simulate(sat, periods=args.periods, steps=steps, method=method, model=args.model,
                    rtol=args.rtol, locate_switches=locate, check=not args.no_check,
                    progress=None if not args.quiet else False)
+    if _interrupted_early(res):
+        return 130
     res.to_csv(out / "timeseries.csv")
     res.to_netcdf(out / "timeseries.nc")
     written = [out / "timeseries.csv", out / "timeseries.nc"]
@@ -98,6 +100,15 @@ def cmd_run(args) -> int:
         print(f"error: {res.message}", file=sys.stderr)
         return 1
     return 0
+
+
+def _interrupted_early(res) -> bool:
+    """Ctrl-C before a second output sample: nothing to summarise; say so in one line."""
+    if res.status == "interrupted" and res.t.size < 2:
+        print(f"tethersim: interrupted at t = {res.t[-1]:.6g} s, before the first output "
+              f"sample: nothing written", file=sys.stderr)
+        return True
+    return False
 
 
 def cmd_validate(args) -> int:
@@ -210,6 +221,8 @@ def cmd_forces(args) -> int:
         res = simulate(sat, periods=args.periods, model=args.model,
                        samples=max(2, round(SAMPLES_PER_PERIOD * args.periods)),
                        progress=None if not args.quiet else False)
+    if _interrupted_early(res):
+        return 130
     Q = res.forces
     rows = largest_forces(res)
     written = [write_csv(rows, out / "forces.csv")] + plot_forces(res, out, Q=Q)
