@@ -85,6 +85,12 @@ def with_values(sat: Satellite, values: dict) -> Satellite:
     return sat.replace(**{check_name(k): to_si(k, v) for k, v in values.items()})
 
 
+def _shown(text: str) -> str:
+    """The user's text as typed, or escaped (repr) if it holds a line break or control
+    character: an error message stays one line whatever was typed."""
+    return text if text.isprintable() else repr(text)
+
+
 def _float(text: str, what: str) -> float:
     try:
         v = float(text)
@@ -96,8 +102,22 @@ def _float(text: str, what: str) -> float:
 
 
 def parse_grid(name: str, spec: str) -> np.ndarray:
-    """Grid values (edge units) from 'start:stop:count' or a comma list."""
-    what = f"--{name} {spec}"
+    """Grid values (edge units) from 'start:stop:count' or a comma list.
+
+    Raises ValueError naming the option, the spec and what a good value is.
+    """
+    try:
+        return _parse_grid(name, spec)
+    except ValueError as exc:
+        if "not a number" not in str(exc) and "must be finite" not in str(exc):
+            raise
+        p = PARAMETERS[name]
+        raise ValueError(f"{exc} (expected {name} values in {p.unit}, plausible range "
+                         f"{p.low:g}..{p.high:g})") from None
+
+
+def _parse_grid(name: str, spec: str) -> np.ndarray:
+    what = f"--{name} {_shown(spec)}"
     if ":" in spec:
         parts = spec.split(":")
         if len(parts) != 3:
@@ -128,7 +148,7 @@ def parse_assignment(text: str, option: str = "--set") -> tuple:
     name, value = text.split("=", 1)
     name = check_name(name.strip())
     try:
-        return name, _float(value.strip(), f"{option} {text}")
+        return name, _float(value.strip(), f"{option} {_shown(text)}")
     except ValueError as exc:  # say what a good value looks like
         p = PARAMETERS[name]
         expected = ("a factor" if option == "--scale" else
