@@ -313,3 +313,12 @@ def test_any_grid_spec_parses_or_is_one_line_naming_the_option(name, spec):
         assert _one_line(str(exc)).startswith(f"--{name} ")
         return
     assert values.size >= 1 and all(math.isfinite(v) for v in values)
+
+
+def test_docs_list_every_plausible_range_of_the_table():
+    from tethersim.params import PARAMETERS
+    from tethersim.plausibility import _range_text
+
+    doc = (Path(__file__).parent.parent / "docs" / "limits.md").read_text()
+    for name, p in PARAMETERS.items():
+        assert f"| `{name}` | `{p.key}` | {p.unit} | {_range_text(p)} |" in doc, name
