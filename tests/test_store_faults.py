@@ -91,13 +91,15 @@ def test_deleted_done_chunk_only_recomputes_those_points(store, reference):
     xr.testing.assert_identical(resumed, reference)
 
 
-@pytest.mark.parametrize("damage", ["garbage", "deleted"])
+@pytest.mark.parametrize("damage", ["garbage", "deleted", "no-zgroup"])
 def test_damaged_metadata_stops_naming_restart(store, reference, damage, capsys):
     meta = store / ".zmetadata"
     if damage == "garbage":
         meta.write_text("{not json")
-    else:
+    elif damage == "deleted":
         meta.unlink()
+    else:
+        (store / ".zgroup").unlink()
     with pytest.raises(StoreDamaged, match="metadata is damaged.*--restart"):
         run_sweep(_spec(), store, progress=False)
     # the CLI says it in one line, then --restart recovers

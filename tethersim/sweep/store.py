@@ -119,7 +119,12 @@ class SweepStore:
             on_disk.close()
             self.arrays = self._read_verified()
         else:
-            if self.path.exists() and any(self.path.iterdir()) and not exists:
+            damaged = (self.path / ".zmetadata").exists()  # a store that lost its .zgroup
+            if self.path.exists() and any(self.path.iterdir()) and not exists and not (
+                    restart and damaged):
+                if damaged:
+                    raise StoreDamaged(f"{self.path}: the store's metadata is damaged (no "
+                                       f".zgroup); run again with --restart to discard it")
                 raise StoreMismatch(f"{self.path} exists and is not a sweep store; choose another --out")
             ds = _empty_dataset(spec)
             encoding = {v: {"chunks": self._chunks()} for v in list(ds.data_vars)}
