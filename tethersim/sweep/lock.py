@@ -27,14 +27,35 @@ def _owner_path(store: Path) -> Path:
     return store.with_name(store.name + ".lock.json")
 
 
-def holder(store) -> str:
-    """Who holds the lock of ``store``, as 'pid 123 on host h since 12:00:00 UTC' (best effort)."""
+def _read_owner(store: Path):
     try:
-        info = json.loads(_owner_path(Path(store)).read_text())
-        since = time.strftime("%Y-%m-%d %H:%M:%S UTC", time.gmtime(info["since"]))
-        return f"pid {info['pid']} on host {info['host']} since {since}"
+        info = json.loads(_owner_path(store).read_text())
+        pid, host, since = int(info["pid"]), str(info["host"]), float(info["since"])
     except (OSError, ValueError, KeyError, TypeError):
-        return "a process that has not yet written its name"
+        return None
+    if host == socket.gethostname():
+        try:
+            os.kill(pid, 0)  # signal 0: only asks whether the process exists
+        except ProcessLookupError:
+            return None  # a dead holder's file: the live one has not written yet
+        except PermissionError:
+            pass  # exists, another user's
+    return pid, host, since
+
+
+def holder(store, wait: float = 2.0) -> str:
+    """Who holds the lock of ``store``: 'pid 123 on host h since ... UTC' (best effort).
+
+    The holder writes its name just after taking the lock, so a writer refused in that
+    instant waits up to ``wait`` seconds for it.
+    """
+    deadline = time.monotonic() + wait
+    while (owner := _read_owner(Path(store))) is None and time.monotonic() < deadline:
+        time.sleep(0.02)
+    if owner is None:
+        return "a process that has not written its name"
+    pid, host, since = owner
+    return f"pid {pid} on host {host} since {time.strftime('%Y-%m-%d %H:%M:%S UTC', time.gmtime(since))}"
 
 
 class StoreLock:
@@ -65,8 +86,12 @@ class StoreLock:
         return self
 
     def release(self) -> None:
-        """Release the lock (the owner file stays: it is only read while the lock is held)."""
+        """Release the lock and remove the owner file (a killed holder's file is ignored)."""
         if self._lock.is_locked:
+            try:
+                _owner_path(self.store).unlink()
+            except OSError:
+                pass
             self._lock.release()
 
     def __enter__(self):
