@@ -45,7 +45,18 @@ def _limit(env: str, default: float) -> float:
 
 
 def human(nbytes: float) -> str:
-    """'1.5 GiB'-style size."""
+    """A byte count for people.
+
+    Parameters
+    ----------
+    nbytes : float
+        Size in bytes.
+
+    Returns
+    -------
+    str
+        Three significant digits and a binary unit, e.g. ``'16.4 GiB'``.
+    """
     for unit in ("B", "KiB", "MiB", "GiB", "TiB", "PiB"):
         if nbytes < 1024 or unit == "PiB":
             return f"{nbytes:.3g} {unit}"
@@ -65,11 +76,21 @@ def _number(value):
 
 
 def output_rows(periods, steps, method, samples):
-    """Rows of one simulate() output (including t = 0), or None if the request is malformed.
+    """Rows of one simulate() output, including t = 0.
 
     Mirrors simulate()'s defaults: RK4 stores every step (300 per orbit unless
     ``steps``); the adaptive method stores ``samples`` (else ``steps``, else 200
     per orbit) output points.
+
+    Parameters
+    ----------
+    periods, steps, method, samples
+        As given to :func:`tethersim.simulation.simulate`.
+
+    Returns
+    -------
+    float or None
+        The row count, or None if the request is malformed (simulate names it).
     """
     from .simulation import SAMPLES_PER_PERIOD, STEPS_PER_PERIOD
 

@@ -44,10 +44,22 @@ def _read_owner(store: Path):
 
 
 def holder(store, wait: float = 2.0) -> str:
-    """Who holds the lock of ``store``: 'pid 123 on host h since ... UTC' (best effort).
+    """Who holds the lock of ``store`` (best effort).
 
     The holder writes its name just after taking the lock, so a writer refused in that
     instant waits up to ``wait`` seconds for it.
+
+    Parameters
+    ----------
+    store : path-like
+        The store directory.
+    wait : float
+        Seconds to wait for a live holder's name.
+
+    Returns
+    -------
+    str
+        E.g. ``'pid 123 on host h since 2026-12-01 12:00:00 UTC'``.
     """
     deadline = time.monotonic() + wait
     while (owner := _read_owner(Path(store))) is None and time.monotonic() < deadline:
