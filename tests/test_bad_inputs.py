@@ -114,6 +114,23 @@ def test_preset_flag_allows_implausible_values_and_says_so(tmp_path):
         sat.replace(altitude=2000e3)
 
 
+def test_the_flag_travels_with_the_satellite(tmp_path):
+    """Through a written preset (tethersim tune), a sweep spec (stores, Dask) and --set."""
+    from tethersim.params import with_values
+    from tethersim.presets.write import dumps
+    from tethersim.sweep import SweepSpec
+
+    low = SAT.replace(altitude=110e3, allow_implausible=True)
+    path = tmp_path / "low.toml"
+    path.write_text(dumps(low))
+    assert load(path) == low
+    spec = SweepSpec(low, (("E1", [0.003, 0.004]),), periods=1)
+    assert SweepSpec.from_json(spec.to_json()) == spec
+    assert with_values(low, {"altitude": 100}).allow_implausible
+    # a plausible satellite's spec is unchanged by the flag's existence: old stores resume
+    assert "allow_implausible" not in SweepSpec(SAT, (("E1", [0.004]),)).to_json()
+
+
 # --- --set / --scale on the command line ----------------------------------------------
 SET_CASES = [
     (["--set", "altitude=50"], ["altitude = 50 km", "120..1000 km"]),
