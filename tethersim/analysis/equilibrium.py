@@ -24,6 +24,10 @@ from tethersim.engine.linearise import attitude_jacobian, rk4_max_step
 RESIDUAL_TOL = 1e-10  # largest |acceleration| accepted at an equilibrium [SI]
 
 
+class NoEquilibrium(RuntimeError, ValueError):
+    """No equilibrium exists or none was found; a one-line message (a ValueError for the CLI)."""
+
+
 @dataclass(frozen=True)
 class Equilibrium:
     """A steady configuration in the rotating frame and its linearisation.
@@ -99,8 +103,9 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
 
     Raises
     ------
-    RuntimeError
-        If the solver finds no state with all accelerations below ``RESIDUAL_TOL``.
+    NoEquilibrium
+        If no tether holds the balloon, or the solver finds no state with all
+        accelerations below ``RESIDUAL_TOL`` (a RuntimeError and a ValueError).
 
     Examples
     --------
@@ -110,6 +115,11 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     29
     """
     m = model_index(model, THESIS_VARIANTS, "find_equilibrium")
+    if sat.E1 == 0 and sat.E2 == 0:
+        # nothing holds the balloon against drag: the root finder would wander off
+        raise NoEquilibrium("E1 = E2 = 0 N/mm^2: no tether holds the balloon, so drag carries "
+                            "it away and there is no equilibrium; allowed range for an "
+                            "equilibrium: E1 > 0 or E2 > 0")
     p = parameter_vector(sat)
     g = np.array(guess if guess is not None else (sat.initial[0], sat.initial[1], 0.0), float)
     d = np.empty(6)
@@ -127,7 +137,8 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     q = sol.x
     res = float(np.max(np.abs(f(q))))
     if not sol.success and res > RESIDUAL_TOL:
-        raise RuntimeError(f"no equilibrium found from guess {tuple(g)}: {sol.message} "
+        why = " ".join(str(sol.message).split())  # scipy's message spans lines
+        raise NoEquilibrium(f"no equilibrium found from guess {tuple(float(x) for x in g)}: {why} "
                            f"(residual {res:.3g})")
     th = float(wrap(q[2]))
     lam1 = math.hypot(sat.b * math.sin(th) - q[0], sat.b * math.cos(th) - q[1])

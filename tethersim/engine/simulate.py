@@ -79,6 +79,8 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
     step_warning: RK4 only, warn (RK4StepWarning) when the step exceeds what the
       linearised system supports (sweeps record stability.rk4_amplification instead).
     """
+    from tethersim.engine.guards import check_simulation  # refuse an output that would not fit, before allocating
+    check_simulation(periods, steps, method, samples, check)
     if not isinstance(sat, Satellite):
         raise TypeError(f"sat must be a tethersim Satellite (load_preset/load), got {type(sat).__name__}")
     periods = _check_positive("periods", periods)
