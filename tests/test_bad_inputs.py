@@ -17,10 +17,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from tethersim import Satellite, load_preset
-from tethersim.cli import main
-from tethersim.params import NAMES, apply_overrides, parse_grid
-from tethersim.presets import SCHEMA, from_dict, load
-from tethersim.satellite import SatelliteError
+from tethersim.cli.main import main
+from tethersim.model.params import NAMES, apply_overrides, parse_grid
+from tethersim.model.presets import SCHEMA, from_dict, load
+from tethersim.model.satellite import SatelliteError
 
 TEXT = (Path(__file__).parent.parent / "tethersim" / "presets" / "satI.toml").read_text()
 SAT = load_preset("satI")
@@ -116,9 +116,9 @@ def test_preset_flag_allows_implausible_values_and_says_so(tmp_path):
 
 def test_the_flag_travels_with_the_satellite(tmp_path):
     """Through a written preset (tethersim tune), a sweep spec (stores, Dask) and --set."""
-    from tethersim.params import with_values
-    from tethersim.presets.write import dumps
-    from tethersim.sweep import SweepSpec
+    from tethersim.model.params import with_values
+    from tethersim.model.presets.write import dumps
+    from tethersim.experiments.sweep import SweepSpec
 
     low = SAT.replace(altitude=110e3, allow_implausible=True)
     path = tmp_path / "low.toml"
@@ -333,7 +333,7 @@ def test_any_grid_spec_parses_or_is_one_line_naming_the_option(name, spec):
 
 
 def test_docs_list_every_plausible_range_of_the_table():
-    from tethersim.params import PARAMETERS
+    from tethersim.model.params import PARAMETERS
     from tethersim.model.plausibility import _range_text
 
     doc = (Path(__file__).parent.parent / "docs" / "limits.md").read_text()

@@ -86,7 +86,7 @@ def test_rhs_in_plane_equals_planar_and_out_of_plane_is_zero(sample, planar, thr
         y3, p3 = to_3d(y2, p2)
         d2, d3 = np.full(6, np.nan), np.full(12, np.nan)
         generated.MODELS[planar].rhs(0.0, y2, p2, d2)
-        generated.MODELS_3D[three_d].rhs(0.0, y3, p3, d3)
+        generated.MODELS[three_d].rhs(0.0, y3, p3, d3)
         worst = max(worst, _close(d3[list(IN_PLANE)], d2))
         assert np.all(d3[list(OUT_OF_PLANE)] == 0.0)
     assert worst <= REL_TOL, worst
@@ -99,7 +99,7 @@ def test_family_forces_in_plane_equal_planar_and_out_of_plane_are_zero(sample, p
         y3, p3 = to_3d(y2, p2)
         o2, o3 = np.full((7, 3), np.nan), np.full((7, 6), np.nan)
         generated.MODELS[planar].family_forces(y2, p2, o2)
-        generated.MODELS_3D[three_d].family_forces(y3, p3, o3)
+        generated.MODELS[three_d].family_forces(y3, p3, o3)
         worst = max(worst, _close(o3[:, list(Q_IN)], o2))
         assert np.all(o3[:, [2, 3, 5]] == 0.0)
     assert worst <= REL_TOL, worst
@@ -113,7 +113,7 @@ def test_jacobian_in_plane_block_equals_planar_and_planar_states_stay_planar(sam
         y3, p3 = to_3d(y2, p2)
         J2, J3 = np.full((6, 6), np.nan), np.full((12, 12), np.nan)
         generated.MODELS[planar].jacobian(0.0, y2, p2, J2)
-        generated.MODELS_3D[three_d].jacobian(0.0, y3, p3, J3)
+        generated.MODELS[three_d].jacobian(0.0, y3, p3, J3)
         block = J3[np.ix_(IN_PLANE, IN_PLANE)]
         scale = np.maximum(np.abs(J2), 1e-12 * np.max(np.abs(J2), axis=1, keepdims=True))
         worst = max(worst, float(np.max(np.abs(block - J2) / scale)))

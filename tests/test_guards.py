@@ -10,9 +10,9 @@ from pathlib import Path
 import pytest
 
 from tethersim import load_preset, simulate
-from tethersim.cli import main
+from tethersim.cli.main import main
 from tethersim.engine.guards import SizeLimitError, check_simulation, check_sweep
-from tethersim.sweep import SweepSpec
+from tethersim.experiments.sweep import SweepSpec
 
 SAT = load_preset("satI")
 ROOT = Path(__file__).parent.parent
@@ -90,12 +90,12 @@ def test_cli_huge_sweep_grid_returns_at_once(tmp_path, capsys):
 
 
 def test_ctrl_c_anywhere_in_the_cli_is_one_line(monkeypatch, capsys):
-    import tethersim.presets
+    import tethersim.model.presets
 
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(tethersim.presets, "resolve", interrupted)
+    monkeypatch.setattr(tethersim.model.presets, "resolve", interrupted)
     assert main(["equilibrium", "satI"]) == 130
     assert _one_line(capsys.readouterr().err) == "tethersim: interrupted (Ctrl-C)"
 

@@ -16,8 +16,8 @@ import xarray as xr
 import zarr
 
 from tethersim import load_preset
-from tethersim.cli import main
-from tethersim.sweep import (
+from tethersim.cli.main import main
+from tethersim.experiments.sweep import (
     StoreDamaged,
     StoreLocked,
     StoreMismatch,
@@ -25,7 +25,7 @@ from tethersim.sweep import (
     SweepSpec,
     run_sweep,
 )
-from tethersim.sweep.lock import StoreLock
+from tethersim.experiments.sweep.lock import StoreLock
 
 ROOT = Path(__file__).parent.parent
 AXES = (("E1", [0.0038, 0.0042]), ("E2", [0.041, 0.043, 0.045]))  # rows are E2 values

@@ -1,12 +1,12 @@
 """Physical plausibility of a satellite: the ranges where the model means something.
 
-A :class:`~tethersim.satellite.Satellite` that passes its hard checks (positive
+A :class:`~tethersim.model.satellite.Satellite` that passes its hard checks (positive
 masses, an altitude inside the atmosphere table, ...) can still be absurd: an
 orbit below the re-entry altitude, a balloon starting a million kilometres from
 6 m tethers, a tether so stiff that its oscillation is faster than the
 integrator can follow.  Such runs used to end "ok" with meaningless numbers.
 
-The per-quantity ranges live in one table, :data:`tethersim.params.PARAMETERS`;
+The per-quantity ranges live in one table, :data:`tethersim.model.params.PARAMETERS`;
 the rules that need several quantities at once are here.  :func:`problems`
 lists every violation as a one-line message naming the field, the plausible
 range and why; :func:`check` refuses the first one unless the satellite was
@@ -97,7 +97,7 @@ def problems(sat) -> list:
 
     Parameters
     ----------
-    sat : tethersim.satellite.Satellite
+    sat : tethersim.model.satellite.Satellite
         A satellite that passed its hard checks.
 
     Returns
@@ -114,14 +114,14 @@ def check(sat, where: str = "") -> None:
 
     Parameters
     ----------
-    sat : tethersim.satellite.Satellite
+    sat : tethersim.model.satellite.Satellite
         The satellite being created.
     where : str
         Prefix naming the source (a preset path), e.g. ``"satI.toml: "``.
 
     Raises
     ------
-    tethersim.satellite.SatelliteError
+    tethersim.model.satellite.SatelliteError
         Naming the first violation, its range and ``allow_implausible``.
     """
     if getattr(sat, "allow_implausible", False):

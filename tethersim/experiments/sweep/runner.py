@@ -82,7 +82,7 @@ def run_sweep(spec: SweepSpec, out, *, workers: int | None = None, scheduler: st
     finished point and raises SweepInterrupted; any other error also writes them
     first.  stop_after: simulate an interruption after that many points (tests).
     A second writer to the same store stops at once (StoreLocked, naming the first);
-    a resumed store is verified first (tethersim.sweep.verify).
+    a resumed store is verified first (tethersim.experiments.sweep.verify).
     """
     store = SweepStore(out, spec, restart=restart)  # takes the store's writer lock
     try:

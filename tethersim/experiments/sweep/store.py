@@ -12,8 +12,8 @@ kill at any instant leaves ``done`` true only where the data are on disk.
 A kill loses at most the points finished since the last flush (every
 ``FLUSH_SECONDS``); Ctrl-C loses nothing (the runner flushes first).
 
-One writer at a time (tethersim.sweep.lock), and a resume verifies the store
-(tethersim.sweep.verify): unreadable chunks and points whose ``checksum``
+One writer at a time (tethersim.experiments.sweep.lock), and a resume verifies the store
+(tethersim.experiments.sweep.verify): unreadable chunks and points whose ``checksum``
 does not match their data are recomputed, with a StoreRepaired warning.
 """
 from __future__ import annotations
@@ -66,7 +66,7 @@ def _empty_dataset(spec: SweepSpec) -> xr.Dataset:
             attrs.update(flag_values=[0, 1, 2], flag_meanings="ok diverged integrator_failed")
         data[name] = (dims, np.full(spec.shape, FILL[dtype], dtype=dtype), attrs)
     data["checksum"] = (dims, np.full(spec.shape, -1, dtype=np.int64),
-                        {"long_name": "FNV-1a hash of the point's record (tethersim.sweep.verify)"})
+                        {"long_name": "FNV-1a hash of the point's record (tethersim.experiments.sweep.verify)"})
     data["done"] = (dims, np.zeros(spec.shape, dtype=bool), {"long_name": "point computed"})
     attrs = {"title": f"tethersim sweep of {spec.satellite.name} over {' x '.join(spec.names)}",
              "spec": spec.to_json(), "tethersim_version": __version__, "code": code_id(),
@@ -217,5 +217,5 @@ def open_dataset(path) -> xr.Dataset:
     if not ((path / "zarr.json").exists() or (path / ".zgroup").exists()):
         raise FileNotFoundError(f"{path}: not a sweep store (no zarr.json)")
     with xr.open_zarr(path) as ds:
-        # the checksum is the store's own bookkeeping (tethersim.sweep.verify)
+        # the checksum is the store's own bookkeeping (tethersim.experiments.sweep.verify)
         return ds.drop_vars("checksum", errors="ignore").load()
