@@ -18,6 +18,7 @@ is a polynomial in r0, so truncating V first gives the same equations.
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, replace
 from typing import Callable
 
@@ -127,19 +128,27 @@ def jacobi_integral(T, V, V_boxes, truncation):
     return sp.Add(*[term for term in sp.Add.make_args(sp.expand(h)) if term.free_symbols & state])
 
 
-def derive3d(defn: ModelDefinition3D) -> DerivedModel3D:
-    """Run the 3-D pipeline for one definition."""
+@functools.lru_cache(maxsize=None)
+def _lagrange(power, truncation) -> tuple:
+    """(M, f, jacobi) for one gravity law (shared by variants that differ in forces only)."""
     kin = kinematics_3d()
     T = to_state_symbols(kinetic_energy(kin))
+    defn = ModelDefinition3D("", "", power, truncation, None)
     V, V_boxes = potential(kin, defn)
     M, f = lagrange_terms(T, V, V_boxes)
     M = M.applyfunc(lambda e: sp.factor_terms(sp.expand(sp.trigsimp(e))))
     _check_block_diagonal(M)
+    return M, f, jacobi_integral(T, V, V_boxes, truncation)
+
+
+def derive3d(defn: ModelDefinition3D) -> DerivedModel3D:
+    """Run the 3-D pipeline for one definition."""
+    kin = kinematics_3d()
+    M, f, jac = _lagrange(defn.power, defn.truncation)
     fams = tuple(replace(fam, Q=tuple(to_state_symbols(q) for q in fam.Q),
                          potential=None if fam.potential is None
                          else to_state_symbols(fam.potential))
                  for fam in defn.families(kin))
-    jac = jacobi_integral(T, V, V_boxes, defn.truncation)
     defs = {lam: to_state_symbols(d) for lam, d in kin.tether_length_defs.items()}
     _check_symbols(defn.name, list(M) + list(f) + [q for fam in fams for q in fam.Q] + [jac])
     return DerivedModel3D(defn, M, f, fams, jac, defs)
