@@ -29,7 +29,7 @@ R0 = 6.578e6
 MU = 3.986004418e14
 REL_TOL = 1e-11  # per component, relative to max(|truth|, FLOOR)
 FLOOR = 1e-15
-JAC_TOL = 1e-8  # per entry, relative to the largest truth entry of its row (floor of that row)
+JAC_TOL = 1e-12  # per entry, relative to the largest truth entry of its row
 PI = s3.PARAMETER_NAMES.index
 
 
