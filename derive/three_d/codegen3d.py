@@ -258,6 +258,18 @@ def layout_constants() -> list:
 
 
 def module_source(model: DerivedModel3D) -> str:
+    """Source text of one generated 3-D module.
+
+    Parameters
+    ----------
+    model : DerivedModel3D
+        The derived model.
+
+    Returns
+    -------
+    str
+        Header (index tables, layout tuples), solvers and the four kernels.
+    """
     head = ['"""GENERATED FILE - DO NOT EDIT.', "",
             f"Model {model.name!r}: {model.definition.description}.",
             "Produced by `make derive` (python -m derive) from derive/three_d/; regenerate",

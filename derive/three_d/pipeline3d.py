@@ -95,6 +95,20 @@ def _speed_symbols():
 def lagrange_terms(T, V, V_unexpanded=0) -> tuple:
     """(M, f) of M q̈ + f for T, V in the plain state symbols.
 
+    Parameters
+    ----------
+    T, V : sympy.Expr
+        Kinetic energy and the potential to expand with it [J].
+    V_unexpanded : sympy.Expr, optional
+        Potential terms differentiated but not expanded [J].
+
+    Returns
+    -------
+    (sympy.Matrix, tuple)
+        The 6×6 mass matrix and the six f_k [N or N m].
+
+    Notes
+    -----
     The T and V parts of f are expanded together so that the O(r0) centrifugal
     and gravity terms cancel symbolically; ``V_unexpanded`` (exact-gravity box
     terms, O(ω² I) with no such cancellation) is differentiated but not expanded.
@@ -142,7 +156,18 @@ def _lagrange(power, truncation) -> tuple:
 
 
 def derive3d(defn: ModelDefinition3D) -> DerivedModel3D:
-    """Run the 3-D pipeline for one definition."""
+    """Run the 3-D pipeline for one definition.
+
+    Parameters
+    ----------
+    defn : ModelDefinition3D
+        Gravity law, truncation and force families of the variant.
+
+    Returns
+    -------
+    DerivedModel3D
+        M, f, families, Jacobi integral and tether lengths in the state symbols.
+    """
     kin = kinematics_3d()
     M, f, jac = _lagrange(defn.power, defn.truncation)
     fams = tuple(replace(fam, Q=tuple(to_state_symbols(q) for q in fam.Q),

@@ -75,6 +75,20 @@ def to_state_symbols(expr):
 def eq44_box_inertia(mass: float, area: float) -> tuple:
     """(roll, pitch, yaw) moments [kg m²] of a cube of frontal area ``area`` (Eq 4.4).
 
+    Parameters
+    ----------
+    mass : float
+        Body mass [kg].
+    area : float
+        Frontal area [m²].
+
+    Returns
+    -------
+    tuple of float
+        The three equal principal moments [kg m²].
+
+    Notes
+    -----
     I_xx = I_yy = I_zz = m (2 Area)/12, i.e. m s²/6 for a cube of side s (thesis
     p. 4-5, Table 4.4): the default I1 (tip-mass) and I2 (bus) of the 3-D models.
     """
