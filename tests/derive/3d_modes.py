@@ -53,7 +53,7 @@ def jacobian_at_rest(model, p):
 
 
 def eigs(J, coords):
-    idx = list(coords) + [RATE[c] for c in coords]
+    idx = list(coords) + [c + 6 for c in coords]  # coordinates, then their rates
     return np.linalg.eigvals(J[np.ix_(idx, idx)])
 
 
@@ -124,3 +124,15 @@ def test_rigid_body_pitch_and_roll_yaw_quartic(model, case):
         assert growth <= TOL * N  # all neutral
     else:
         assert growth > 0.05 * N  # a genuine growth rate, not rounding
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_free_balloon_has_clohessy_wiltshire_modes(model):
+    """Without tethers or drag the balloon moves by Hill's (Clohessy–Wiltshire)
+    equations about G: in-plane eigenvalues 0, 0, ±i n, out-of-plane ±i n
+    (ẍ − 2nẏ = 0, ÿ + 2nẋ − 3n²y = 0, z̈ + n²z = 0 in these axes)."""
+    J = jacobian_at_rest(model, params())
+    assert_same_roots(eigs(J, [IX["delta_x"], IX["delta_y"]]), [0, 0, 1j * N, -1j * N])
+    assert_same_roots(eigs(J, [IX["delta_z"]]), [1j * N, -1j * N])
+    z, zdd = IX["delta_z"], IX["delta_z"] + 6
+    assert J[zdd, z] == pytest.approx(-N**2, rel=1e-12)
