@@ -124,7 +124,9 @@ def test_faithful_run_with_an_unstable_step_warns_and_reports_divergence(tmp_pat
     assert len(warning_lines) == 1
     assert "unstable" in warning_lines[0]
     error_lines = [ln for ln in err.splitlines() if ln.startswith("tethersim: error:")]
-    assert len(error_lines) == 1 and "non-finite" in error_lines[0]
+    # the run blows up: it leaves the model's domain before its state turns non-finite
+    assert len(error_lines) == 1 and ("non-finite" in error_lines[0]
+                                      or "left the model's domain" in error_lines[0])
     assert "Traceback" not in err
     assert (tmp_path / "timeseries.csv").is_file()  # what finished is still written
 

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
 
 import numpy as np
 
@@ -155,6 +155,8 @@ def outcome(res: SimResult, tol: float = SETTLING_TOL, forces: bool = True) -> O
     >>> ts.outcome(res).status
     'ok'
     """
+    if res.fine_t is not None:  # metrics on the metrics grid, not the output sampling
+        res = replace(res, t=res.fine_t, states=res.fine_states, fine_t=None, fine_states=None)
     n = finite_prefix(res)
     t, states = res.t[:n], res.states[:n]
     ix, iy, ith = (res.layout.state.index(s) for s in ("delta_x", "delta_y", "theta"))

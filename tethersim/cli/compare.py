@@ -10,6 +10,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from tethersim.cli import options
+from tethersim.model.registry import THESIS_VARIANTS
 
 HELP = "run a satellite under several model variants, plot them together"
 
@@ -23,7 +24,7 @@ def add_parser(sub) -> None:
                     "the first model) and compare.csv (metrics per model), print the table "
                     "and say where the outcome classes differ.")
     options.add_satellite(p)
-    options.add_models(p, options.model_names())
+    options.add_models(p, THESIS_VARIANTS)
     options.add_periods(p)
     options.add_integrator(p)
     options.add_out(p, "results/<satellite>/compare")

@@ -4,8 +4,9 @@ A run that leaves the model's domain ends with a status that says so, never
 "ok" (docs/limits.md):
 
 ``re-entered``   the boom's COM fell below the re-entry altitude (default 120 km,
-                 ``Satellite.reentry_altitude``): below it the thin-air drag law and
-                 the rigid-tether model no longer hold, and the satellite is lost;
+                 ``Satellite.reentry_altitude``) on a free orbit: below it the thin-air
+                 drag law and the rigid-tether model no longer hold, and the satellite
+                 is lost (a circular orbit is held at its altitude, checked at load);
 ``left-domain``  the balloon farther from the COM than ``BALLOON_REACH`` times the
                  longest tether path (end body + tether), or a tether stretched
                  beyond ``MAX_STRETCH`` times its rest length (the thesis presets
@@ -82,9 +83,13 @@ def first_violation(res, altitude=None) -> Violation | None:
     finite = np.all(np.isfinite(res.states), axis=1)
     last = int(np.argmin(finite)) if not finite.all() else n  # before the first NaN sample
     candidates = []
-    h = res.altitude if altitude is None else altitude
     h_min = getattr(sat, "reentry_altitude", REENTRY_ALTITUDE)
-    below = np.nonzero(h[:last] < h_min)[0]
+    # a circular orbit is held at its altitude (checked at load time): only a free orbit falls
+    if lay.orbit == "free" or altitude is not None:
+        h = res.altitude if altitude is None else altitude
+        below = np.nonzero(h[:last] < h_min)[0]
+    else:
+        below = np.array([], dtype=int)
     if below.size:
         i = int(below[0])
         t = float(res.t[i])
@@ -119,3 +124,15 @@ def first_violation(res, altitude=None) -> Violation | None:
                                         f"{strain[i, j]:.3g} x its rest length at t = "
                                         f"{res.t[i]:.6g} s (allowed <= {MAX_STRETCH:g} x)"))
     return min(candidates, key=lambda v: v.index) if candidates else None
+
+
+def below_reentry(sat, model: str, state) -> bool:
+    """Whether the boom's COM at ``state`` (a free-orbit model's integrated state) is
+    below the re-entry altitude: the loop's cue to stop and let simulate() truncate."""
+    from tethersim.model.constants import R_EARTH
+    from tethersim.model.registry import get_model
+    lay = get_model(model)
+    if "r" not in lay.state:
+        return False
+    return bool(state[lay.state.index("r")] - R_EARTH
+                < getattr(sat, "reentry_altitude", REENTRY_ALTITUDE))

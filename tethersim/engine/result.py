@@ -70,6 +70,11 @@ class SimResult:
     reentry_time : float or None
         When the boom's COM fell below the re-entry altitude [s] (status
         ``"re-entered"``), else None.
+    fine_t, fine_states : numpy.ndarray or None
+        The same run on the metrics grid (at least 200 samples per orbit) when
+        the output grid asked for is coarser; the output is every k-th of them.
+        Metrics (:func:`tethersim.outcome`) use these, so they do not depend on
+        the output sampling.  None when the output grid is the metrics grid.
 
     The series of any state by name: ``res.series("theta")``; shortcuts ``x``,
     ``y``, ``theta``, ``xdot``, ``ydot``, ``thetadot`` (δx, δy, θ and rates).
@@ -94,6 +99,9 @@ class SimResult:
     wall_time: float = field(default=0.0, compare=False)
     periods: float | None = None  # length of the run asked for, in orbits (for reruns)
     reentry_time: float | None = None  # s, when the COM fell below the re-entry altitude
+    # the integrator's dense output on the metrics grid when the output grid is coarser
+    fine_t: np.ndarray | None = field(default=None, repr=False)
+    fine_states: np.ndarray | None = field(default=None, repr=False)
 
     # --- arrays --------------------------------------------------------------
     @property
@@ -160,7 +168,8 @@ class SimResult:
         if self.converged is None:
             conv = "convergence not checked"
         else:
-            conv = "converged" if self.converged else "NOT converged"
+            # what was checked is the final state (estimate_error), not every sample
+            conv = "final state converged" if self.converged else "final state NOT converged"
             conv += f" (estimated final error in θ {self.error_estimate[2]:.2g} rad)"
         return f"{self.satellite.name}, model {self.model}: {kind}; {conv}"
 

@@ -15,7 +15,7 @@ from tethersim.engine.guards import SizeLimitError, check_simulation, check_swee
 from tethersim.experiments.sweep import SweepSpec
 
 SAT = load_preset("satI")
-ROOT = Path(__file__).parent.parent
+ROOT = Path(__file__).parents[2]
 
 
 def _one_line(err: str) -> str:

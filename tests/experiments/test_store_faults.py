@@ -27,7 +27,7 @@ from tethersim.experiments.sweep import (
 )
 from tethersim.experiments.sweep.lock import StoreLock
 
-ROOT = Path(__file__).parent.parent
+ROOT = Path(__file__).parents[2]
 AXES = (("E1", [0.0038, 0.0042]), ("E2", [0.041, 0.043, 0.045]))  # rows are E2 values
 PERIODS = 0.2  # short runs: the faults, not the physics, are under test
 
