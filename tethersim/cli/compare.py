@@ -64,7 +64,7 @@ def run(args) -> int:
     out = Path(args.out) if args.out else options.default_out(args, "compare")
     record = options.claim_folder(out, args, sat)
     results = compare(sat, models, periods=args.periods, method=how.method, steps=how.steps,
-                      samples=how.samples, rtol=how.rtol, locate_switches=how.locate,
+                      samples=how.samples, rtol=how.rtol, locate_switches=how.locate, check=True,
                       progress=options.progress(args))
     rows = comparison_table(results)
     notes = outcome_differences(rows)
