@@ -4,7 +4,7 @@ VENV   ?= .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-stamp
 
-.PHONY: install run test test-fast derive check-generated lint bench clean
+.PHONY: install run test test-slow test-fast derive check-generated lint bench clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -28,15 +28,21 @@ check-generated: $(STAMP)
 	  for f in $$tmp/*.py; do diff -u generated/$$(basename $$f) $$f || exit 1; done && \
 	  echo "generated/ is reproduced byte for byte" && rm -rf $$tmp
 
-## Layer contracts: runtime and generated code never import sympy or derive/.
+## Layer contracts (import-linter) and style (ruff).
 lint: $(STAMP)
 	$(VENV)/bin/lint-imports
+	$(VENV)/bin/ruff check .
 
-## Whole suite: contracts, generated code reproducible, all tests.
+## The suite: contracts, generated code reproducible, every test but the slow tier
+## (under 4 minutes on 2 cores); `make test-slow` runs the slow tier, CI runs both.
 test: $(STAMP) lint check-generated
-	$(PY) -m pytest -q
+	$(PY) -m pytest -q -m "not slow"
 
-## Tests without the slow tier.
+## The slow tier: derivations of the 3-D and free-orbit models, long physics runs.
+test-slow: $(STAMP)
+	$(PY) -m pytest -q -m slow
+
+## Tests without the slow tier and without the contract and regeneration checks.
 test-fast: $(STAMP)
 	$(PY) -m pytest -q -m "not slow"
 

@@ -15,8 +15,6 @@ from .three_d.models3d import DEFINITIONS_3D
 from .three_d.pipeline3d import derive3d
 
 
-
-
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     out = Path(argv[0]) if argv else Path(__file__).resolve().parent.parent / "generated"

@@ -18,8 +18,15 @@ from sympy.printing.pycode import PythonCodePrinter
 
 from .geometry import geometry_source
 from .pipeline import Q_SYMBOLS, DerivedModel
-from .symbols import (PARAMETERS, STATE_NAMES, STATE_SYMBOLS, STATE_UNITS,
-                      TETHER_LENGTHS, TETHER_REST, state_substitution)
+from .symbols import (
+    PARAMETERS,
+    STATE_NAMES,
+    STATE_SYMBOLS,
+    STATE_UNITS,
+    TETHER_LENGTHS,
+    TETHER_REST,
+    state_substitution,
+)
 
 INDENT = "    "
 _SIN, _COS = sp.Symbol("sin_theta", real=True), sp.Symbol("cos_theta", real=True)
@@ -275,7 +282,9 @@ def dispatch_source(definitions) -> str:
              "from numba import njit", "",
              *(f"from . import {m}" for m in mods), "",
              f"MODEL_NAMES = {tuple(d.name for d in definitions)!r}", ""]
-    for fn, args in (("rhs", "t, y, p, dydt"), ("family_forces", "y, p, out"), ("jacobi", "y, p"), ("jacobian", "t, y, p, J")):
+    kernels = (("rhs", "t, y, p, dydt"), ("family_forces", "y, p, out"), ("jacobi", "y, p"),
+               ("jacobian", "t, y, p, J"))
+    for fn, args in kernels:
         lines += ["", "@njit(cache=True)", f"def {fn}(model, {args}):",
                   f'    """{fn} of model MODEL_NAMES[model]."""']
         ret = "return " if fn == "jacobi" else ""

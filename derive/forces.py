@@ -13,7 +13,7 @@ import sympy as sp
 from sympy.physics.mechanics import partial_velocity
 
 from .kinematics import Kinematics
-from .symbols import P, TETHER_LENGTHS, TETHER_REST
+from .symbols import TETHER_LENGTHS, TETHER_REST, P
 
 
 @dataclass(frozen=True)

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.physics.mechanics import Particle, Point, ReferenceFrame
 
-from .symbols import COORDINATES, P, SPEEDS, TETHER_LENGTHS, t
+from .symbols import COORDINATES, SPEEDS, TETHER_LENGTHS, P, t
 
 BODY_NAMES = ("tip-mass", "bus", "balloon")
 

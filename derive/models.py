@@ -11,8 +11,14 @@ from __future__ import annotations
 
 from . import printed
 from .energy import inverse_distance_binomial, inverse_distance_exact
-from .forces import (ForceFamily, damper_families, drag_families,
-                     objective_damper_families, spring_families, spring_potential)
+from .forces import (
+    ForceFamily,
+    damper_families,
+    drag_families,
+    objective_damper_families,
+    spring_families,
+    spring_potential,
+)
 from .kinematics import planar_kinematics
 from .pipeline import ModelDefinition
 

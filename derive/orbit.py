@@ -32,17 +32,16 @@ switches it off.  ``binomial`` truncates (1 + u)^(-3/2) at the same degree.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, replace
-from typing import Callable
 
 import sympy as sp
-from sympy.physics.mechanics import (LagrangesMethod, Particle, Point,
-                                     ReferenceFrame, dynamicsymbols)
+from sympy.physics.mechanics import LagrangesMethod, Particle, Point, ReferenceFrame, dynamicsymbols
 
 from .energy import InverseSqrt, InverseSqrtMinusOne, kinetic_energy
 from .kinematics import Kinematics
 from .models import objective_families, thesis_families
-from .symbols import COORDINATES, P, PARAMETERS, TETHER_LENGTHS, Parameter, t
+from .symbols import COORDINATES, PARAMETERS, TETHER_LENGTHS, P, Parameter, t
 
 r_ref, nu = dynamicsymbols("r nu")
 FREE_COORDINATES = COORDINATES + (r_ref, nu)

@@ -21,9 +21,16 @@ from __future__ import annotations
 import sympy as sp
 
 from .codegen import INDENT, _block, _gate, _tether_length_line
-from .orbit import (FREE_ACCELERATION_SYMBOLS, FREE_PARAMETERS, FREE_Q_SYMBOLS,
-                    FREE_STATE_NAMES, FREE_STATE_SYMBOLS, FREE_STATE_UNITS,
-                    FreeDerivedModel, printable)
+from .orbit import (
+    FREE_ACCELERATION_SYMBOLS,
+    FREE_PARAMETERS,
+    FREE_Q_SYMBOLS,
+    FREE_STATE_NAMES,
+    FREE_STATE_SYMBOLS,
+    FREE_STATE_UNITS,
+    FreeDerivedModel,
+    printable,
+)
 
 N_Q = 5
 N_Y = 10

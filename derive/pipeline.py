@@ -6,17 +6,24 @@ record of plain sympy expressions in the state symbols, ready for codegen.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, replace
-from typing import Callable
 
 import sympy as sp
 from sympy.physics.mechanics import LagrangesMethod
 
-from .energy import (InverseSqrt, InverseSqrtMinusOne, kinetic_energy,
-                     potential_energy)
+from .energy import InverseSqrt, InverseSqrtMinusOne, kinetic_energy, potential_energy
 from .kinematics import Kinematics
-from .symbols import (ACCELERATION_SYMBOLS, COORDINATES, PARAMETERS, SPEEDS, P,
-                      STATE_SYMBOLS, TETHER_LENGTHS, state_substitution)
+from .symbols import (
+    ACCELERATION_SYMBOLS,
+    COORDINATES,
+    PARAMETERS,
+    SPEEDS,
+    STATE_SYMBOLS,
+    TETHER_LENGTHS,
+    P,
+    state_substitution,
+)
 
 
 @dataclass(frozen=True)

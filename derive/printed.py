@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .symbols import ACCELERATION_SYMBOLS, P, STATE_SYMBOLS, lambda1, lambda2
+from .symbols import ACCELERATION_SYMBOLS, STATE_SYMBOLS, P, lambda1, lambda2
 
 dx, dy, th, dxd, dyd, thd = STATE_SYMBOLS
 dxdd, dydd, thdd = ACCELERATION_SYMBOLS

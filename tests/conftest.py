@@ -10,7 +10,7 @@ import functools
 import pytest
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _derived(name: str):
     # derive/ (sympy) is imported only by the tests that use these fixtures
     from derive.models import BY_NAME

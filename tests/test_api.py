@@ -12,10 +12,10 @@ import numpy as np
 import pytest
 
 import tethersim
-from tethersim.model.registry import THESIS_VARIANTS
-from tethersim.generated.layout import FAMILIES, STATE
 from tethersim import RK4StepWarning, SimResult, accelerations, generalized_forces
+from tethersim.generated.layout import FAMILIES, STATE
 from tethersim.model.constants import MU_EARTH, OMEGA_EARTH, R_EARTH
+from tethersim.model.registry import THESIS_VARIANTS
 
 SAT = tethersim.load_preset("satI")
 # (δx, δy, θ, δẋ, δẏ, θ̇): balloon in the wake with both tethers taut and every term

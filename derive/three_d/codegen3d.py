@@ -20,11 +20,21 @@ from __future__ import annotations
 import sympy as sp
 
 from ..codegen import INDENT, NumbaPrinter
-from .pipeline3d import DerivedModel3D
-from .symbols3d import (ACCELERATION_SYMBOLS, N_Q, PARAMETERS, ROTATION, STATE_MEANINGS,
-                        STATE_NAMES, STATE_SYMBOLS, STATE_UNITS, TETHER_LENGTHS,
-                        TETHER_REST, TRANSLATION)
 from .forces3d import FAMILY_ORDER
+from .pipeline3d import DerivedModel3D
+from .symbols3d import (
+    ACCELERATION_SYMBOLS,
+    N_Q,
+    PARAMETERS,
+    ROTATION,
+    STATE_MEANINGS,
+    STATE_NAMES,
+    STATE_SYMBOLS,
+    STATE_UNITS,
+    TETHER_LENGTHS,
+    TETHER_REST,
+    TRANSLATION,
+)
 
 N_Y = len(STATE_NAMES)
 _CODE_NAMES = {p.symbol: sp.Symbol(p.name, real=True) for p in PARAMETERS}

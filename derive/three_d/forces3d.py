@@ -13,7 +13,7 @@ from sympy.physics.mechanics import partial_velocity
 
 from ..forces import ForceFamily
 from .kinematics3d import Kinematics3D
-from .symbols3d import N_Q, P, SPEEDS, TETHER_LENGTHS, TETHER_REST
+from .symbols3d import N_Q, SPEEDS, TETHER_LENGTHS, TETHER_REST, P
 
 FAMILY_ORDER = ("drag1", "drag2", "drag3", "spring1", "spring2", "damper1", "damper2")
 

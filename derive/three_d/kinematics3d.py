@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.physics.mechanics import Particle, Point, ReferenceFrame, inertia
 
-from .symbols3d import COORDINATES, P, TETHER_LENGTHS, t
+from .symbols3d import COORDINATES, TETHER_LENGTHS, P, t
 
 BODY_NAMES = ("tip-mass", "bus", "balloon")
 

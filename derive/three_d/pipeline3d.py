@@ -19,17 +19,25 @@ is a polynomial in r0, so truncating V first gives the same equations.
 from __future__ import annotations
 
 import functools
+from collections.abc import Callable
 from dataclasses import dataclass, replace
-from typing import Callable
 
 import sympy as sp
 
 from ..pipeline import truncate_inverse_r0
-from .energy3d import (box_potential, exact_potential_for_jacobi, kinetic_energy,
-                       point_potential)
+from .energy3d import box_potential, exact_potential_for_jacobi, kinetic_energy, point_potential
 from .kinematics3d import Kinematics3D, kinematics_3d
-from .symbols3d import (ACCELERATION_SYMBOLS, N_Q, PARAMETERS, ROTATION, STATE_SYMBOLS,
-                        TETHER_LENGTHS, TRANSLATION, P, to_state_symbols)
+from .symbols3d import (
+    ACCELERATION_SYMBOLS,
+    N_Q,
+    PARAMETERS,
+    ROTATION,
+    STATE_SYMBOLS,
+    TETHER_LENGTHS,
+    TRANSLATION,
+    P,
+    to_state_symbols,
+)
 
 Q_SYMBOLS = tuple(sp.Symbol(f"Q_{s}", real=True) for s in
                   ("delta_x", "delta_y", "delta_z", "phi", "theta", "psi"))
@@ -142,7 +150,7 @@ def jacobi_integral(T, V, V_boxes, truncation):
     return sp.Add(*[term for term in sp.Add.make_args(sp.expand(h)) if term.free_symbols & state])
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _lagrange(power, truncation) -> tuple:
     """(M, f, jacobi) for one gravity law (shared by variants that differ in forces only)."""
     kin = kinematics_3d()

@@ -21,7 +21,7 @@ from .symbols3d import N_Q, PARAMETER_NAMES, PARAMETERS, ROTATION, STATE_SYMBOLS
 DIGITS = 40
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def derived_3d(name: str) -> DerivedModel3D:
     """The DerivedModel3D of ``name`` (derived once per process)."""
     return derive3d(BY_NAME_3D[name])

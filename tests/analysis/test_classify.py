@@ -5,8 +5,16 @@ import math
 
 import pytest
 
-from tethersim.analysis.classify import (FAILED, OFFSET, SETTLING_REQUIREMENT, STABLE, TUMBLING,
-                                UNSETTLED, UPSIDE_DOWN, classify)
+from tethersim.analysis.classify import (
+    FAILED,
+    OFFSET,
+    SETTLING_REQUIREMENT,
+    STABLE,
+    TUMBLING,
+    UNSETTLED,
+    UPSIDE_DOWN,
+    classify,
+)
 from tethersim.analysis.metrics import PitchMetrics
 
 

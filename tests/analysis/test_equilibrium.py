@@ -1,13 +1,12 @@
 """Equilibria: zero residual, which tethers are taut, and eigenvalues that predict the runs."""
 from __future__ import annotations
 
-
 import pytest
 
 import tethersim as ts
-from tethersim.model.registry import THESIS_VARIANTS
 from tethersim.analysis.equilibrium import find_equilibrium, format_equilibrium
 from tethersim.engine.simulate import simulate
+from tethersim.model.registry import THESIS_VARIANTS
 
 
 @pytest.mark.parametrize("model", THESIS_VARIANTS)

@@ -1,16 +1,19 @@
 """Force breakdown (thesis Figs 5.7-5.20): force_peaks.py, plot_forces.py (command: tests/cli)."""
 from __future__ import annotations
 
-
 import numpy as np
 import pytest
 
 import tethersim as ts
+from tethersim.analysis.equilibrium import find_equilibrium
+from tethersim.analysis.force_peaks import (
+    LargestForce,
+    largest_forces,
+    largest_forces_from,
+    small_families,
+)
 from tethersim.generated import dispatch
 from tethersim.generated import layout as L
-from tethersim.analysis.equilibrium import find_equilibrium
-from tethersim.analysis.force_peaks import (LargestForce, largest_forces, largest_forces_from,
-                              small_families)
 from tethersim.model.registry import model_index
 from tethersim.model.satellite import parameter_vector
 

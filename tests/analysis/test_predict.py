@@ -11,15 +11,26 @@ import numpy as np
 import pytest
 
 import tethersim as ts
-from tethersim.model.registry import THESIS_VARIANTS
-from tethersim.model import params
-from tethersim.analysis.classify import (CLASSES, FAILED, OFFSET, STABLE, TUMBLING, UNSETTLED,
-                                flag_attrs)
+from tethersim.analysis.classify import (
+    CLASSES,
+    FAILED,
+    OFFSET,
+    STABLE,
+    TUMBLING,
+    UNSETTLED,
+    flag_attrs,
+)
 from tethersim.analysis.equilibrium import find_equilibrium
 from tethersim.analysis.predict import agreement, predicted_class, predicted_map
-from tethersim.analysis.torque_balance import (balanced_E2, balloon_trail_at_zero_pitch,
-                                               torque_balance_ratio, torque_balance_terms)
+from tethersim.analysis.torque_balance import (
+    balanced_E2,
+    balloon_trail_at_zero_pitch,
+    torque_balance_ratio,
+    torque_balance_terms,
+)
 from tethersim.engine.linearise import attitude_jacobian
+from tethersim.model import params
+from tethersim.model.registry import THESIS_VARIANTS
 
 PRESETS = ["satI", "satII", "dumbsat"]
 

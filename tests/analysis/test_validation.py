@@ -7,9 +7,14 @@ import pytest
 from scipy.special import ellipk
 
 import tethersim as ts
+from tethersim.analysis.validation import (
+    format_tables,
+    libration_case,
+    period_from_crossings,
+    principal_moments,
+    validate,
+)
 from tethersim.engine.simulate import simulate
-from tethersim.analysis.validation import (format_tables, libration_case, period_from_crossings,
-                                  principal_moments, validate)
 
 
 @pytest.mark.parametrize("preset", ["satI", "satII", "dumbsat"])

@@ -116,9 +116,9 @@ def test_preset_flag_allows_implausible_values_and_says_so(tmp_path):
 
 def test_the_flag_travels_with_the_satellite(tmp_path):
     """Through a written preset (tethersim tune), a sweep spec (stores, Dask) and --set."""
+    from tethersim.experiments.sweep import SweepSpec
     from tethersim.model.params import with_values
     from tethersim.model.presets.write import dumps
-    from tethersim.experiments.sweep import SweepSpec
 
     low = SAT.replace(altitude=110e3, allow_implausible=True)
     path = tmp_path / "low.toml"

@@ -4,10 +4,10 @@ from __future__ import annotations
 import csv
 
 import pytest
-from tethersim.model.registry import THESIS_VARIANTS as MODEL_NAMES
 
 from tethersim.analysis.classify import CLASSES
 from tethersim.cli.main import main
+from tethersim.model.registry import THESIS_VARIANTS as MODEL_NAMES
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 

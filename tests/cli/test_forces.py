@@ -5,10 +5,10 @@ import csv
 import json
 
 import pytest
-from tethersim.generated import layout as L
 
 import tethersim as ts
 from tethersim.analysis.force_peaks import COORDINATES
+from tethersim.generated import layout as L
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 

@@ -9,8 +9,8 @@ from importlib import resources
 import pytest
 
 from tethersim._version import __version__
-from tethersim.cli.main import main as console_main
 from tethersim.cli.main import COMMANDS, main
+from tethersim.cli.main import main as console_main
 
 SATI_TEXT = (resources.files("tethersim.model.presets") / "satI.toml").read_text()
 NAMES = ("run", "validate", "show", "equilibrium", "compare", "forces", "sweep", "tune",

@@ -13,7 +13,7 @@ from derive import printed
 from derive.forces import relative_air_velocity
 from derive.models import FAMILY_ORDER
 from derive.pipeline import to_state_symbols
-from derive.symbols import COORDINATES, P, STATE_SYMBOLS
+from derive.symbols import COORDINATES, STATE_SYMBOLS, P
 
 a, b, c1, c2, omega, wE = (P[k] for k in ("a", "b", "c1", "c2", "omega", "omega_earth"))
 dx, dy, th, dxd, dyd, thd = STATE_SYMBOLS

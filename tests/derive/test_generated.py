@@ -14,11 +14,11 @@ import pytest
 import sympy as sp
 
 import tethersim.generated as generated
-from tethersim.model.registry import THESIS_VARIANTS
 from derive.models import FAMILY_ORDER
 from derive.pipeline import Q_SYMBOLS
 from derive.symbols import PARAMETER_NAMES, PARAMETERS, STATE_NAMES, STATE_SYMBOLS, TETHER_LENGTHS
 from tethersim.generated import layout
+from tethersim.model.registry import THESIS_VARIANTS
 
 MODEL_NAMES = THESIS_VARIANTS  # the planar models this file checks symbolically
 SEED = 20050307

@@ -12,10 +12,14 @@ import pytest
 import sympy as sp
 
 from derive.codegen import NumbaPrinter
-from derive.energy import (InverseCubeMinusOne, InverseSqrt, inverse_distance_binomial,
-                           inverse_distance_exact)
+from derive.energy import (
+    InverseCubeMinusOne,
+    InverseSqrt,
+    inverse_distance_binomial,
+    inverse_distance_exact,
+)
 from derive.pipeline import to_state_symbols
-from derive.symbols import COORDINATES, P, STATE_SYMBOLS, TETHER_LENGTHS, t
+from derive.symbols import COORDINATES, STATE_SYMBOLS, TETHER_LENGTHS, P, t
 
 a, b, r0, omega = P["a"], P["b"], P["r0"], P["omega"]
 dx, dy, th = COORDINATES

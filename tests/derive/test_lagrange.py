@@ -12,8 +12,16 @@ from sympy.physics.mechanics import LagrangesMethod
 
 from derive import printed
 from derive.pipeline import to_state_symbols, truncate_inverse_r0
-from derive.symbols import (ACCELERATION_SYMBOLS, COORDINATES, P, PARAMETERS, STATE_SYMBOLS,
-                            TETHER_LENGTHS, TETHER_REST, t)
+from derive.symbols import (
+    ACCELERATION_SYMBOLS,
+    COORDINATES,
+    PARAMETERS,
+    STATE_SYMBOLS,
+    TETHER_LENGTHS,
+    TETHER_REST,
+    P,
+    t,
+)
 
 m1, m2, m3, a, b, r0, omega = (P[k] for k in ("m1", "m2", "m3", "a", "b", "r0", "omega"))
 dx, dy, th, dxd, dyd, thd = STATE_SYMBOLS

@@ -18,24 +18,35 @@ import sympy as sp
 
 from derive.energy import exact_gravity_as_powers
 from derive.models import BY_NAME
-from derive.orbit import (FREE_DEFINITIONS, FREE_PARAMETERS, FREE_STATE_SYMBOLS, J2, R_E,
-                          circular_substitution, derive_free, free_kinematics, free_potential,
-                          free_state_substitution, inverse_powers_binomial,
-                          inverse_powers_exact, r_ref)
+from derive.orbit import (
+    FREE_DEFINITIONS,
+    FREE_PARAMETERS,
+    FREE_STATE_SYMBOLS,
+    J2,
+    R_E,
+    circular_substitution,
+    derive_free,
+    free_kinematics,
+    free_potential,
+    free_state_substitution,
+    inverse_powers_binomial,
+    inverse_powers_exact,
+    r_ref,
+)
 from derive.pipeline import derive
-from derive.symbols import P, TETHER_LENGTHS
+from derive.symbols import TETHER_LENGTHS, P
 from tethersim.generated import free_dispatch
 
 ROWS = ("delta_x", "delta_y", "theta")
 NAMES = tuple(d.name for d in FREE_DEFINITIONS)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def free_model(name):
     return derive_free(next(d for d in FREE_DEFINITIONS if d.name == name))
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def planar_model(name):
     return derive(BY_NAME[name])
 
@@ -136,7 +147,7 @@ def _random_params(rng):
     return np.array([values[p.name] for p in FREE_PARAMETERS])
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _lambdified(name):
     """mpmath functions of (y, p): M, f, per-family Q (gated by λ > l0), energy."""
     model = free_model(name)
@@ -190,11 +201,13 @@ def test_generated_kernels_equal_the_symbolic_model_at_random_states(name):
         # eight orders below the ~1e-5 m/s² tidal terms
         scale = [1e-13, 1e-13, 1e-13, 1e-13, 1e-20]
         for k in range(5):
-            assert abs(d[5 + k] - float(qdd[k])) < scale[k] + 1e-12 * abs(float(qdd[k])), (k, d[5 + k], qdd[k])
+            truth = float(qdd[k])
+            assert abs(d[5 + k] - truth) < scale[k] + 1e-12 * abs(truth), (k, d[5 + k], truth)
         out = np.zeros((7, 5))
         free_dispatch.family_forces(model_index, y, p, out)
         assert np.allclose(out, np.array(Q, dtype=float), rtol=1e-10, atol=1e-14)
-        assert abs(free_dispatch.jacobi(model_index, y, p) - float(energy)) < 1e-6 + 1e-15 * abs(float(energy))
+        h = float(energy)
+        assert abs(free_dispatch.jacobi(model_index, y, p) - h) < 1e-6 + 1e-15 * abs(h)
     assert len(seen) >= 3  # both tethers' gates were exercised
 
 

@@ -7,10 +7,10 @@ import numpy as np
 import pytest
 
 import tethersim as ts
-from tethersim.engine.integrators import dop853_tableau as tab
-from tethersim.engine.simulate import RK4StepWarning, simulate
-from tethersim.engine.linearise import rk4_amplification, rk4_max_step
 from tethersim.analysis.validation import libration_case
+from tethersim.engine.integrators import dop853_tableau as tab
+from tethersim.engine.linearise import rk4_amplification, rk4_max_step
+from tethersim.engine.simulate import RK4StepWarning, simulate
 
 
 @pytest.fixture(scope="module")

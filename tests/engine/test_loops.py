@@ -13,10 +13,9 @@ import numpy as np
 import pytest
 
 import tethersim.generated as generated
-from tethersim import _jit
-from tethersim.generated.dispatch import MODEL_NAMES
-from tethersim import load_preset, simulate
+from tethersim import _jit, load_preset, simulate
 from tethersim.engine.dynamics import KERNELS, state_size
+from tethersim.generated.dispatch import MODEL_NAMES
 from tethersim.model.registry import MODELS
 
 REPO = Path(__file__).resolve().parents[2]

@@ -13,8 +13,9 @@ import pytest
 from scipy.integrate import cumulative_trapezoid
 
 import tethersim as ts
-from tethersim.model.registry import THESIS_VARIANTS as MODEL_NAMES
 from tethersim.analysis.classify import CLASSES, classify
+from tethersim.analysis.metrics import pitch_metrics
+from tethersim.engine.result import SimResult
 from tethersim.experiments.compare import (
     COLUMNS,
     compare,
@@ -22,8 +23,7 @@ from tethersim.experiments.compare import (
     outcome_differences,
     parse_models,
 )
-from tethersim.analysis.metrics import pitch_metrics
-from tethersim.engine.result import SimResult
+from tethersim.model.registry import THESIS_VARIANTS as MODEL_NAMES
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 

@@ -7,10 +7,10 @@ import numpy as np
 import pytest
 
 import tethersim as ts
-from tethersim.experiments import headlines as hl
 from tethersim.analysis.metrics import wrap
-from tethersim.model.params import with_values
 from tethersim.engine.linearise import rk4_max_step
+from tethersim.experiments import headlines as hl
+from tethersim.model.params import with_values
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 

@@ -60,7 +60,7 @@ def _resume_repairs(out, n_points, reference):
 def test_truncated_chunk_is_recomputed_not_a_traceback(store, reference):
     chunk = store / "mean_pitch" / "1.0"  # row E2 = 0.043
     chunk.write_bytes(chunk.read_bytes()[:7])
-    with pytest.raises(Exception):  # premise: the chunk no longer decompresses
+    with pytest.raises(Exception):  # noqa: B017  premise: the chunk no longer decompresses
         xr.open_zarr(store).mean_pitch.load()
     _resume_repairs(store, 2, reference)
 

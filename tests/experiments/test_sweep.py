@@ -13,14 +13,13 @@ import pytest
 import xarray as xr
 
 import tethersim as ts
-
 from tethersim import load_preset, simulate
 from tethersim.analysis.classify import classify
 from tethersim.analysis.metrics import pitch_metrics
-from tethersim.model.params import parse_grid
-from tethersim.model.satellite import SatelliteError
 from tethersim.experiments.sweep import StoreMismatch, SweepInterrupted, SweepSpec, run_sweep, sweep
 from tethersim.experiments.sweep.spec import ATOL_PER_RTOL, DEFAULT_RTOL, SAMPLES_PER_PERIOD
+from tethersim.model.params import parse_grid
+from tethersim.model.satellite import SatelliteError
 
 SAT = load_preset("satI")
 # E1 x E2 around the preset (E1 0.004, E2 0.0427 N/mm^2): both sides of the stable band

@@ -30,7 +30,7 @@ def test_band_slope_recovers_the_synthetic_slope_despite_an_isolated_point():
 
 def test_stable_band_edges_bracket_the_band():
     ds = synthetic(slope=10.0, width=0.004, isolated=False)
-    for x, lo, hi, centre in stable_band(ds):
+    for x, lo, hi, _centre in stable_band(ds):
         assert lo <= 10 * x <= hi
         assert hi - lo == pytest.approx(0.004, abs=0.001 + 1e-12)  # grid step 0.001
 

@@ -6,11 +6,11 @@ import pytest
 from tethersim import load_preset
 from tethersim.analysis.classify import STABLE
 from tethersim.analysis.metrics import SETTLING_TOL
+from tethersim.experiments.sweep import SweepSpec, run_point
+from tethersim.experiments.tune import EDGE_RTOL, stable_band_E2
 from tethersim.model.params import from_si
 from tethersim.model.presets import load
 from tethersim.model.presets.write import dumps
-from tethersim.experiments.sweep import SweepSpec, run_point
-from tethersim.experiments.tune import EDGE_RTOL, stable_band_E2
 
 PERIODS = 10.0  # short runs: the pitch trim is set by the moduli, not the run length
 
@@ -25,7 +25,7 @@ def test_band_edges_are_where_the_steady_pitch_leaves_the_band():
     lo, hi, runs = stable_band_E2(sat, periods=PERIODS)
     assert lo < sat.E2 * 1.02 and hi > sat.E2 * 0.98
     d = 3 * EDGE_RTOL * hi
-    for edge, inside, outside in ((lo, lo + d, lo - d), (hi, hi - d, hi + d)):
+    for inside, outside in ((lo + d, lo - d), (hi - d, hi + d)):
         assert abs(theta_ss(sat, inside)["steady_state_pitch"]) <= SETTLING_TOL
         assert abs(theta_ss(sat, outside)["steady_state_pitch"]) > SETTLING_TOL
     centre = theta_ss(sat, 0.5 * (lo + hi))

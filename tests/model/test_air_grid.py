@@ -15,8 +15,7 @@ import pytest
 from numba import njit
 
 from tethersim.model.air import AirModel
-from tethersim.model.air.grid import (AXES_FIELDS, gmst, longitude_kernel,
-                                      msis_density_kernel)
+from tethersim.model.air.grid import AXES_FIELDS, gmst, longitude_kernel, msis_density_kernel
 from tethersim.model.air.indices import indices_for_day
 from tethersim.model.air.model import msis_grid
 

@@ -4,8 +4,16 @@ from __future__ import annotations
 
 import pytest
 
-from tethersim.output.docnumbers import (FIGURES, QUANTITIES, agrees, evaluate, locate,
-                                         numbers_in, parse, read)
+from tethersim.output.docnumbers import (
+    FIGURES,
+    QUANTITIES,
+    agrees,
+    evaluate,
+    locate,
+    numbers_in,
+    parse,
+    read,
+)
 
 FAST = [f for f in FIGURES if not f.slow]
 SLOW = [f for f in FIGURES if f.slow]

@@ -21,6 +21,13 @@ def run_summary(res: SimResult, out: Outcome | None = None) -> dict:
     -------
     dict
         Keys carry their units (``"settling time [h]"``); NaN means "never".
+
+    Examples
+    --------
+    >>> import tethersim as ts
+    >>> s = ts.run_summary(ts.simulate(ts.load_preset("satI"), periods=1, progress=False))
+    >>> s["status"], s["largest torque on theta: family"] in ts.FAMILIES
+    ('ok', True)
     """
     out = outcome(res, forces=False) if out is None else out
     m = out.metrics

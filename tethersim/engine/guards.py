@@ -131,9 +131,10 @@ def check_simulation(periods, steps=None, method="adaptive", samples=None, check
         what = "steps" if method == "rk4" else "output samples"
         hint = ("fewer --steps or --periods, or the adaptive method, whose --steps sets only the "
                 "output samples" if method == "rk4" else "fewer --steps (output samples) or --periods")
+        check_note = f", x{runs} with the convergence check" if runs > 1 else ""
         raise SizeLimitError(
             f"--steps/--periods: {rows - 1:.6g} {what} need about {human(need)} of output memory "
-            f"(t and {STATE_COLUMNS} states x 8 bytes{', x' + str(runs) + ' with the convergence check' if runs > 1 else ''}); "
+            f"(t and {STATE_COLUMNS} states x 8 bytes{check_note}); "
             f"allowed at most {human(limit)} (TETHERSIM_MAX_OUTPUT_BYTES): use {hint}")
 
 

@@ -67,23 +67,66 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
              rtol: float = 1e-10, atol: float = 1e-12, locate_switches: bool | None = None,
              samples: int | None = None, check: bool = False,
              progress: bool | None = None, step_warning: bool = True) -> SimResult:
-    """Integrate a satellite for ``periods`` orbits.
+    """Integrate a satellite for ``periods`` orbits with one model.
 
-    steps: RK4 step count (step = periods x orbital period / steps), default
-      300 per orbit as in the thesis; for "adaptive" it sets the number of
-      output samples instead (default 200 per orbit) unless ``samples`` is given.
-    check: also estimate the error of the final state (RK4: rerun at half the
-      step; adaptive: rerun at rtol/100) into result.error_estimate, which
-      costs a second, longer integration.  Off by default (one integration, as
-      scipy's solve_ivp); ``result.estimate_error()`` does it on demand.
-    progress: show a progress bar (None: only if the run takes over a second).
-      False also runs the whole integration in one compiled call (no bar to update):
-      the same steps, fewer GIL hand-overs for sweeps on threads; Ctrl-C is then
-      seen only when the run ends.
-    step_warning: RK4 only, warn (RK4StepWarning) when the step exceeds what the
-      linearised system supports (sweeps record stability.rk4_amplification instead).
+    Parameters
+    ----------
+    sat : Satellite
+        The satellite (``load_preset``, ``load``, ``Satellite.replace``).
+    periods : float, optional
+        Run length in orbital periods (default 5).
+    steps : int, optional
+        RK4: the number of steps (step = periods x period / steps; default 300
+        per orbit).  Adaptive: the number of output samples, unless ``samples``
+        is given (default 200 per orbit).
+    method : {"adaptive", "rk4"}, optional
+        DOP853 with error control and taut/slack switch location (default), or
+        the thesis's fixed-step RK4 (Eqs 4.1-4.5).
+    model : str, optional
+        Any name in ``tethersim.MODELS`` (default ``"derived"``).
+    rtol, atol : float, optional
+        Adaptive tolerances (default 1e-10, 1e-12).
+    locate_switches : bool, optional
+        Land steps on taut/slack switches (default: True adaptive, False RK4, as
+        the thesis).
+    samples : int, optional
+        Adaptive output samples.  Metrics use a grid of at least 200 per orbit
+        whatever this is (``SimResult.fine_t``).
+    check : bool, optional
+        Also estimate the error of the final state by a finer rerun (RK4 at half
+        the step, adaptive at rtol/100); off by default (one integration, as
+        scipy's ``solve_ivp``); ``SimResult.estimate_error()`` does it on demand.
+    progress : bool or None, optional
+        Progress bar: None shows one for runs over a second, False never (the
+        run is then one compiled call; Ctrl-C is seen when it ends).
+    step_warning : bool, optional
+        RK4: warn (``RK4StepWarning``) when the step exceeds what the
+        linearised system supports.
+
+    Returns
+    -------
+    SimResult
+        The samples and counters.  ``status`` is ``"ok"``, ``"diverged"``,
+        ``"failed"``, ``"interrupted"`` (Ctrl-C: everything finished is kept),
+        ``"re-entered"`` or ``"left-domain"`` (tethersim.engine.domain: the run
+        is truncated at the first sample outside the model's domain).
+
+    Raises
+    ------
+    ValueError
+        A bad argument, with its name and allowed range.
+    tethersim.engine.guards.SizeLimitError
+        An output that would exceed the memory limit (TETHERSIM_MAX_OUTPUT_BYTES).
+
+    Examples
+    --------
+    >>> import tethersim as ts
+    >>> res = ts.simulate(ts.load_preset("satI"), periods=1, progress=False)
+    >>> res.status, res.t.size
+    ('ok', 201)
     """
-    from tethersim.engine.guards import check_simulation  # refuse an output that would not fit, before allocating
+    # refuse an output that would not fit, before allocating anything
+    from tethersim.engine.guards import check_simulation
     check_simulation(periods, steps, method, samples, check)
     if not isinstance(sat, Satellite):
         raise TypeError(f"sat must be a tethersim Satellite (load_preset/load), got {type(sat).__name__}")

@@ -34,9 +34,35 @@ class SatelliteError(ValueError):
 class Satellite:
     """A tethered-balloon gravity-gradient satellite (SI units throughout).
 
-    initial: (δx, δy, θ, δẋ, δẏ, θ̇) at t = 0 in m, m, rad, m/s, m/s, rad/s.
-    density_mode: "uniform" (thesis: ρ at the orbit altitude for every body)
-      or "per-body" (each body at its own altitude).
+    Validated on creation: one-line :class:`SatelliteError` naming the field and
+    its allowed range (plausible ranges: ``tethersim.model.params.PARAMETERS``,
+    docs/limits.md).  ``replace(**changes)`` returns a validated copy.
+
+    Attributes
+    ----------
+    name : str
+        Display name.
+    m1, m2, m3 : float
+        Tip-mass, bus, balloon masses [kg].
+    A1, A2, A3 : float
+        Their frontal areas [m²].
+    a, b : float
+        COM to bus and COM to tip-mass distances [m] (m1 b = m2 a).
+    l10, l20 : float
+        Rest lengths of tether 1 (tip-mass) and tether 2 (bus) [m].
+    E1, E2 : float
+        Tether moduli times the 1 mm² cross-section [N] (N/mm² at the edge).
+    c1, c2 : float
+        Tether damping coefficients [N s/m].
+    altitude : float
+        Circular orbit altitude [m] (km at the edge).
+    initial : tuple
+        (δx, δy, θ, δẋ, δẏ, θ̇) at t = 0 in m, m, rad, m/s, m/s, rad/s.
+    CD : float
+        Drag coefficient of every body.
+    density_mode : str
+        "uniform" (thesis: ρ at the orbit altitude for every body) or
+        "per-body" (each body at its own altitude).
     """
 
     name: str

@@ -20,7 +20,6 @@ from pathlib import Path
 import numpy as np
 
 from tethersim.engine.result import SimResult
-from tethersim.generated.layout import STATE, STATE_UNITS
 
 ORBIT_COLUMNS = ("X", "Y", "VX", "VY")
 ORBIT_UNITS = ("m", "m", "m/s", "m/s")
@@ -56,6 +55,14 @@ def write_table(path, rows, columns) -> Path:
     -------
     Path
         The file written.
+
+    Examples
+    --------
+    >>> import tempfile, tethersim as ts
+    >>> path = ts.write_table(tempfile.mkdtemp() + "/t.csv", [{"h": 0.1, "ok": True}],
+    ...                       (("h", "settling time [h]"), ("ok", "stable")))
+    >>> path.read_text().splitlines()
+    ['settling time [h],stable', '0.1,true']
     """
     path = Path(path)
     with path.open("w", newline="") as fh:
@@ -79,14 +86,40 @@ def write_rows(path, rows) -> Path:
                        tuple((k, k) for k in keys))
 
 
-def timeseries_columns() -> tuple:
+def timeseries_columns(res: SimResult) -> tuple:
     """(name, unit) of every column of a run's time series, time first."""
-    return (("t", "s"),) + tuple(zip(STATE + ORBIT_COLUMNS, STATE_UNITS + ORBIT_UNITS))
+    lay = res.layout
+    cols = tuple(zip(lay.state, lay.state_units))
+    if res.states.shape[1] > lay.n_state:  # the COM orbit of a circular-orbit model
+        cols += tuple(zip(ORBIT_COLUMNS, ORBIT_UNITS))
+    return (("t", "s"),) + cols
 
 
 def write_timeseries(res: SimResult, path) -> Path:
-    """Write a run's samples (t, the model state, the COM orbit) as CSV, SI units."""
-    names = timeseries_columns()
+    """Write a run's samples as CSV (SI units in the headers).
+
+    Parameters
+    ----------
+    res : SimResult
+        The run.
+    path : str or Path
+        File to write.
+
+    Returns
+    -------
+    Path
+        The file: a column ``t [s]``, one per state of the model, and for a
+        circular-orbit model the COM's X, Y [m], VX, VY [m/s].
+
+    Examples
+    --------
+    >>> import tempfile, tethersim as ts
+    >>> res = ts.simulate(ts.load_preset("satI"), periods=0.1, progress=False)
+    >>> p = ts.write_timeseries(res, tempfile.mkdtemp() + "/run.csv")
+    >>> p.read_text().splitlines()[0][:30]
+    't [s],delta_x [m],delta_y [m],'
+    """
+    names = timeseries_columns(res)
     data = np.column_stack([res.t, res.states])
     rows = ({n: v for (n, _), v in zip(names, row)} for row in data)
     return write_table(path, rows, tuple((n, f"{n} [{u}]") for n, u in names))
@@ -97,7 +130,7 @@ def to_xarray(res: SimResult, attrs: dict | None = None):
     import xarray as xr
 
     data = {n: ("t", res.states[:, i], {"units": u})
-            for i, (n, u) in enumerate(timeseries_columns()[1:])}
+            for i, (n, u) in enumerate(timeseries_columns(res)[1:])}
     found = res.satellite.implausible if res.satellite.allow_implausible else ()
     meta = {"satellite": res.satellite.name, "model": res.model, "method": res.method,
             "label": res.label, "status": res.status, "message": res.message,
@@ -112,7 +145,30 @@ def to_xarray(res: SimResult, attrs: dict | None = None):
 
 
 def write_netcdf(res: SimResult, path, attrs: dict | None = None) -> Path:
-    """Write the time series as NetCDF (scipy engine: no compiled NetCDF library needed)."""
+    """Write the time series as NetCDF (scipy engine: no compiled NetCDF library needed).
+
+    Parameters
+    ----------
+    res : SimResult
+        The run; its status, message, model and satellite go into the attributes.
+    path : str or Path
+        File to write.
+    attrs : dict, optional
+        More global attributes.
+
+    Returns
+    -------
+    Path
+        The file written.
+
+    Examples
+    --------
+    >>> import tempfile, xarray, tethersim as ts
+    >>> res = ts.simulate(ts.load_preset("satI"), periods=0.1, progress=False)
+    >>> p = ts.write_netcdf(res, tempfile.mkdtemp() + "/run.nc")
+    >>> xarray.open_dataset(p, engine="scipy").attrs["status"]
+    'ok'
+    """
     path = Path(path)
     to_xarray(res, attrs).to_netcdf(path, engine="scipy")
     return path

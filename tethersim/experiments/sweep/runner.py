@@ -76,13 +76,48 @@ def map_points(spec: SweepSpec, ks=None, workers: int | None = None) -> list:
 def run_sweep(spec: SweepSpec, out, *, workers: int | None = None, scheduler: str | None = None,
               dask_workers: int | None = None, restart: bool = False, progress: bool | None = None,
               block: int | None = None, stop_after: int | None = None) -> SweepStore:
-    """Compute every pending point of ``spec`` into the store at ``out``; return the store.
+    """Compute every pending point of ``spec`` into the store at ``out``.
 
-    Resumes a store made by the same spec.  Ctrl-C (KeyboardInterrupt) writes every
-    finished point and raises SweepInterrupted; any other error also writes them
-    first.  stop_after: simulate an interruption after that many points (tests).
-    A second writer to the same store stops at once (StoreLocked, naming the first);
-    a resumed store is verified first (tethersim.experiments.sweep.verify).
+    Resumes a store made by the same spec (verified first: damaged points are
+    recomputed, tethersim.experiments.sweep.verify).  Ctrl-C writes every
+    finished point and raises :class:`SweepInterrupted`; any other error also
+    writes them first.  A second writer to the same store stops at once
+    (``StoreLocked``, naming the first).
+
+    Parameters
+    ----------
+    spec : SweepSpec
+        What to compute.
+    out : str or Path
+        The Zarr store (created, or resumed).
+    workers : int, optional
+        Threads (default: every core).
+    scheduler : str, optional
+        Address of a Dask scheduler to run the points on.
+    dask_workers : int, optional
+        Start a local Dask cluster with this many workers.
+    restart : bool, optional
+        Discard a store made by another spec or code instead of refusing it.
+    progress : bool or None, optional
+        Progress bar (None: when the sweep takes over a second).
+    block : int, optional
+        Points per task.
+    stop_after : int, optional
+        Simulate an interruption after that many points (tests).
+
+    Returns
+    -------
+    SweepStore
+        The store; ``.dataset()`` gives the labelled xarray data set.
+
+    Examples
+    --------
+    >>> import tempfile, tethersim as ts
+    >>> spec = ts.SweepSpec(ts.load_preset("satI"), (("E1", (0.003, 0.004)),), periods=1)
+    >>> ds = ts.run_sweep(spec, tempfile.mkdtemp() + "/s.zarr", workers=1,
+    ...                   progress=False).dataset()
+    >>> int(ds.done.sum())
+    2
     """
     store = SweepStore(out, spec, restart=restart)  # takes the store's writer lock
     try:

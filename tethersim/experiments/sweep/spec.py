@@ -27,11 +27,31 @@ ATOL_PER_RTOL = 1e-2  # atol = rtol x this: states are O(1) rad and O(10) m
 
 @dataclass(frozen=True)
 class SweepSpec:
-    """A grid of runs of ``satellite`` with ``axes`` = ((name, values), ...) changed.
+    """A grid of runs of ``satellite`` with one or two parameters changed.
 
-    periods: orbits per run (thesis: 50, about three days, p. 5-6).
-    method: "adaptive" (DOP853 at rtol, converged) or "faithful" (the
-      thesis's fixed RK4 step, ``steps_per_period`` per orbit, switches not located).
+    Plain data: it travels to Dask workers and into the store's attributes.
+
+    Attributes
+    ----------
+    satellite : Satellite
+        The base satellite.
+    axes : tuple
+        ((name, values), ...) with values in edge units (tethersim.model.params).
+    periods : float
+        Orbits per run (thesis: 50, about three days, p. 5-6).
+    method : str
+        "adaptive" (DOP853 at rtol) or "faithful" (the thesis's fixed RK4 step,
+        ``steps_per_period`` per orbit, switches not located).
+    model : str
+        Model name.
+    rtol : float
+        Adaptive tolerance.
+    steps_per_period, samples_per_period : int
+        RK4 steps and adaptive output samples per orbit.
+    tol : float
+        Settling band [rad].
+    names : tuple
+        The axis names, in order.
     """
 
     satellite: Satellite

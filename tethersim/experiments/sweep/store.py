@@ -66,7 +66,8 @@ def _empty_dataset(spec: SweepSpec) -> xr.Dataset:
             attrs.update(flag_values=[0, 1, 2], flag_meanings="ok diverged integrator_failed")
         data[name] = (dims, np.full(spec.shape, FILL[dtype], dtype=dtype), attrs)
     data["checksum"] = (dims, np.full(spec.shape, -1, dtype=np.int64),
-                        {"long_name": "FNV-1a hash of the point's record (tethersim.experiments.sweep.verify)"})
+                        {"long_name": "FNV-1a hash of the point's record "
+                                      "(tethersim.experiments.sweep.verify)"})
     data["done"] = (dims, np.zeros(spec.shape, dtype=bool), {"long_name": "point computed"})
     attrs = {"title": f"tethersim sweep of {spec.satellite.name} over {' x '.join(spec.names)}",
              "spec": spec.to_json(), "tethersim_version": __version__, "code": code_id(),

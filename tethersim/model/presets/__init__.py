@@ -126,7 +126,33 @@ def _file_key(msg: str, where: str) -> str:
 
 
 def load(path, allow_implausible: bool = False) -> Satellite:
-    """Load a satellite TOML file (see module docstring for the layout)."""
+    """Load a satellite from a TOML file (layout: this module's docstring, the presets).
+
+    Parameters
+    ----------
+    path : str or Path
+        The file; values in preset units (E1, E2 in N/mm², altitude in km, else SI).
+    allow_implausible : bool, optional
+        Accept values outside the plausible ranges (docs/limits.md); the run's
+        summary then lists them.
+
+    Returns
+    -------
+    Satellite
+
+    Raises
+    ------
+    SatelliteError
+        One line naming the file, the field and the allowed range.
+
+    Examples
+    --------
+    >>> import tethersim as ts
+    >>> from importlib import resources
+    >>> path = resources.files("tethersim.model.presets") / "satI.toml"
+    >>> ts.load(path).name
+    'SatI'
+    """
     path = Path(path)
     try:
         text = path.read_text()
@@ -140,7 +166,30 @@ def load(path, allow_implausible: bool = False) -> Satellite:
 
 
 def load_preset(name: str, allow_implausible: bool = False) -> Satellite:
-    """A shipped preset by name: satI, satII or dumbsat (any case)."""
+    """A shipped preset by name.
+
+    Parameters
+    ----------
+    name : str
+        ``satI``, ``satII`` or ``dumbsat`` (any case).
+    allow_implausible : bool, optional
+        As for :func:`load`.
+
+    Returns
+    -------
+    Satellite
+
+    Raises
+    ------
+    SatelliteError
+        An unknown name (the message lists the presets).
+
+    Examples
+    --------
+    >>> import tethersim as ts
+    >>> round(ts.load_preset("satI").altitude / 1e3)
+    200
+    """
     key = name.lower()
     if key not in PRESET_NAMES:
         raise SatelliteError(f"unknown preset {name!r}; available: satI, satII, dumbsat "
