@@ -102,7 +102,8 @@ def _model_state_size(model):
 @njit(cache=True)
 def body_densities(y, p, pw):
     """pw = p with ρ1, ρ2, ρ3 at each body's own altitude |r_i| − R_E (3.10-3.12)."""
-    pw[:] = p
+    for i in range(p.shape[0]):  # a loop: no slice-assignment error path to compile
+        pw[i] = p[i]
     r0, a, b, th = p[P_R0], p[P_A], p[P_B], y[2]
     s, c = math.sin(th), math.cos(th)
     h1 = math.hypot(b * s, r0 + b * c) - R_EARTH

@@ -22,7 +22,7 @@ from numba import literally, njit
 from ..dynamics import derivative, tether_margins
 from . import switching
 from .borrow import borrow
-from .steps import (N_K, dop853_dense, dop853_error_norm, dop853_interpolate,
+from .steps import (N_K, copy_into, dop853_dense, dop853_error_norm, dop853_interpolate,
                     dop853_step)
 
 ORDER = 8
@@ -129,8 +129,8 @@ def _dop853_loop(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, ou
         while i_out < out_t.shape[0] and out_t[i_out] <= t_new:
             dop853_interpolate(F, y, (out_t[i_out] - t) / h_try, out_y[i_out])
             i_out += 1
-        y[:] = y_new
-        f[:] = K[12]
+        copy_into(y, y_new)
+        copy_into(f, K[12])
         t = t_new
         h = h_next
         for i in range(n):

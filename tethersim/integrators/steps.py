@@ -22,6 +22,17 @@ from numba import njit
 from ..dynamics import derivative
 from .dop853_tableau import A, B, C, D, E3, E5, N_STAGES
 
+@njit(cache=True)
+def copy_into(dst, src):
+    """dst[i] = src[i] for every i of src.
+
+    A loop, not ``dst[:] = src``: numba compiles a shape-mismatch error path
+    (string formatting, about a second) for every slice assignment it lowers.
+    """
+    for i in range(src.shape[0]):
+        dst[i] = src[i]
+
+
 N_K = 16  # rows of the DOP853 stage array: 12 stages, FSAL, 3 dense-output stages
 RK4_C = (0.0, 0.5, 0.5, 1.0)  # nodes of classical RK4 (stage s uses k_{s-1} with weight c_s)
 
@@ -69,7 +80,7 @@ def dop853_step(model, per_body, t, y, f, h, p, pw, K, ys, y_new):
     y_new) (first same as last); ys is a stage-state scratch vector.
     """
     n = y.shape[0]
-    K[0, :] = f
+    copy_into(K[0], f)
     for s in range(1, N_STAGES + 1):
         if s < N_STAGES:
             for i in range(n):
