@@ -24,7 +24,7 @@ import numba
 from numba import types
 from numba.core.dispatcher import Dispatcher
 
-COLD_COMPILE_S = 30  # estimate before any compile was timed here (2 cores, one model)
+COLD_COMPILE_S = 20  # estimate before any compile was timed here (2 cores: 14 s for one loop)
 ANNOUNCE_AFTER_S = 2.0  # compiles shorter than this are not worth recording
 _TIMING_FILE = "last-cold-compile-seconds"
 _announced = False
