@@ -16,7 +16,8 @@ with gcc -O3.  Results go to stdout (table at the end) and bench/results.json.
   4. sympy.lambdify + solve_ivp and PyDy + solve_ivp, same model and tolerance
   5. `python -m derive <tmpdir>` wall time
   6. second `tethersim run satI --periods 50` wall time (numba caches warm)
-  7. sweep throughput, 1 thread vs every core (bench/sweep_bench.py)
+  7. sweep throughput, 1 thread vs every core (bench/sweep_bench.py); C+OpenMP sweep
+     driver vs run_sweep at 5 and 50 orbits, 1 and 2 threads (bench/csweep.py)
   8. `tethersim report` wall time (not with --quick)
 """
 from __future__ import annotations
@@ -731,6 +732,8 @@ def main(argv=None) -> int:
     bench_dop853(rep, S, q)
     bench_tools(rep, S, q, lamb, pydy_f, pydy_gen)
     sweep_bench.bench_sweep(rep, q)
+    import csweep
+    csweep.bench_csweep(rep, S, q, log)
     if not args.skip_slow:
         bench_derive(rep, q)
         bench_cli(rep, q)
