@@ -105,6 +105,16 @@ def _stage_state(s, y, h, K, ys):
         ys[i + 2] = y[i + 2] + h * a2
         ys[i + 3] = y[i + 3] + h * a3
         i += 4
+    if i + 2 <= n:  # 10-float states: two blocks of 4, then this pair
+        a0 = 0.0
+        a1 = 0.0
+        for j in range(s):
+            c = A[s, j]
+            a0 += c * K[j, i]
+            a1 += c * K[j, i + 1]
+        ys[i] = y[i] + h * a0
+        ys[i + 1] = y[i + 1] + h * a1
+        i += 2
     while i < n:
         acc = 0.0
         for j in range(s):
