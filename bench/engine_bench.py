@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 
-from timing import clock, interleave, median
+from timing import cpu_clock as clock, interleave, median
 
 MODEL = 0  # 'derived' (generated.dispatch.MODEL_NAMES), the model of the C port
 PERIODS = 50
@@ -54,7 +54,7 @@ def bench_simulate(rep, S, q, log):
     from tethersim import simulate
     sat, p, y0 = S["sat"], S["p"], S["y0"]
     log(f"\n[2b] simulate(sat, periods={PERIODS}, steps={RK4_STEPS}, method='rk4'), default "
-        f"arguments, vs C RK4 writing the same {RK4_STEPS + 1} rows")
+        f"arguments, vs C RK4 writing the same {RK4_STEPS + 1} rows; thread CPU time")
     h = PERIODS * sat.period / RK4_STEPS
     out_t, out_y = np.empty(RK4_STEPS + 1), np.empty((RK4_STEPS + 1, y0.size))
     runs = {}
@@ -85,7 +85,7 @@ def bench_simulate(rep, S, q, log):
     rep.target("T2b", "2b. simulate(rk4) default args <= 1.3x C RK4", ratio, "<=", 1.3)
 
     log(f"\n[3b] simulate(sat, periods={PERIODS}) (adaptive, default arguments) per accepted "
-        f"step, vs C DOP853 on the same output grid")
+        f"step, vs C DOP853 on the same output grid; thread CPU time")
     n_out = SAMPLES_PER_PERIOD * PERIODS
     T = PERIODS * sat.period
     grid = np.linspace(0.0, T, n_out + 1)[1:]
