@@ -113,14 +113,16 @@ def ivp_fun_pydy(f, p):
     return fun
 
 
-def ivp_fun_numba(cfg, p):
-    """solve_ivp fun(t, y) calling the compiled tethersim.engine.dynamics.derivative."""
-    from tethersim.engine.dynamics import derivative
+def ivp_fun_numba(derivative, p):
+    """solve_ivp fun(t, y) calling the compiled tethersim.engine.dynamics.derivative.
 
+    derivative: its entry point for one model (bench/engine_bench.derivative_entry),
+    called as derivative(model, per_body, t, y, p, pw, dydt).
+    """
     pw = p.copy()
 
     def fun(t, y):
         dydt = np.empty(10)
-        derivative(cfg, t, y, p, pw, dydt)
+        derivative(0, False, t, y, p, pw, dydt)
         return dydt
     return fun

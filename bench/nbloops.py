@@ -31,12 +31,12 @@ def rhs6_loop(y, p, n, eps):
 
 
 @njit(cache=False)
-def derivative_loop(cfg, y, p, pw, n, eps):
-    """n calls of tethersim.engine.dynamics.derivative (10-state, model dispatch)."""
+def derivative_loop(y, p, pw, n, eps):
+    """n calls of tethersim.engine.dynamics.derivative (10-state, model 'derived' as a literal)."""
     dydt = np.empty(10)
     acc = 0.0
     for _ in range(n):
-        derivative(cfg, 0.0, y, p, pw, dydt)
+        derivative(0, False, 0.0, y, p, pw, dydt)
         for k in range(10):
             y[k] += eps * dydt[k]
         acc += dydt[5]

@@ -140,7 +140,8 @@ def test_interrupted_run_keeps_every_finished_step(sat, monkeypatch):
         return real(*args)
 
     monkeypatch.setattr(sim, "rk4_run", flaky)
-    part = simulate(sat, periods=1, steps=300, method="rk4", check=False)
+    # progress=True: always in chunks (progress=None runs a short run in one call)
+    part = simulate(sat, periods=1, steps=300, method="rk4", check=False, progress=True)
     assert part.status == "interrupted"
     n = part.t.size
     assert 1 < n < full.t.size
@@ -158,7 +159,7 @@ def test_nonfinite_start_returns_at_once_instead_of_hanging(sat):
     y = initial_state(sat.initial, sat.r0, sat.r0 * sat.omega)
     out_t = np.array([100.0])
     out_y = np.empty((1, 10))
-    t, h, i_out, status = dop853_run(np.zeros(2, np.int64), 0.0, 100.0, y, 0.0, p, p.copy(),
+    t, h, i_out, status = dop853_run(0, False, 0.0, 100.0, y, 0.0, p, p.copy(),
                                      1e-10, 1e-12, True, out_t, out_y, 0, 1000,
                                      np.zeros(5, np.int64))
     assert status == STATUS_NONFINITE and t == 0.0

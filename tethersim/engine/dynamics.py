@@ -111,7 +111,8 @@ def _model_densities(model, y, p, pw):
     i1, i2, i3 = (MODELS[k].parameters.index(n) for n in ("rho1", "rho2", "rho3"))
 
     def impl(model, y, p, pw):
-        pw[:] = p
+        for i in range(p.shape[0]):  # a loop: no slice-assignment error path to compile
+            pw[i] = p[i]
         r1, r2, r3 = radii(y, p)
         pw[i1] = density_kernel(r1 - R_EARTH, TABLE)
         pw[i2] = density_kernel(r2 - R_EARTH, TABLE)

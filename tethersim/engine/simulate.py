@@ -34,6 +34,9 @@ SAMPLES_PER_PERIOD = 200  # adaptive output grid when no steps are given
 # below the pitch libration's (~3100 s); the output grid is refined to at least this
 METRIC_SAMPLES_PER_PERIOD = 200
 CHUNKS = 100  # progress-bar granularity (and how often Ctrl-C is seen)
+# progress=None: a run whose first chunk projects a total under this finishes in one
+# call (its bar, delayed by a second, would never show; the pauses cost ~10 %)
+QUICK_RUN_S = 0.5
 # ~2500x a nominal run (steps of ~5 ms): a spinning-up run fails in about a minute, not an
 # hour; no tether of this model's scale (N/mm^2 x 1 mm^2) needs more
 MAX_STEPS_PER_PERIOD = 1_000_000
@@ -247,8 +250,11 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
         try:
             while done < steps:
                 n = min(chunk, steps - done)
+                t_call = time.perf_counter()
                 rows, sw, st = loop(m, per_body, done * h, y, h, n, 1, p, pw, locate, out_t,
                                     out_y, row)
+                if progress is None and (time.perf_counter() - t_call) * steps < QUICK_RUN_S * n:
+                    chunk = steps
                 row += rows
                 switches += sw
                 done += n
@@ -260,7 +266,9 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
                     break
         except KeyboardInterrupt:
             status, message = "interrupted", f"interrupted at t = {out_t[row - 1]:.6g} s"
-    return SimResult(sat, model, "rk4", out_t[:row].copy(), out_y[:row].copy(), step=h,
+    if row < out_t.size:  # stopped early: keep only the rows written, not the whole buffer
+        out_t, out_y = out_t[:row].copy(), out_y[:row].copy()
+    return SimResult(sat, model, "rk4", out_t, out_y, step=h,
                      periods=periods,
                      locate_switches=locate, nfev=4 * done, n_accepted=done,
                      n_switches=switches, status=status, message=message,
@@ -300,9 +308,10 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
             # A free orbit pauses too, to stop soon after a re-entry (domain.py)
             free = not has_com_orbit(m)
             chunks = 1 if progress is False and not free else CHUNKS
+            t_pause = 0.0
             for k in range(1, chunks + 1):
-                t_pause = math.inf if k == chunks else t_end * k / chunks
-                t_prev = t
+                t_pause = math.inf if (k == chunks or t_pause == math.inf) else t_end * k / chunks
+                t_prev, t_call = t, time.perf_counter()
                 t, h, i_out, st = loop(m, per_body, t, t_end, y, h, p, pw, rtol, atol, locate,
                                        out_t, out_y, i_out, max_steps, counters, t_pause)
                 bar.update((t - t_prev) / sat.period)
@@ -313,13 +322,17 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
                     break
                 if free and below_reentry(sat, model, out_y[i_out - 1]):
                     break  # _within_domain finds the crossing and sets the status
+                if t_pause == math.inf:
+                    break
+                elapsed = time.perf_counter() - t_call
+                if (progress is None and not free
+                        and elapsed * t_end < QUICK_RUN_S * (t - t_prev)):
+                    t_pause = math.inf
         except KeyboardInterrupt:
             status, message = "interrupted", f"interrupted at t = {t:.6g} s"
     fine_t, fine_y = out_t[:i_out].copy(), out_y[:i_out].copy()
     keep = slice(None, None, refine)
     return SimResult(sat, model, "adaptive", fine_t[keep].copy(), fine_y[keep].copy(),
-                     fine_t=fine_t if refine > 1 else None,
-                     fine_states=fine_y if refine > 1 else None,
                      periods=periods,
                      rtol=rtol, atol=atol, locate_switches=locate, nfev=int(counters[0]),
                      n_accepted=int(counters[1]), n_rejected=int(counters[2]),

@@ -22,7 +22,7 @@ from numba import literally, njit
 from tethersim.engine.dynamics import derivative, model_tether_margins
 from tethersim.engine.integrators import switching
 from tethersim.engine.integrators.borrow import borrow
-from tethersim.engine.integrators.steps import (N_K, dop853_dense, dop853_error_norm,
+from tethersim.engine.integrators.steps import (N_K, copy_into, dop853_dense, dop853_error_norm,
                                                 dop853_interpolate,
                     dop853_step)
 
@@ -130,8 +130,8 @@ def _dop853_loop(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, ou
         while i_out < out_t.shape[0] and out_t[i_out] <= t_new:
             dop853_interpolate(F, y, (out_t[i_out] - t) / h_try, out_y[i_out])
             i_out += 1
-        y[:] = y_new
-        f[:] = K[12]
+        copy_into(y, y_new)
+        copy_into(f, K[12])
         t = t_new
         h = h_next
         for i in range(n):

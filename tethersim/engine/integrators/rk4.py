@@ -21,7 +21,7 @@ from numba import literally, njit
 from tethersim.engine.dynamics import model_tether_margins
 from tethersim.engine.integrators import switching
 from tethersim.engine.integrators.borrow import borrow
-from tethersim.engine.integrators.steps import rk4_step
+from tethersim.engine.integrators.steps import copy_into, rk4_step
 
 ORDER = 4
 MAX_SPLITS = 16  # switches located in one step before it is finished unsplit (chattering)
@@ -41,18 +41,18 @@ def rk4_advance(model, per_body, t, y, h, p, pw, work, y_new, g0, g1, g):
         model_tether_margins(model, y, p, g0)
         model_tether_margins(model, y_new, p, g1)
         if switching.crossed(g0, g1) < 0:
-            y[:] = y_new
+            copy_into(y, y_new)
             break
         tau = switching.locate(0, model, per_body, t, y, y, remaining, p, pw, work, y_new,
                                g0, g1, g)
         # y_new now holds the state just past the switch, at t + tau
-        y[:] = y_new
+        copy_into(y, y_new)
         t += tau
         remaining -= tau
         splits += 1
         if splits > MAX_SPLITS:
             rk4_step(model, per_body, t, y, remaining, p, pw, work, y_new)
-            y[:] = y_new
+            copy_into(y, y_new)
             break
     return splits
 
@@ -73,10 +73,10 @@ def _rk4_loop(model, per_body, t0, y, h, n_steps, stride, p, pw, locate, out_t, 
                                     g[0], g[1], g[2])
         else:
             rk4_step(model, per_body, t, y, h, p, pw, work, y_new)
-            y[:] = y_new
+            copy_into(y, y_new)
         if k % stride == 0:
             out_t[row] = t0 + k * h
-            out_y[row, :] = y
+            copy_into(out_y[row], y)
             row += 1
         for i in range(n):
             if not math.isfinite(y[i]):

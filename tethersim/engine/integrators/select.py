@@ -21,14 +21,16 @@ import time
 from pathlib import Path
 
 import numba
+import numpy as np
 from numba import types
 from numba.core.dispatcher import Dispatcher
 
-COLD_COMPILE_S = 30  # estimate before any compile was timed here (2 cores, one model)
+COLD_COMPILE_S = 20  # estimate before any compile was timed here (2 cores: 14 s for one loop)
 ANNOUNCE_AFTER_S = 2.0  # compiles shorter than this are not worth recording
 _TIMING_FILE = "last-cold-compile-seconds"
 _announced = False
 _lock = threading.Lock()
+_entries = {}  # (dispatcher, model, argument type keys) -> compiled entry point
 
 
 def _in_cache(dispatcher) -> bool:
@@ -91,7 +93,20 @@ def specialised(dispatcher, model: int, args: tuple):
     """
     if not isinstance(dispatcher, Dispatcher):
         return dispatcher  # a Python wrapper (or a test double) is called as it is
-    sig = (types.literal(int(model)),) + tuple(dispatcher.typeof_pyval(a) for a in args)
-    if sig not in dispatcher.overloads:
-        _compile(dispatcher, sig)
-    return dispatcher.get_overload(sig)
+    # numba's typeof of every argument costs ~0.1 ms a call: a cheap key first
+    key = (dispatcher, int(model), tuple(map(_type_key, args)))
+    entry = _entries.get(key)
+    if entry is None:
+        sig = (types.literal(int(model)),) + tuple(dispatcher.typeof_pyval(a) for a in args)
+        if sig not in dispatcher.overloads:
+            _compile(dispatcher, sig)
+        entry = _entries[key] = dispatcher.get_overload(sig)
+    return entry
+
+
+def _type_key(a):
+    # what numba's typeof of the run functions' arguments depends on
+    if isinstance(a, np.ndarray):
+        f = a.flags
+        return a.dtype.str, a.ndim, f.c_contiguous, f.f_contiguous, f.writeable, f.aligned
+    return type(a)

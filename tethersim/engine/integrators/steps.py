@@ -17,10 +17,22 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 from tethersim.engine.dynamics import derivative
 from tethersim.engine.integrators.dop853_tableau import A, B, C, D, E3, E5, N_STAGES
+
+@njit(cache=True)
+def copy_into(dst, src):
+    """dst[i] = src[i] for every i of src.
+
+    A loop, not ``dst[:] = src``: numba compiles a shape-mismatch error path
+    (string formatting, about a second) for every slice assignment it lowers.
+    """
+    for i in range(src.shape[0]):
+        dst[i] = src[i]
+
 
 N_K = 16  # rows of the DOP853 stage array: 12 stages, FSAL, 3 dense-output stages
 RK4_C = (0.0, 0.5, 0.5, 1.0)  # nodes of classical RK4 (stage s uses k_{s-1} with weight c_s)
@@ -61,6 +73,56 @@ def rk4_step(model, per_body, t, y, h, p, pw, work, y_new):
                                      + work[3, i])
 
 
+if not np.array_equal(A[N_STAGES, :N_STAGES], B):
+    raise ImportError("DOP853 tableau: row 12 of A must be the weights B (FSAL)")
+
+
+@njit(cache=True, inline="always")
+def _stage_state(s, y, h, K, ys):
+    """ys = y + h Σ_{j<s} A[s, j] K[j]: the state at which stage s is evaluated.
+
+    Four state components at a time, each in its own scalar accumulator: the
+    sums are chains of dependent additions, and four independent chains keep
+    the adder busy (as a C compiler's outer-loop vectorisation does).  Each
+    component still sums A[s, 0] K[0] + A[s, 1] K[1] + ... in that order, so
+    the rounding is that of a plain per-component loop.
+    """
+    n = y.shape[0]
+    i = 0
+    while i + 4 <= n:
+        a0 = 0.0
+        a1 = 0.0
+        a2 = 0.0
+        a3 = 0.0
+        for j in range(s):
+            c = A[s, j]
+            a0 += c * K[j, i]
+            a1 += c * K[j, i + 1]
+            a2 += c * K[j, i + 2]
+            a3 += c * K[j, i + 3]
+        ys[i] = y[i] + h * a0
+        ys[i + 1] = y[i + 1] + h * a1
+        ys[i + 2] = y[i + 2] + h * a2
+        ys[i + 3] = y[i + 3] + h * a3
+        i += 4
+    if i + 2 <= n:  # 10-float states: two blocks of 4, then this pair
+        a0 = 0.0
+        a1 = 0.0
+        for j in range(s):
+            c = A[s, j]
+            a0 += c * K[j, i]
+            a1 += c * K[j, i + 1]
+        ys[i] = y[i] + h * a0
+        ys[i + 1] = y[i + 1] + h * a1
+        i += 2
+    while i < n:
+        acc = 0.0
+        for j in range(s):
+            acc += A[s, j] * K[j, i]
+        ys[i] = y[i] + h * acc
+        i += 1
+
+
 @njit(cache=True)
 def dop853_step(model, per_body, t, y, f, h, p, pw, K, ys, y_new):
     """One DOP853 step from (t, y) with f = f(t, y).
@@ -68,22 +130,12 @@ def dop853_step(model, per_body, t, y, f, h, p, pw, K, ys, y_new):
     y_new receives the state at t + h; K[0..12] the stages, K[12] = f(t + h,
     y_new) (first same as last); ys is a stage-state scratch vector.
     """
-    n = y.shape[0]
-    K[0, :] = f
+    copy_into(K[0], f)
     for s in range(1, N_STAGES + 1):
-        if s < N_STAGES:
-            for i in range(n):
-                acc = 0.0
-                for j in range(s):
-                    acc += A[s, j] * K[j, i]
-                ys[i] = y[i] + h * acc
-        else:  # the FSAL stage is evaluated at the solution itself
-            for i in range(n):
-                acc = 0.0
-                for j in range(N_STAGES):
-                    acc += B[j] * K[j, i]
-                y_new[i] = y[i] + h * acc
-                ys[i] = y_new[i]
+        # row N_STAGES of A is B: the FSAL stage is evaluated at the solution itself
+        _stage_state(s, y, h, K, ys)
+        if s == N_STAGES:
+            copy_into(y_new, ys)
         derivative(model, per_body, t + C[s] * h, ys, p, pw, K[s])
 
 
@@ -110,11 +162,7 @@ def dop853_dense(model, per_body, t, y, y_new, h, p, pw, K, ys, F):
     """Coefficients F (7, n) of the 7th-order interpolant on [t, t + h]."""
     n = y.shape[0]
     for s in range(N_STAGES + 1, N_K):
-        for i in range(n):
-            acc = 0.0
-            for j in range(s):
-                acc += A[s, j] * K[j, i]
-            ys[i] = y[i] + h * acc
+        _stage_state(s, y, h, K, ys)
         derivative(model, per_body, t + C[s] * h, ys, p, pw, K[s])
     for i in range(n):
         dy = y_new[i] - y[i]

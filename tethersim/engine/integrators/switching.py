@@ -13,7 +13,7 @@ from __future__ import annotations
 from numba import njit
 
 from tethersim.engine.dynamics import model_tether_margins
-from tethersim.engine.integrators.steps import dop853_step, rk4_step
+from tethersim.engine.integrators.steps import copy_into, dop853_step, rk4_step
 
 RTOL_TAU = 1e-12  # bracket width, relative to the step, at which the search stops
 MAX_ITER = 60
@@ -48,7 +48,7 @@ def locate(method, model, per_body, t, y, f, h, p, pw, work, y_new, g0, g1, g):
     g is a scratch vector like g1.  On return y_new holds step(y, τ).
     """
     tau_best = h
-    g[:] = g1
+    copy_into(g, g1)
     for j in range(g0.shape[0]):
         if (g0[j] > 0.0) == (g1[j] > 0.0):
             continue
