@@ -170,7 +170,7 @@ def bodies(sat: Satellite, state, t: float = 0.0, model: str = DEFAULT_MODEL):
     >>> import tethersim
     >>> sat = tethersim.load_preset("satI")
     >>> b = tethersim.bodies(sat, [29, 0, 0, 0, 0, 0])
-    >>> [round(v, 3) for v in b["tip-mass"] - b.com_position]
+    >>> [round(float(v), 3) for v in b.offset[0]]  # tip-mass: 10.5 m up (radial, +X at t = 0)
     [10.5, 0.0, 0.0]
     """
     from tethersim.engine.bodies import bodies_from_states
