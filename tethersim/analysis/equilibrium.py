@@ -136,6 +136,9 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     >>> eq = ts.find_equilibrium(ts.load_preset("satI"))
     >>> round(eq.delta_x)
     29
+    >>> eq3 = ts.find_equilibrium(ts.load_preset("satI"), "3d")  # roll, yaw, δz too
+    >>> eq3.coordinates["phi"], eq3.neutral, eq3.stable  # yaw about the boom: neutral
+    (0.0, 2, True)
     """
     mdl = get_model(model, CIRCULAR, "find_equilibrium")
     m, n = mdl.index, mdl.n_coordinates
