@@ -206,3 +206,45 @@ def test_result_bodies_along_a_run_match_pointwise_bodies(sat):
     one = tethersim.bodies(sat, res.model_states[k], res.t[k], model="3d")
     np.testing.assert_allclose(along.position[k], one.position, rtol=1e-15)
     np.testing.assert_allclose(along.angular_velocity[k], one.angular_velocity, rtol=1e-14)
+
+
+def test_free_orbit_model_obeys_newton_euler_for_all_three_motions(sat):
+    # the free-orbit model has no prescribed path: the boom COM too must obey Σ F = m a
+    m = tethersim.model.registry.get_model("free-exact-gravity")
+    q = dict(delta_x=27.0, delta_y=-2.0, theta=0.4, r=sat.r0 + 300.0, nu=0.3,
+             delta_x_dot=1e-2, delta_y_dot=-3e-2, theta_dot=2e-3, r_dot=2.0,
+             nu_dot=sat.omega * 1.001)
+    y = np.array([q[k] for k in m.state])
+    b = tethersim.bodies(sat, y, 0.0, model="free-exact-gravity")
+    acc = tethersim.body_accelerations(sat, y, 0.0, model="free-exact-gravity")
+    a3, torque = newton_euler(sat, b, [np.zeros(3), np.zeros(3)])
+    assert np.linalg.norm(acc.acceleration[2] - a3) <= RTOL * np.linalg.norm(a3)
+    assert abs(sat.pitch_inertia * acc.angular_acceleration[2] - torque[2]) <= RTOL * abs(
+        torque[2])
+    G, (o1, o2, o3), (v1, v2, v3) = b.com_position, b.offset, b.velocity
+    r1, r2 = b.position[0], b.position[1]
+    T1 = _tether(sat.E1, sat.l10, sat.c1, o3, v3, o1, v1)
+    T2 = _tether(sat.E2, sat.l20, sat.c2, o3, v3, o2, v2)
+    F = (_gravity(sat.m1, G, o1)[0] + _gravity(sat.m2, G, o2)[0] + _drag(sat, sat.A1, r1, v1)
+         + _drag(sat, sat.A2, r2, v2) - T1 - T2)
+    a_com = F / (sat.m1 + sat.m2)
+    kepler = -MU_EARTH * G / np.linalg.norm(G) ** 3
+    # to 1e-9 of the non-Keplerian part (drag, tethers, the boom's own tide)
+    assert np.linalg.norm(acc.com_acceleration - a_com) <= RTOL * np.linalg.norm(a_com - kepler)
+
+
+@pytest.mark.parametrize("k, y", list(enumerate(_random_states(4, seed=5))))
+def test_thesis_truncated_gravity_is_newton_euler_to_order_boom_over_radius(sat, k, y):
+    # model "3d" truncates gravity at the thesis's order (Eqs 3.28-3.30): the exact
+    # Newton-Euler forces hold to O((a + b)/r0) of the torques and tidal forces
+    order = (sat.a + sat.b) / sat.r0
+    b = tethersim.bodies(sat, y, 100.0 * k, model="3d")
+    acc = tethersim.body_accelerations(sat, y, 100.0 * k, model="3d")
+    inert = _body_inertias(sat)
+    a3, torque = newton_euler(sat, b, inert)
+    kepler = -MU_EARTH * b.com_position / np.linalg.norm(b.com_position) ** 3
+    assert np.linalg.norm(acc.acceleration[2] - a3) <= order * np.linalg.norm(a3 - kepler)
+    I = _boom_inertia(sat, inert, b.attitude)
+    w = b.angular_velocity
+    lhs = I @ acc.angular_acceleration + np.cross(w, I @ w)
+    assert np.linalg.norm(lhs - torque) <= order * np.linalg.norm(torque)
