@@ -11,12 +11,12 @@ State vector y (index, name, unit, meaning):
    3  phi          rad       roll of the boom (about pitched x)
    4  theta        rad       pitch of the boom (planar theta)
    5  psi          rad       yaw of the boom (about the boom axis)
-   6  delta_x_dot  m/s       balloon offset along x (wake)
-   7  delta_y_dot  m/s       balloon offset along y (radially up)
-   8  delta_z_dot  m/s       balloon offset along z (orbit normal)
-   9  phi_dot      rad/s     roll of the boom (about pitched x)
-  10  theta_dot    rad/s     pitch of the boom (planar theta)
-  11  psi_dot      rad/s     yaw of the boom (about the boom axis)
+   6  delta_x_dot  m/s       rate of balloon offset along x (wake)
+   7  delta_y_dot  m/s       rate of balloon offset along y (radially up)
+   8  delta_z_dot  m/s       rate of balloon offset along z (orbit normal)
+   9  phi_dot      rad/s     rate of roll of the boom (about pitched x)
+  10  theta_dot    rad/s     rate of pitch of the boom (planar theta)
+  11  psi_dot      rad/s     rate of yaw of the boom (about the boom axis)
 
 Parameter vector p (index, name, unit, meaning):
    0  m1           kg        tip-mass

@@ -276,6 +276,19 @@ def geometry_lines() -> list:
 
 
 def module_source(model: DerivedModel3D, geometry=()) -> str:
+    """Source text of one generated 3-D module.
+
+    Parameters
+    ----------
+    model : DerivedModel3D
+        The derived model.
+
+    Returns
+    -------
+    str
+        Header (index tables, layout tuples), solvers, the four kernels and the
+        geometry kernels (``geometry``: tether_margins, body_radii).
+    """
     head = ['"""GENERATED FILE - DO NOT EDIT.', "",
             f"Model {model.name!r}: {model.definition.description}.",
             "Produced by `make derive` (python -m derive) from derive/three_d/; regenerate",

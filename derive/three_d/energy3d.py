@@ -30,14 +30,33 @@ def _beta(kin: Kinematics3D, i: int):
 
 
 def binomial_power(kin: Kinematics3D, i: int, n) -> sp.Expr:
-    """|r_i|^(2n) = (α + β)^n to three binomial terms, α = r0² (Eq 3.20)."""
+    """|r_i|^(2n) = (α + β)^n to three binomial terms, α = r0² (Eq 3.20).
+
+    Parameters
+    ----------
+    kin : Kinematics3D
+        The geometry.
+    i : int
+        Body index (0 tip-mass, 1 bus, 2 balloon).
+    n : sympy.Rational
+        Exponent: −1/2, −3/2 or −5/2.
+
+    Returns
+    -------
+    sympy.Expr
+        The truncated series [m^(2n)].
+    """
     alpha, beta = P["r0"] ** 2, _beta(kin, i)
     return (alpha**n + n * alpha ** (n - 1) * beta
             + sp.Rational(1, 2) * n * (n - 1) * alpha ** (n - 2) * beta**2)
 
 
 def exact_power(kin: Kinematics3D, i: int, n) -> sp.Expr:
-    """|r_i|^(2n) exactly for n = −1/2, −3/2, −5/2 through H(u), G(u), u = β/r0²."""
+    """|r_i|^(2n) exactly for n = −1/2, −3/2, −5/2 through H(u), G(u), u = β/r0².
+
+    Parameters and returns as :func:`binomial_power`; (1 + u)^(−5/2) is written
+    (1 + G(u))/(1 + u) so that only the printable H and G appear.
+    """
     u = _beta(kin, i) / P["r0"] ** 2
     r0 = P["r0"]
     if n == sp.Rational(-1, 2):

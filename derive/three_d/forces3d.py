@@ -19,7 +19,20 @@ FAMILY_ORDER = ("drag1", "drag2", "drag3", "spring1", "spring2", "damper1", "dam
 
 
 def generalized_forces(kin: Kinematics3D, loads) -> tuple:
-    """Eq 3.31 for (point index, force vector) pairs, over the six speeds."""
+    """Eq 3.31 for (point index, force vector) pairs, over the six speeds.
+
+    Parameters
+    ----------
+    kin : Kinematics3D
+        The geometry (inertial velocities give the partial velocities).
+    loads : iterable of (int, sympy Vector)
+        Body index and the force applied at its centre [N].
+
+    Returns
+    -------
+    tuple
+        Q_k for q = (δx, δy, δz, φ, θ, ψ) [N, N, N, N m, N m, N m].
+    """
     Q = [sp.S.Zero] * N_Q
     for i, F in loads:
         pv = partial_velocity([kin.velocities[i]], SPEEDS, kin.N)[0]

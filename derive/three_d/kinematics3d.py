@@ -61,7 +61,14 @@ class Kinematics3D:
 
 
 def kinematics_3d() -> Kinematics3D:
-    """Build the 3-D geometry (positions, velocities, box inertias, tethers)."""
+    """Build the 3-D geometry (positions, velocities, box inertias, tethers).
+
+    Returns
+    -------
+    Kinematics3D
+        Frames N, L, B; the bodies' positions and inertial velocities in L;
+        the box inertia dyadics; the tether vectors and length definitions.
+    """
     dx, dy, dz, phi, theta, psi = COORDINATES
     a, b, r0, omega = P["a"], P["b"], P["r0"], P["omega"]
     N = ReferenceFrame("N")

@@ -18,6 +18,7 @@ is a polynomial in r0, so truncating V first gives the same equations.
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, replace
 from typing import Callable
 
@@ -94,6 +95,20 @@ def _speed_symbols():
 def lagrange_terms(T, V, V_unexpanded=0) -> tuple:
     """(M, f) of M q̈ + f for T, V in the plain state symbols.
 
+    Parameters
+    ----------
+    T, V : sympy.Expr
+        Kinetic energy and the potential to expand with it [J].
+    V_unexpanded : sympy.Expr, optional
+        Potential terms differentiated but not expanded [J].
+
+    Returns
+    -------
+    (sympy.Matrix, tuple)
+        The 6×6 mass matrix and the six f_k [N or N m].
+
+    Notes
+    -----
     The T and V parts of f are expanded together so that the O(r0) centrifugal
     and gravity terms cancel symbolically; ``V_unexpanded`` (exact-gravity box
     terms, O(ω² I) with no such cancellation) is differentiated but not expanded.
@@ -127,19 +142,38 @@ def jacobi_integral(T, V, V_boxes, truncation):
     return sp.Add(*[term for term in sp.Add.make_args(sp.expand(h)) if term.free_symbols & state])
 
 
-def derive3d(defn: ModelDefinition3D) -> DerivedModel3D:
-    """Run the 3-D pipeline for one definition."""
+@functools.lru_cache(maxsize=None)
+def _lagrange(power, truncation) -> tuple:
+    """(M, f, jacobi) for one gravity law (shared by variants that differ in forces only)."""
     kin = kinematics_3d()
     T = to_state_symbols(kinetic_energy(kin))
+    defn = ModelDefinition3D("", "", power, truncation, None)
     V, V_boxes = potential(kin, defn)
     M, f = lagrange_terms(T, V, V_boxes)
     M = M.applyfunc(lambda e: sp.factor_terms(sp.expand(sp.trigsimp(e))))
     _check_block_diagonal(M)
+    return M, f, jacobi_integral(T, V, V_boxes, truncation)
+
+
+def derive3d(defn: ModelDefinition3D) -> DerivedModel3D:
+    """Run the 3-D pipeline for one definition.
+
+    Parameters
+    ----------
+    defn : ModelDefinition3D
+        Gravity law, truncation and force families of the variant.
+
+    Returns
+    -------
+    DerivedModel3D
+        M, f, families, Jacobi integral and tether lengths in the state symbols.
+    """
+    kin = kinematics_3d()
+    M, f, jac = _lagrange(defn.power, defn.truncation)
     fams = tuple(replace(fam, Q=tuple(to_state_symbols(q) for q in fam.Q),
                          potential=None if fam.potential is None
                          else to_state_symbols(fam.potential))
                  for fam in defn.families(kin))
-    jac = jacobi_integral(T, V, V_boxes, defn.truncation)
     defs = {lam: to_state_symbols(d) for lam, d in kin.tether_length_defs.items()}
     _check_symbols(defn.name, list(M) + list(f) + [q for fam in fams for q in fam.Q] + [jac])
     return DerivedModel3D(defn, M, f, fams, jac, defs)

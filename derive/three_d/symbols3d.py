@@ -31,11 +31,12 @@ COORDINATE_NAMES = ("delta_x", "delta_y", "delta_z", "phi", "theta", "psi")
 COORDINATE_UNITS = ("m", "m", "m", "rad", "rad", "rad")
 STATE_NAMES = COORDINATE_NAMES + tuple(f"{n}_dot" for n in COORDINATE_NAMES)
 STATE_UNITS = COORDINATE_UNITS + ("m/s", "m/s", "m/s", "rad/s", "rad/s", "rad/s")
-STATE_MEANINGS = (
+_MEANINGS = (
     "balloon offset along x (wake)", "balloon offset along y (radially up)",
     "balloon offset along z (orbit normal)", "roll of the boom (about pitched x)",
     "pitch of the boom (planar theta)", "yaw of the boom (about the boom axis)",
-) * 2
+)
+STATE_MEANINGS = _MEANINGS + tuple(f"rate of {m}" for m in _MEANINGS)
 STATE_SYMBOLS = tuple(sp.Symbol(n, real=True) for n in STATE_NAMES)
 ACCELERATION_SYMBOLS = tuple(sp.Symbol(f"{n}_ddot", real=True) for n in COORDINATE_NAMES)
 
@@ -74,6 +75,20 @@ def to_state_symbols(expr):
 def eq44_box_inertia(mass: float, area: float) -> tuple:
     """(roll, pitch, yaw) moments [kg m²] of a cube of frontal area ``area`` (Eq 4.4).
 
+    Parameters
+    ----------
+    mass : float
+        Body mass [kg].
+    area : float
+        Frontal area [m²].
+
+    Returns
+    -------
+    tuple of float
+        The three equal principal moments [kg m²].
+
+    Notes
+    -----
     I_xx = I_yy = I_zz = m (2 Area)/12, i.e. m s²/6 for a cube of side s (thesis
     p. 4-5, Table 4.4): the default I1 (tip-mass) and I2 (bus) of the 3-D models.
     """

@@ -9,7 +9,7 @@ from importlib import resources
 import pytest
 
 from tethersim._version import __version__
-from tethersim.cli import main as console_main
+from tethersim.cli.main import main as console_main
 from tethersim.cli.main import COMMANDS, main
 
 SATI_TEXT = (resources.files("tethersim.model.presets") / "satI.toml").read_text()

@@ -49,8 +49,11 @@ def test_report_map_table_shows_the_classes_its_stores_hold(report):
 
 
 def test_report_sweeps_are_stored_and_resumable(report):
-    stores = sorted(p.name for p in (report.parent / "sweeps").iterdir())
+    entries = sorted(p.name for p in (report.parent / "sweeps").iterdir())
+    stores = [s for s in entries if s.endswith(".zarr")]
     assert len(stores) == 2 * len(MAPS)  # converged + faithful per map
+    # beside each store only its writer lock and the holder's name (sweep/lock.py)
+    assert set(entries) - set(stores) <= {s + e for s in stores for e in (".lock", ".lock.json")}
     assert all(s.endswith("_3x3_2orbits.zarr") for s in stores)
 
 

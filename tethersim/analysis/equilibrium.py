@@ -29,6 +29,10 @@ NEUTRAL_TOL = 1e-10  # |λ| [1/s] below which a mode is neutral (a cyclic coordi
 CIRCULAR = tuple(m.name for m in MODELS if m.orbit == "circular")
 
 
+class NoEquilibrium(RuntimeError, ValueError):
+    """No equilibrium exists or none was found; a one-line message (a ValueError for the CLI)."""
+
+
 @dataclass(frozen=True)
 class Equilibrium:
     """A steady configuration in the rotating frame and its linearisation.
@@ -127,8 +131,9 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
 
     Raises
     ------
-    RuntimeError
-        If the solver finds no state with all accelerations below ``RESIDUAL_TOL``.
+    NoEquilibrium
+        If no tether holds the balloon, or the solver finds no state with all
+        accelerations below ``RESIDUAL_TOL`` (a RuntimeError and a ValueError).
 
     Examples
     --------
@@ -143,6 +148,11 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     mdl = get_model(model, CIRCULAR, "find_equilibrium")
     m, n = mdl.index, mdl.n_coordinates
     names = mdl.state[:n]
+    if sat.E1 == 0 and sat.E2 == 0:
+        # nothing holds the balloon against drag: the root finder would wander off
+        raise NoEquilibrium("E1 = E2 = 0 N/mm^2: no tether holds the balloon, so drag carries "
+                            "it away and there is no equilibrium; allowed range for an "
+                            "equilibrium: E1 > 0 or E2 > 0")
     p = parameter_vector(sat, model)
     if guess is not None and len(guess) == n:
         g = np.array(guess, float)
@@ -169,7 +179,8 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     q = sol.x
     res = float(np.max(np.abs(f(q))))
     if not sol.success and res > RESIDUAL_TOL:
-        raise RuntimeError(f"no equilibrium found from guess {tuple(g)}: {sol.message} "
+        why = " ".join(str(sol.message).split())  # scipy's message spans lines
+        raise NoEquilibrium(f"no equilibrium found from guess {tuple(float(x) for x in g)}: {why} "
                            f"(residual {res:.3g})")
     i_th = names.index("theta")
     q[i_th] = float(wrap(q[i_th]))

@@ -52,4 +52,11 @@ def run_summary(res: SimResult, out: Outcome | None = None) -> dict:
         "final delta_x [m]": float(res.x[n - 1]),
         "final delta_y [m]": float(res.y[n - 1]),
         "status": res.status,
+        **implausible_summary(res.satellite),
     }
+
+
+def implausible_summary(sat) -> dict:
+    """The plausibility violations a run was allowed (``allow_implausible``), if any."""
+    found = sat.implausible if sat.allow_implausible else ()
+    return {"implausible inputs (allowed)": "; ".join(found)} if found else {}

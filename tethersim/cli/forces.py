@@ -67,6 +67,7 @@ def run(args) -> int:
     res = simulate(sat, periods=args.periods, method=how.method, model=args.model,
                    steps=how.steps, samples=None if how.method == "rk4" else samples,
                    rtol=how.rtol, locate_switches=how.locate, progress=options.progress(args))
+    options.interrupted_early(res)
     rows = largest_forces(res)
     written = [write_table(out / "forces.csv", table_rows(rows), COLUMNS)]
     written += plot_forces(res, out, Q=res.forces)

@@ -156,6 +156,9 @@ def add_overrides(parser) -> None:
                              "in N/mm^2, altitude in km, else SI); repeatable")
     parser.add_argument("--scale", action="append", metavar="NAME=FACTOR", default=[],
                         help="multiply a parameter, e.g. --scale c1=10 --scale c2=10; repeatable")
+    parser.add_argument("--allow-implausible", action="store_true",
+                        help="run values outside the plausible ranges (docs/limits.md); "
+                             "the summary lists them")
 
 
 def _faithful_help() -> str:
@@ -218,7 +221,8 @@ def satellite(args):
     """The satellite of ``args.satellite`` with --set/--scale applied (edge units)."""
     from tethersim.model.params import apply_overrides
     from tethersim.model.presets import resolve
-    return apply_overrides(resolve(args.satellite), getattr(args, "set", None) or (),
+    sat = resolve(args.satellite, getattr(args, "allow_implausible", False))
+    return apply_overrides(sat, getattr(args, "set", None) or (),
                            getattr(args, "scale", None) or ())
 
 
@@ -377,7 +381,16 @@ def write_provenance(out: Path, record: dict) -> Path:
 def check_status(res) -> None:
     """Raise :class:`Interrupted` or :class:`RunFailed` for a run that did not end ok
     (call after its output is written)."""
+    interrupted_early(res)
     if res.status == "interrupted":
         raise Interrupted(f"the output holds the run up to t = {res.t[-1]:.6g} s")
     if res.status != "ok":
         raise RunFailed(res.message)
+
+
+def interrupted_early(res) -> None:
+    """Raise :class:`Interrupted` for Ctrl-C before a second output sample: nothing to
+    summarise or write (call right after the run)."""
+    if res.status == "interrupted" and res.t.size < 2:
+        raise Interrupted(f"at t = {res.t[-1]:.6g} s, before the first output sample: "
+                          f"nothing written")

@@ -62,6 +62,7 @@ def run(args) -> int:
                    model=args.model, rtol=how.rtol, locate_switches=how.locate,
                    samples=how.samples, check=not args.no_check,
                    progress=options.progress(args))
+    options.interrupted_early(res)
     write_timeseries(res, out / "timeseries.csv")
     write_netcdf(res, out / "timeseries.nc")
     written = [out / "timeseries.csv", out / "timeseries.nc"]

@@ -57,4 +57,6 @@ def run(args) -> int:
         print(f"  {n:<18} {v:.6g}")
     print(f"  r0 {sat.r0:.6g} m, omega {sat.omega:.6g} rad/s, period {sat.period:.6g} s, "
           f"rho {sat.rho:.4g} kg/m^3, density {sat.density_mode}")
+    for line in (sat.implausible if sat.allow_implausible else ()):
+        print(f"  implausible (allowed): {line}")
     return 0

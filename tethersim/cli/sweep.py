@@ -77,11 +77,13 @@ def run(args) -> int:
     from tethersim.experiments.sweep.analysis import band_slope, class_counts
     from tethersim.model import params
     from tethersim.output.plots.sweep import plot_stability_map
+    from tethersim.engine.guards import check_sweep
     from tethersim.output.tables import write_table
 
     sat = options.satellite(args)
     axes = [(n, params.parse_grid(n, getattr(args, n))) for n in params.NAMES
             if getattr(args, n) is not None]
+    check_sweep([len(v) for _, v in axes], [n for n, _ in axes])  # at once, before any work
     if not 1 <= len(axes) <= 2:
         raise options.UsageError(
             f"give one or two grids, e.g. --E1 0:0.02:41 --E2 0:0.06:41; got "
@@ -117,6 +119,10 @@ def run(args) -> int:
     written.append(options.write_provenance(out, record))
     for name, n in class_counts(ds).items():
         print(f"  {name:<12} {n}")
+    failed = int((ds.status.values[ds.done.values] != 0).sum())
+    if failed:  # their NaN metrics have a reason: say it, and how to see the message
+        print(f"  {failed} point(s) failed (status attribute: diverged or integrator_failed; "
+              f"metrics NaN): 'tethersim run' one with --set for its message")
     if math.isfinite(slope):
         print(f"  stable band centre: {spec.names[1]} = {slope:.4g} x {spec.names[0]}")
     print("wrote " + ", ".join(str(p) for p in written))

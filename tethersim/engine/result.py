@@ -67,6 +67,9 @@ class SimResult:
         Seconds the integration took.
     periods : float or None
         Length of the run asked for, in orbits.
+    reentry_time : float or None
+        When the boom's COM fell below the re-entry altitude [s] (status
+        ``"re-entered"``), else None.
 
     The series of any state by name: ``res.series("theta")``; shortcuts ``x``,
     ``y``, ``theta``, ``xdot``, ``ydot``, ``thetadot`` (δx, δy, θ and rates).
@@ -90,6 +93,7 @@ class SimResult:
     error_estimate: tuple | None = None
     wall_time: float = field(default=0.0, compare=False)
     periods: float | None = None  # length of the run asked for, in orbits (for reruns)
+    reentry_time: float | None = None  # s, when the COM fell below the re-entry altitude
 
     # --- arrays --------------------------------------------------------------
     @property

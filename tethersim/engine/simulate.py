@@ -15,6 +15,7 @@ import warnings
 import numpy as np
 from tqdm.auto import tqdm
 
+from tethersim.engine.domain import first_violation
 from tethersim.engine.dynamics import initial_state, state_size
 from tethersim.engine.integrators.dop853 import STATUS_OK, dop853_run
 from tethersim.engine.integrators.rk4 import rk4_run
@@ -79,6 +80,8 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
     step_warning: RK4 only, warn (RK4StepWarning) when the step exceeds what the
       linearised system supports (sweeps record stability.rk4_amplification instead).
     """
+    from tethersim.engine.guards import check_simulation  # refuse an output that would not fit, before allocating
+    check_simulation(periods, steps, method, samples, check)
     if not isinstance(sat, Satellite):
         raise TypeError(f"sat must be a tethersim Satellite (load_preset/load), got {type(sat).__name__}")
     periods = _check_positive("periods", periods)
@@ -89,7 +92,8 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
         steps = _check_positive("steps", steps if steps is not None
                                 else max(1, round(STEPS_PER_PERIOD * periods)), integer=True)
         locate = False if locate_switches is None else bool(locate_switches)
-        run = _run_rk4(sat, periods, steps, model, locate, progress, step_warning)
+        run = _within_domain(_run_rk4(sat, periods, steps, model, locate, progress,
+                                      step_warning))
         return estimate_error(run) if check else run
     rtol = _check_positive("rtol", rtol)
     atol = _check_positive("atol", atol)
@@ -102,8 +106,20 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
     else:
         n_out = max(2, round(SAMPLES_PER_PERIOD * periods))
     locate = True if locate_switches is None else bool(locate_switches)
-    run = _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress)
+    run = _within_domain(_run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress))
     return estimate_error(run) if check else run
+
+
+def _within_domain(run: SimResult) -> SimResult:
+    """The run up to the first sample outside the model's domain (engine/domain.py)."""
+    from dataclasses import replace
+
+    v = first_violation(run)
+    if v is None:
+        return run
+    keep = v.index + 1
+    return replace(run, t=run.t[:keep].copy(), states=run.states[:keep].copy(), status=v.status,
+                   message=v.message, reentry_time=v.time if v.status == "re-entered" else None)
 
 
 def estimate_error(run: SimResult) -> SimResult:

@@ -9,21 +9,50 @@ once; ``to_si``/``from_si`` convert; ``parse_grid`` reads a grid spec such as
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 
 from tethersim.model.presets import INITIAL_3D_KEYS, N_PER_MM2_TO_N
 from tethersim.model.satellite import Satellite, SatelliteError
 
-# name -> (unit at the edge, SI value per edge unit)
-EDGE_UNITS = {
-    "m1": ("kg", 1.0), "m2": ("kg", 1.0), "m3": ("kg", 1.0),
-    "A1": ("m^2", 1.0), "A2": ("m^2", 1.0), "A3": ("m^2", 1.0),
-    "a": ("m", 1.0), "b": ("m", 1.0), "l10": ("m", 1.0), "l20": ("m", 1.0),
-    "E1": ("N/mm^2", N_PER_MM2_TO_N), "E2": ("N/mm^2", N_PER_MM2_TO_N),
-    "c1": ("N s/m", 1.0), "c2": ("N s/m", 1.0), "CD": ("1", 1.0),
-    "altitude": ("km", 1e3),
+# The one table of settable quantities: name -> Param(file key, unit at the edge, SI
+# value per edge unit, meaning, plausible range in edge units, why).  The range is
+# where the model's assumptions hold (point masses, a 1 mm^2 tether of modulus E,
+# free-molecular drag, Vallado's atmosphere); tethersim.model.plausibility checks it, and
+# ``allow_implausible`` lets a user knowingly go outside.  Generous on purpose: the
+# thesis presets sit well inside every range.
+Param = namedtuple("Param", "key unit factor meaning low high zero_ok why")
+_MASS = "a point mass from 1 g to 100 t"
+_AREA = "a frontal area from 1 mm^2 to a 100 m x 100 m sail"
+_LEN = "a length from 1 mm to 10 km"
+PARAMETERS = {
+    "m1": Param("satellite.m1", "kg", 1.0, "tip-mass mass", 1e-3, 1e5, False, _MASS),
+    "m2": Param("satellite.m2", "kg", 1.0, "bus mass", 1e-3, 1e5, False, _MASS),
+    "m3": Param("satellite.m3", "kg", 1.0, "balloon mass", 1e-3, 1e5, False, _MASS),
+    "A1": Param("satellite.A1", "m^2", 1.0, "tip-mass frontal area", 1e-6, 1e4, False, _AREA),
+    "A2": Param("satellite.A2", "m^2", 1.0, "bus frontal area", 1e-6, 1e4, False, _AREA),
+    "A3": Param("satellite.A3", "m^2", 1.0, "balloon frontal area", 1e-6, 1e4, False, _AREA),
+    "a": Param("satellite.a", "m", 1.0, "COM to bus", 1e-3, 1e4, False, _LEN),
+    "b": Param("satellite.b", "m", 1.0, "COM to tip-mass", 1e-3, 1e4, False, _LEN),
+    "l10": Param("tethers.l10", "m", 1.0, "taut length of tether 1", 1e-3, 1e4, False, _LEN),
+    "l20": Param("tethers.l20", "m", 1.0, "taut length of tether 2", 1e-3, 1e4, False, _LEN),
+    "E1": Param("tethers.E1_N_per_mm2", "N/mm^2", N_PER_MM2_TO_N, "tether 1 modulus x 1 mm^2",
+                0.0, 1e6, True, "0 (no tether) up to 5x steel's 2e5 N/mm^2"),
+    "E2": Param("tethers.E2_N_per_mm2", "N/mm^2", N_PER_MM2_TO_N, "tether 2 modulus x 1 mm^2",
+                0.0, 1e6, True, "0 (no tether) up to 5x steel's 2e5 N/mm^2"),
+    "c1": Param("tethers.c1", "N s/m", 1.0, "tether 1 damping", 0.0, 1e4, True,
+                "0 (undamped) up to a damper that stops a 1 t mass in 0.1 s"),
+    "c2": Param("tethers.c2", "N s/m", 1.0, "tether 2 damping", 0.0, 1e4, True,
+                "0 (undamped) up to a damper that stops a 1 t mass in 0.1 s"),
+    "CD": Param("environment.CD", "1", 1.0, "drag coefficient of every body", 0.5, 4.0, True,
+                "0 (no drag) or the free-molecular range of real shapes"),
+    "altitude": Param("orbit.altitude_km", "km", 1e3, "circular orbit altitude", 120.0, 1000.0,
+                      False, "below 120 km the orbit re-enters within hours; above 1000 km "
+                             "is outside Vallado's atmosphere table"),
 }
+# name -> (unit at the edge, SI value per edge unit): the table's conversion columns
+EDGE_UNITS = {n: (p.unit, p.factor) for n, p in PARAMETERS.items()}
 NAMES = tuple(EDGE_UNITS)
 # the out-of-plane start of the 3-D models (Satellite.initial_3d), settable like a
 # parameter (--set phi0_deg=5) but not listed in NAMES (not a sweep axis of the CLI)
@@ -68,6 +97,12 @@ def with_values(sat: Satellite, values: dict) -> Satellite:
     return sat.replace(**fields)
 
 
+def _shown(text: str) -> str:
+    """The user's text as typed, or escaped (repr) if it holds a line break or control
+    character: an error message stays one line whatever was typed."""
+    return text if text.isprintable() else repr(text)
+
+
 def _float(text: str, what: str) -> float:
     try:
         v = float(text)
@@ -79,8 +114,22 @@ def _float(text: str, what: str) -> float:
 
 
 def parse_grid(name: str, spec: str) -> np.ndarray:
-    """Grid values (edge units) from 'start:stop:count' or a comma list."""
-    what = f"--{name} {spec}"
+    """Grid values (edge units) from 'start:stop:count' or a comma list.
+
+    Raises ValueError naming the option, the spec and what a good value is.
+    """
+    try:
+        return _parse_grid(name, spec)
+    except ValueError as exc:
+        if "not a number" not in str(exc) and "must be finite" not in str(exc):
+            raise
+        p = PARAMETERS[name]
+        raise ValueError(f"{exc} (expected {name} values in {p.unit}, plausible range "
+                         f"{p.low:g}..{p.high:g})") from None
+
+
+def _parse_grid(name: str, spec: str) -> np.ndarray:
+    what = f"--{name} {_shown(spec)}"
     if ":" in spec:
         parts = spec.split(":")
         if len(parts) != 3:
@@ -110,7 +159,13 @@ def parse_assignment(text: str, option: str = "--set") -> tuple:
         raise ValueError(f"{option} {text!r}: expected NAME=VALUE, e.g. E1=0.006")
     name, value = text.split("=", 1)
     name = check_name(name.strip())
-    return name, _float(value.strip(), f"{option} {text}")
+    try:
+        return name, _float(value.strip(), f"{option} {_shown(text)}")
+    except ValueError as exc:  # say what a good value looks like
+        p = PARAMETERS[name]
+        expected = ("a factor" if option == "--scale" else
+                    f"{name} in {p.unit}, plausible range {p.low:g}..{p.high:g}")
+        raise ValueError(f"{exc} (expected {expected})") from None
 
 
 def apply_overrides(sat: Satellite, sets=(), scales=()) -> Satellite:

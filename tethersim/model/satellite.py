@@ -65,6 +65,7 @@ class Satellite:
     CD: float = CD_DEFAULT
     density_mode: str = "uniform"
     source: str = field(default="", compare=False)
+    allow_implausible: bool = False  # run outside tethersim.model.plausibility's ranges knowingly
     initial_3d: dict = field(default_factory=dict, hash=False)
 
     def __post_init__(self):
@@ -121,6 +122,11 @@ class Satellite:
                     f"{self._where()}altitude = {self.altitude / 1e3:g} km with density = "
                     f"'per-body': allowed range {lo / 1e3:.3f}-{hi / 1e3:.3f} km, so that every "
                     f"body (within {reach:.4g} m of the COM) stays inside 0-1000 km")
+        if not isinstance(self.allow_implausible, bool):
+            raise SatelliteError(f"{self._where()}allow_implausible = {self.allow_implausible!r}: "
+                                 f"must be true or false")
+        from . import plausibility  # imports params, which imports this module
+        plausibility.check(self, self._where())
 
     def _checked_initial_3d(self) -> dict:
         given = self.initial_3d if self.initial_3d is not None else {}
@@ -178,6 +184,12 @@ class Satellite:
         """m1 b² + m2 a² [kg m²]: the point-mass moment about the COM (Eq 3.30)."""
         return self.m1 * self.b**2 + self.m2 * self.a**2
 
+    @property
+    def implausible(self) -> tuple:
+        """Plausibility violations allowed by ``allow_implausible`` (empty if none)."""
+        from . import plausibility
+        return tuple(plausibility.problems(self))
+
     def replace(self, **changes) -> "Satellite":
         """A copy with fields changed (validated again)."""
         if self.source and "source" not in changes and not self.source.endswith("(modified)"):
@@ -187,6 +199,8 @@ class Satellite:
     def to_dict(self) -> dict:
         d = asdict(self)
         d.pop("source")
+        if not d["allow_implausible"]:  # absent when false: spec JSON of stores unchanged
+            d.pop("allow_implausible")
         return d
 
 

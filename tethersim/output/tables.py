@@ -98,8 +98,10 @@ def to_xarray(res: SimResult, attrs: dict | None = None):
 
     data = {n: ("t", res.states[:, i], {"units": u})
             for i, (n, u) in enumerate(timeseries_columns()[1:])}
+    found = res.satellite.implausible if res.satellite.allow_implausible else ()
     meta = {"satellite": res.satellite.name, "model": res.model, "method": res.method,
             "label": res.label, "status": res.status, "message": res.message,
+            **({"implausible_inputs": "; ".join(found)} if found else {}),
             "conventions": "docs/conventions.md: local frame rotating with omega z, "
                            "COM moves along -x, theta from +y towards +x"}
     for k, v in res.satellite.to_dict().items():

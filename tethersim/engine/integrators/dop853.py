@@ -141,7 +141,7 @@ def _dop853_loop(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, ou
     return t, h, i_out, STATUS_OK
 
 
-# nogil: sweeps run many trajectories on threads (tethersim.sweep)
+# nogil: sweeps run many trajectories on threads (tethersim.experiments.sweep)
 @njit(cache=True, nogil=True)
 def dop853_run(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y, i_out,
                max_steps, counters, t_pause=math.inf):

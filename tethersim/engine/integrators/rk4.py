@@ -84,7 +84,7 @@ def _rk4_loop(model, per_body, t0, y, h, n_steps, stride, p, pw, locate, out_t, 
     return row - row0, switches, 0
 
 
-# nogil: sweeps run many trajectories on threads (tethersim.sweep)
+# nogil: sweeps run many trajectories on threads (tethersim.experiments.sweep)
 @njit(cache=True, nogil=True)
 def rk4_run(model, per_body, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0):
     """n_steps RK4 steps of size h from (t0, y), y advanced in place.

@@ -7,10 +7,12 @@ resumable Zarr store; it returns the xarray Dataset.
 """
 from __future__ import annotations
 
+from tethersim.experiments.sweep.lock import StoreLocked
 from tethersim.experiments.sweep.point import VARIABLES, run_point
 from tethersim.experiments.sweep.runner import SweepInterrupted, run_sweep
 from tethersim.experiments.sweep.spec import SweepSpec
-from tethersim.experiments.sweep.store import StoreMismatch, open_dataset
+from tethersim.experiments.sweep.store import StoreMismatch, StoreRepaired, open_dataset
+from tethersim.experiments.sweep.verify import StoreDamaged
 
 
 def sweep(sat, axes: dict, out, **options):
@@ -26,5 +28,6 @@ def sweep(sat, axes: dict, out, **options):
     return run_sweep(spec, out, **run_opts).dataset()
 
 
-__all__ = ["SweepSpec", "SweepInterrupted", "StoreMismatch", "VARIABLES", "open_dataset",
+__all__ = ["SweepSpec", "SweepInterrupted", "StoreMismatch", "StoreLocked", "StoreDamaged",
+           "StoreRepaired", "VARIABLES", "open_dataset",
            "run_point", "run_sweep", "sweep"]

@@ -81,8 +81,18 @@ def run_sweep(spec: SweepSpec, out, *, workers: int | None = None, scheduler: st
     Resumes a store made by the same spec.  Ctrl-C (KeyboardInterrupt) writes every
     finished point and raises SweepInterrupted; any other error also writes them
     first.  stop_after: simulate an interruption after that many points (tests).
+    A second writer to the same store stops at once (StoreLocked, naming the first);
+    a resumed store is verified first (tethersim.experiments.sweep.verify).
     """
-    store = SweepStore(out, spec, restart=restart)
+    store = SweepStore(out, spec, restart=restart)  # takes the store's writer lock
+    try:
+        return _fill(store, spec, workers, scheduler, dask_workers, progress, block, stop_after)
+    finally:
+        store.close()
+
+
+def _fill(store, spec, workers, scheduler, dask_workers, progress, block, stop_after):
+    """run_sweep's work on an open, locked store."""
     pending = store.pending()
     if not pending:
         return store

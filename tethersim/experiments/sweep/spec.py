@@ -75,6 +75,8 @@ class SweepSpec:
             v = getattr(self, key)
             if isinstance(v, bool) or not isinstance(v, int) or v < 1:
                 raise ValueError(f"{key} = {v!r}: must be an integer >= 1")
+        from tethersim.engine.guards import check_sweep  # before validating (or allocating) 10^12 points
+        check_sweep([len(v) for _, v in axes], names)
         self.check_points()
 
     # --- the grid --------------------------------------------------------------

@@ -11,10 +11,15 @@ and Zarr writes each chunk to a temporary file that it then renames, so a
 kill at any instant leaves ``done`` true only where the data are on disk.
 A kill loses at most the points finished since the last flush (every
 ``FLUSH_SECONDS``); Ctrl-C loses nothing (the runner flushes first).
+
+One writer at a time (tethersim.experiments.sweep.lock), and a resume verifies the store
+(tethersim.experiments.sweep.verify): unreadable chunks and points whose ``checksum``
+does not match their data are recomputed, with a StoreRepaired warning.
 """
 from __future__ import annotations
 
 import json
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -23,10 +28,12 @@ import zarr
 
 from tethersim._jit import cache_key
 from tethersim._version import __version__
-from tethersim.model import params
 from tethersim.analysis.classify import flag_attrs
+from tethersim.experiments.sweep.lock import StoreLock
 from tethersim.experiments.sweep.point import VARIABLES
 from tethersim.experiments.sweep.spec import SweepSpec
+from tethersim.experiments.sweep.verify import StoreDamaged, checksums, read_verified
+from tethersim.model import params
 
 FILL = {"float64": np.nan, "int8": -1, "int64": -1}
 
@@ -41,6 +48,10 @@ class StoreMismatch(ValueError):
     """The store on disk holds a different sweep."""
 
 
+class StoreRepaired(UserWarning):
+    """Damaged points of a resumed store were found and will be recomputed."""
+
+
 def _empty_dataset(spec: SweepSpec) -> xr.Dataset:
     dims = tuple(reversed(spec.names))
     coords = {name: (name, np.asarray(values),
@@ -51,7 +62,11 @@ def _empty_dataset(spec: SweepSpec) -> xr.Dataset:
         attrs = {"units": units, "long_name": long_name}
         if name == "stability_class":
             attrs.update(flag_attrs())
+        if name == "status":  # a failed point says why: its status, not a bare NaN row
+            attrs.update(flag_values=[0, 1, 2], flag_meanings="ok diverged integrator_failed")
         data[name] = (dims, np.full(spec.shape, FILL[dtype], dtype=dtype), attrs)
+    data["checksum"] = (dims, np.full(spec.shape, -1, dtype=np.int64),
+                        {"long_name": "FNV-1a hash of the point's record (tethersim.experiments.sweep.verify)"})
     data["done"] = (dims, np.zeros(spec.shape, dtype=bool), {"long_name": "point computed"})
     attrs = {"title": f"tethersim sweep of {spec.satellite.name} over {' x '.join(spec.names)}",
              "spec": spec.to_json(), "tethersim_version": __version__, "code": code_id(),
@@ -65,9 +80,27 @@ class SweepStore:
     def __init__(self, path, spec: SweepSpec, restart: bool = False):
         self.path = Path(path)
         self.spec = spec
+        self.lock = StoreLock(self.path).acquire()  # before looking: no second writer
+        try:
+            self._open(restart)
+        except BaseException:
+            self.lock.release()
+            raise
+
+    def close(self) -> None:
+        """Release the writer lock (the data stay readable)."""
+        self.lock.release()
+
+    def _open(self, restart: bool) -> None:
+        spec = self.spec
         exists = (self.path / "zarr.json").exists() or (self.path / ".zgroup").exists()
         if exists and not restart:
-            on_disk = xr.open_zarr(self.path)
+            try:  # consolidated: the store always has it, so its absence is damage too
+                on_disk = xr.open_zarr(self.path, consolidated=True)
+            except Exception as exc:  # noqa: BLE001 - unreadable metadata, whatever the cause
+                raise StoreDamaged(f"{self.path}: the store's metadata is damaged "
+                                   f"({type(exc).__name__}: {' '.join(str(exc).split())}); "
+                                   f"run again with --restart to discard it") from None
             if on_disk.attrs.get("spec") != spec.to_json():
                 raise StoreMismatch(
                     f"{self.path} holds a different sweep ({_differences(on_disk.attrs.get('spec'), spec)}); "
@@ -77,20 +110,50 @@ class SweepStore:
                     f"{self.path} was begun by another tethersim build "
                     f"({on_disk.attrs.get('code')}, this is {code_id()}): its points would not "
                     f"match new ones; use another --out, or --restart to discard it")
-            ds = on_disk.load()
+            if "checksum" not in on_disk:
+                raise StoreMismatch(f"{self.path} has no per-point checksums (an older tethersim): "
+                                    f"use --restart to discard it")
             on_disk.close()
+            self.arrays = self._read_verified()
         else:
-            if self.path.exists() and any(self.path.iterdir()) and not exists:
+            damaged = (self.path / ".zmetadata").exists()  # a store that lost its .zgroup
+            if self.path.exists() and any(self.path.iterdir()) and not exists and not (
+                    restart and damaged):
+                if damaged:
+                    raise StoreDamaged(f"{self.path}: the store's metadata is damaged (no "
+                                       f".zgroup); run again with --restart to discard it")
                 raise StoreMismatch(f"{self.path} exists and is not a sweep store; choose another --out")
             ds = _empty_dataset(spec)
             encoding = {v: {"chunks": self._chunks()} for v in list(ds.data_vars)}
             # metadata never changes after creation (flushes write chunks only), so it
             # is consolidated once; Zarr format 2, where consolidation is in the spec
             ds.to_zarr(self.path, mode="w", encoding=encoding, consolidated=True, zarr_format=2)
+            self.arrays = {v: ds[v].values.reshape(-1).copy() for v in _stored()}
         self.row = spec.shape[-1]  # points per chunk (one grid row)
-        self.arrays = {v: ds[v].values.reshape(-1).copy() for v in (*_names(), "done")}
         self.group = zarr.open_group(str(self.path), mode="r+")
         self.dirty = set()
+
+    def _read_verified(self) -> dict:
+        try:
+            group = zarr.open_group(str(self.path), mode="r")
+        except Exception as exc:  # noqa: BLE001
+            raise StoreDamaged(f"{self.path}: the store's metadata is damaged ({exc}); run "
+                               f"again with --restart to discard it") from None
+        fields = {name: dtype for name, dtype, *_ in VARIABLES}
+        fields.update(checksum="int64", done="bool")
+        fill = {name: FILL[dtype] for name, dtype, *_ in VARIABLES}
+        fill.update(checksum=-1, done=False)
+        try:
+            arrays, n_bad = read_verified(group, self.spec.shape, fields, fill, _names())
+        except StoreDamaged as exc:
+            raise StoreDamaged(f"{self.path}: {exc}; run again with --restart to discard "
+                               f"it") from None
+        if n_bad:
+            warnings.warn(StoreRepaired(
+                f"{self.path}: {n_bad} point(s) had damaged or missing data (unreadable chunk "
+                f"or checksum mismatch) and will be recomputed"), stacklevel=4)
+        # reset points are pending: recomputing them rewrites their rows, damaged chunks included
+        return arrays
 
     def _chunks(self):
         return (1, self.spec.shape[1]) if len(self.spec.shape) == 2 else self.spec.shape
@@ -105,15 +168,16 @@ class SweepStore:
     def put(self, k: int, record: dict) -> None:
         for name in _names():
             self.arrays[name][k] = record[name]
+        self.arrays["checksum"][k] = checksums(self.arrays, _names(), [k])[0]
         self.done[k] = True
         self.dirty.add(k // self.row)
 
     def flush(self) -> None:
-        """Write the rows that gained points: data first, then the done mask."""
+        """Write the rows that gained points: data and checksums first, then the done mask."""
         if not self.dirty:
             return
         rows = sorted(self.dirty)
-        for name in (*_names(), "done"):
+        for name in _stored():
             arr = self.group[name]
             for r in rows:
                 block = self.arrays[name][r * self.row:(r + 1) * self.row]
@@ -132,6 +196,11 @@ def _names():
     return tuple(v[0] for v in VARIABLES)
 
 
+def _stored():
+    """Every array of the store, in flush order: the done mask last."""
+    return (*_names(), "checksum", "done")
+
+
 def _differences(old_json, spec: SweepSpec) -> str:
     try:
         old = json.loads(old_json)
@@ -148,4 +217,5 @@ def open_dataset(path) -> xr.Dataset:
     if not ((path / "zarr.json").exists() or (path / ".zgroup").exists()):
         raise FileNotFoundError(f"{path}: not a sweep store (no zarr.json)")
     with xr.open_zarr(path) as ds:
-        return ds.load()
+        # the checksum is the store's own bookkeeping (tethersim.experiments.sweep.verify)
+        return ds.drop_vars("checksum", errors="ignore").load()

@@ -11,6 +11,8 @@ File layout (units in the key name where they are not SI)::
                    phi0_deg psi0_deg [deg] (roll, yaw)  delta_z_dot [m/s]
                    phi_dot psi_dot [rad/s]
     [environment]  (optional) CD [-], density = "uniform" | "per-body"
+    [model]        (optional) allow_implausible = true: run outside the plausible
+                   ranges (tethersim.plausibility) knowingly; the summary says so
 
 Moduli are given, as in the thesis, in N/mm^2 for a 1 mm^2 cross-section,
 so the value in N/mm^2 equals the tether force scale in N (thesis p. 3-1).
@@ -35,7 +37,8 @@ SCHEMA = {
     "initial": {"delta_x": "m", "delta_y": "m", "theta0_deg": "deg", "delta_x_dot": "m/s",
                 "delta_y_dot": "m/s", "theta_dot": "rad/s"},
 }
-OPTIONAL = {"environment": {"CD": "1", "density": "uniform | per-body"}}
+OPTIONAL = {"environment": {"CD": "1", "density": "uniform | per-body"},
+            "model": {"allow_implausible": "true | false"}}
 # optional keys of [initial]: the out-of-plane start of the 3-D models
 # (file key -> (unit, Satellite.initial_3d name, SI per file unit))
 INITIAL_3D_KEYS = {"delta_z": ("m", "delta_z", 1.0), "phi0_deg": ("deg", "phi", math.pi / 180),
@@ -54,8 +57,12 @@ def _number(where, key, value, unit):
     return float(value)
 
 
-def from_dict(doc: dict, where: str = "<dict>") -> Satellite:
-    """Build a Satellite from a parsed preset document (thesis units at the edge)."""
+def from_dict(doc: dict, where: str = "<dict>", allow_implausible: bool = False) -> Satellite:
+    """Build a Satellite from a parsed preset document (thesis units at the edge).
+
+    allow_implausible: accept values outside the plausible ranges (also set by the
+    document's ``[model] allow_implausible = true``).
+    """
     allowed_top = {"name"} | set(SCHEMA) | set(OPTIONAL)
     for key in doc:
         if key not in allowed_top:
@@ -88,6 +95,11 @@ def from_dict(doc: dict, where: str = "<dict>") -> Satellite:
                 raise SatelliteError(f"{where}: missing key {table}.{key} ({unit})")
             if key == "density":
                 vals[key] = sub[key]
+            elif key == "allow_implausible":
+                if not isinstance(sub[key], bool):
+                    raise SatelliteError(f"{where}: model.allow_implausible = {sub[key]!r}: "
+                                         f"must be true or false")
+                vals[key] = sub[key]
             else:
                 vals[key] = _number(where, f"{table}.{key}", sub[key], unit)
     initial = (vals["delta_x"], vals["delta_y"], math.radians(vals["theta0_deg"]),
@@ -100,7 +112,8 @@ def from_dict(doc: dict, where: str = "<dict>") -> Satellite:
             E2=vals["E2_N_per_mm2"] * N_PER_MM2_TO_N, c1=vals["c1"], c2=vals["c2"],
             altitude=vals["altitude_km"] * 1e3, initial=initial,
             CD=vals.get("CD", CD_DEFAULT), density_mode=vals.get("density", "uniform"),
-            source=where, initial_3d=vals["initial_3d"])
+            source=where, allow_implausible=allow_implausible or vals.get("allow_implausible", False),
+            initial_3d=vals["initial_3d"])
     except SatelliteError as exc:
         # name the file's key, not the internal SI field
         msg = str(exc)
@@ -110,10 +123,25 @@ def from_dict(doc: dict, where: str = "<dict>") -> Satellite:
             msg = msg.replace(internal, key)
         # E in N equals the file's N/mm^2 value (1 mm^2 cross-section): name the file's unit
         msg = re.sub(r"(E[12]_N_per_mm2 = \S+) N:", r"\1 N/mm^2:", msg)
+        msg = _file_key(msg, where)
         raise SatelliteError(msg) from None
 
 
-def load(path) -> Satellite:
+def _file_key(msg: str, where: str) -> str:
+    """Name the file's key (satellite.m1, tethers.c1, ...) of the field a message starts with."""
+    from ..params import PARAMETERS  # params imports this package: at call time
+
+    head = f"{where}: "
+    if not msg.startswith(head):
+        return msg
+    rest = msg[len(head):]
+    for name, p in PARAMETERS.items():
+        if rest.startswith(f"{name} = "):
+            return head + p.key + rest[len(name):]
+    return msg
+
+
+def load(path, allow_implausible: bool = False) -> Satellite:
     """Load a satellite TOML file (see module docstring for the layout)."""
     path = Path(path)
     try:
@@ -124,10 +152,10 @@ def load(path) -> Satellite:
         doc = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise SatelliteError(f"{path}: not valid TOML: {exc}") from None
-    return from_dict(doc, str(path))
+    return from_dict(doc, str(path), allow_implausible)
 
 
-def load_preset(name: str) -> Satellite:
+def load_preset(name: str, allow_implausible: bool = False) -> Satellite:
     """A shipped preset by name: satI, satII or dumbsat (any case)."""
     key = name.lower()
     if key not in PRESET_NAMES:
@@ -135,13 +163,13 @@ def load_preset(name: str) -> Satellite:
                              f"(any case), or a path to a .toml file")
     ref = resources.files("tethersim.model.presets") / PRESET_NAMES[key]
     with resources.as_file(ref) as p:
-        return load(p)
+        return load(p, allow_implausible)
 
 
-def resolve(name_or_path: str) -> Satellite:
+def resolve(name_or_path: str, allow_implausible: bool = False) -> Satellite:
     """Preset name or path to a TOML file."""
     if name_or_path.lower() in PRESET_NAMES:
-        return load_preset(name_or_path)
+        return load_preset(name_or_path, allow_implausible)
     if Path(name_or_path).suffix == ".toml" or Path(name_or_path).exists():
-        return load(name_or_path)
-    return load_preset(name_or_path)
+        return load(name_or_path, allow_implausible)
+    return load_preset(name_or_path, allow_implausible)

@@ -23,13 +23,18 @@ def dumps(sat: Satellite, notes: dict | None = None, header: str = "") -> str:
     for key, (_, name, si) in INITIAL_3D_KEYS.items():  # the 3-D start, where set
         if name in sat.initial_3d:
             tables["initial"][key] = sat.initial_3d[name] / si
+    if sat.allow_implausible:
+        tables["model"] = {"allow_implausible": True}
     lines = [f"# {line}" if line else "#" for line in header.splitlines()]
     lines.append(f'name = "{sat.name}"')
     for table, values in tables.items():
         lines += ["", f"[{table}]"]
         for key, v in values.items():
             # 15 significant digits: 30.0, not the 29.999999999999996 of degrees(pi/6)
-            text = f'"{v}"' if isinstance(v, str) else repr(float(f"{float(v):.15g}"))
+            if isinstance(v, bool):
+                text = "true" if v else "false"
+            else:
+                text = f'"{v}"' if isinstance(v, str) else repr(float(f"{float(v):.15g}"))
             note = notes.get(key) or notes.get(key.split("_N_per")[0])
             lines.append(f"{key} = {text}" + (f"  # {note}" if note else ""))
     return "\n".join(lines) + "\n"

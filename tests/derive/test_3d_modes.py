@@ -25,7 +25,7 @@ import pytest
 import tethersim.generated as generated
 from tethersim.generated import layout3d
 
-MODELS = tuple(generated.MODELS_3D)
+MODELS = tuple(n for n, m in generated.MODELS.items() if m.GEOMETRY == "3d")
 R0 = 6.578e6
 MU = 3.986004418e14
 N = math.sqrt(MU / R0**3)
@@ -48,12 +48,12 @@ def params(m=50.0, half_length=5.0, box=(0.0, 0.0, 0.0)):
 
 def jacobian_at_rest(model, p):
     J = np.full((12, 12), np.nan)
-    generated.MODELS_3D[model].jacobian(0.0, np.zeros(12), p, J)
+    generated.MODELS[model].jacobian(0.0, np.zeros(12), p, J)
     return J
 
 
 def eigs(J, coords):
-    idx = list(coords) + [RATE[c] for c in coords]
+    idx = list(coords) + [c + 6 for c in coords]  # coordinates, then their rates
     return np.linalg.eigvals(J[np.ix_(idx, idx)])
 
 
@@ -124,3 +124,15 @@ def test_rigid_body_pitch_and_roll_yaw_quartic(model, case):
         assert growth <= TOL * N  # all neutral
     else:
         assert growth > 0.05 * N  # a genuine growth rate, not rounding
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_free_balloon_has_clohessy_wiltshire_modes(model):
+    """Without tethers or drag the balloon moves by Hill's (Clohessy–Wiltshire)
+    equations about G: in-plane eigenvalues 0, 0, ±i n, out-of-plane ±i n
+    (ẍ − 2nẏ = 0, ÿ + 2nẋ − 3n²y = 0, z̈ + n²z = 0 in these axes)."""
+    J = jacobian_at_rest(model, params())
+    assert_same_roots(eigs(J, [IX["delta_x"], IX["delta_y"]]), [0, 0, 1j * N, -1j * N])
+    assert_same_roots(eigs(J, [IX["delta_z"]]), [1j * N, -1j * N])
+    z, zdd = IX["delta_z"], IX["delta_z"] + 6
+    assert J[zdd, z] == pytest.approx(-N**2, rel=1e-12)

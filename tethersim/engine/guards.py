@@ -1,0 +1,166 @@
+"""Size guards: refuse a run or a sweep whose output would not fit, before allocating it.
+
+``tethersim run satI --steps 100000000`` used to be killed by the kernel at
+24 GB with no message, and a 10^6 x 10^6 sweep grid hung while validating its
+points.  The estimates here are cheap arithmetic on the request; the limits are
+stated in the messages and can be raised with environment variables:
+
+``TETHERSIM_MAX_OUTPUT_BYTES``
+    largest time-series output of one simulate() call (default 2 GiB).
+``TETHERSIM_MAX_SWEEP_POINTS``
+    largest sweep grid (default 1,000,000 points).
+``TETHERSIM_MAX_STORE_BYTES``
+    largest sweep store, in memory and on disk (default 2 GiB).
+"""
+from __future__ import annotations
+
+import math
+import os
+
+GIB = 1024**3
+DEFAULT_OUTPUT_BYTES = 2 * GIB
+DEFAULT_SWEEP_POINTS = 1_000_000
+DEFAULT_STORE_BYTES = 2 * GIB
+STATE_COLUMNS = 10  # δx δy θ and rates, COM X Y VX VY (generated.layout: N_STATE)
+# bytes per sweep point: 9 float64 + 4 int8 + 1 int64 record fields (sweep.point.VARIABLES),
+# the done mask and the int64 checksum (sweep.verify)
+SWEEP_POINT_BYTES = 9 * 8 + 4 + 8 + 1 + 8
+
+
+class SizeLimitError(ValueError):
+    """A request whose output would exceed a stated size limit; the message gives both."""
+
+
+def _limit(env: str, default: float) -> float:
+    text = os.environ.get(env)
+    if text is None:
+        return default
+    try:
+        value = float(text)
+    except ValueError:
+        raise SizeLimitError(f"{env} = {text!r}: must be a number") from None
+    if not value > 0:
+        raise SizeLimitError(f"{env} = {text!r}: must be > 0")
+    return value
+
+
+def human(nbytes: float) -> str:
+    """A byte count for people.
+
+    Parameters
+    ----------
+    nbytes : float
+        Size in bytes.
+
+    Returns
+    -------
+    str
+        Three significant digits and a binary unit, e.g. ``'16.4 GiB'``.
+    """
+    for unit in ("B", "KiB", "MiB", "GiB", "TiB", "PiB"):
+        if nbytes < 1024 or unit == "PiB":
+            return f"{nbytes:.3g} {unit}"
+        nbytes /= 1024
+    return f"{nbytes:.3g} PiB"  # pragma: no cover - the loop always returns
+
+
+def _number(value):
+    """float(value) for a real number, else None (simulate's own checks then complain)."""
+    if isinstance(value, bool):
+        return None
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        return None
+    return v if math.isfinite(v) else None
+
+
+def output_rows(periods, steps, method, samples):
+    """Rows of one simulate() output, including t = 0.
+
+    Mirrors simulate()'s defaults: RK4 stores every step (300 per orbit unless
+    ``steps``); the adaptive method stores ``samples`` (else ``steps``, else 200
+    per orbit) output points.
+
+    Parameters
+    ----------
+    periods, steps, method, samples
+        As given to :func:`tethersim.engine.simulate.simulate`.
+
+    Returns
+    -------
+    float or None
+        The row count, or None if the request is malformed (simulate names it).
+    """
+    from tethersim.engine.simulate import SAMPLES_PER_PERIOD, STEPS_PER_PERIOD
+
+    p = _number(periods)
+    if p is None or p <= 0:
+        return None
+    if method == "rk4":
+        n = _number(steps) if steps is not None else max(1, round(STEPS_PER_PERIOD * p))
+    else:
+        given = samples if samples is not None else steps
+        n = _number(given) if given is not None else max(2, round(SAMPLES_PER_PERIOD * p))
+    return None if n is None or n < 1 else n + 1
+
+
+def check_simulation(periods, steps=None, method="adaptive", samples=None, check=True) -> None:
+    """Refuse a simulate() request whose output arrays would exceed the limit.
+
+    Parameters
+    ----------
+    periods, steps, method, samples, check
+        As given to :func:`tethersim.engine.simulate.simulate`; malformed values are
+        left for simulate's own validation.
+
+    Raises
+    ------
+    SizeLimitError
+        With the estimate, the limit (``TETHERSIM_MAX_OUTPUT_BYTES``) and what to change.
+    """
+    rows = output_rows(periods, steps, method, samples)
+    if rows is None:
+        return
+    # t and the state per row, float64; the convergence check holds a second run
+    # (RK4: twice the steps) alongside the first
+    runs = 1 + (2 if method == "rk4" else 1) * bool(check)
+    need = rows * (1 + STATE_COLUMNS) * 8 * runs
+    limit = _limit("TETHERSIM_MAX_OUTPUT_BYTES", DEFAULT_OUTPUT_BYTES)
+    if need > limit:
+        what = "steps" if method == "rk4" else "output samples"
+        hint = ("fewer --steps or --periods, or the adaptive method, whose --steps sets only the "
+                "output samples" if method == "rk4" else "fewer --steps (output samples) or --periods")
+        raise SizeLimitError(
+            f"--steps/--periods: {rows - 1:.6g} {what} need about {human(need)} of output memory "
+            f"(t and {STATE_COLUMNS} states x 8 bytes{', x' + str(runs) + ' with the convergence check' if runs > 1 else ''}); "
+            f"allowed at most {human(limit)} (TETHERSIM_MAX_OUTPUT_BYTES): use {hint}")
+
+
+def check_sweep(shape, names=()) -> None:
+    """Refuse a sweep grid whose store would exceed the point or byte limit.
+
+    Parameters
+    ----------
+    shape : sequence of int
+        Points per axis.
+    names : sequence of str
+        Axis names, for the message.
+
+    Raises
+    ------
+    SizeLimitError
+        With the grid size, the store size and the limits
+        (``TETHERSIM_MAX_SWEEP_POINTS``, ``TETHERSIM_MAX_STORE_BYTES``).
+    """
+    points = math.prod(int(n) for n in shape)  # Python ints: no overflow at 10^12
+    nbytes = points * SWEEP_POINT_BYTES
+    max_points = _limit("TETHERSIM_MAX_SWEEP_POINTS", DEFAULT_SWEEP_POINTS)
+    max_bytes = _limit("TETHERSIM_MAX_STORE_BYTES", DEFAULT_STORE_BYTES)
+    if points > max_points or nbytes > max_bytes:
+        axes = " x ".join(f"{n} {name}".strip() for n, name in
+                          zip(shape, list(names) + [""] * len(shape)))
+        raise SizeLimitError(
+            f"sweep grid {axes} = {points:.6g} points (store about {human(nbytes)}): allowed "
+            f"at most {max_points:.6g} points (TETHERSIM_MAX_SWEEP_POINTS) and "
+            f"{human(max_bytes)} (TETHERSIM_MAX_STORE_BYTES); use fewer grid points")

@@ -1,0 +1,132 @@
+"""Physical plausibility of a satellite: the ranges where the model means something.
+
+A :class:`~tethersim.model.satellite.Satellite` that passes its hard checks (positive
+masses, an altitude inside the atmosphere table, ...) can still be absurd: an
+orbit below the re-entry altitude, a balloon starting a million kilometres from
+6 m tethers, a tether so stiff that its oscillation is faster than the
+integrator can follow.  Such runs used to end "ok" with meaningless numbers.
+
+The per-quantity ranges live in one table, :data:`tethersim.model.params.PARAMETERS`;
+the rules that need several quantities at once are here.  :func:`problems`
+lists every violation as a one-line message naming the field, the plausible
+range and why; :func:`check` refuses the first one unless the satellite was
+made with ``allow_implausible=True`` (preset ``[model] allow_implausible =
+true``, CLI ``--allow-implausible``), in which case the run's summary lists them.
+"""
+from __future__ import annotations
+
+import math
+
+# Generous factors, documented in docs and messages: the thesis presets sit far inside.
+REACH_FACTOR = 10.0  # balloon start <= this x the longest tether-plus-boom reach
+BOOM_FACTOR = 10.0  # l10 + l20 >= (a + b) / this: tethers spanning the boom
+T_TETHER_MIN = 0.1  # s, shortest tether oscillation period the integrator resolves
+# (DOP853 is capped at 1e6 steps per orbit, ~5 ms at 200 km: 20 steps per 0.1 s period)
+# s, shortest damper time m3_eff / c: an overdamped decay need not be resolved, only
+# integrated stably, which DOP853 does while step x c / m3_eff < ~5: 1 ms at ~5 ms steps,
+# with a tenfold margin
+T_DAMPER_MIN = 0.01
+HINT = "--allow-implausible (preset: [model] allow_implausible = true) runs it anyway"
+
+
+def _unit(p) -> str:
+    return "" if p.unit == "1" else f" {p.unit}"  # no unit after a pure number (CD)
+
+
+def _range_text(p) -> str:
+    if p.zero_ok and p.low > 0:
+        return f"0 or {p.low:g}..{p.high:g}{_unit(p)}"
+    return f"{p.low:g}..{p.high:g}{_unit(p)}"
+
+
+def _table_problems(sat) -> list:
+    from .params import PARAMETERS  # params imports satellite: import at call time
+
+    out = []
+    for name, p in PARAMETERS.items():
+        v = getattr(sat, name) / p.factor
+        if (p.zero_ok and v == 0) or p.low <= v <= p.high:
+            continue
+        out.append(f"{name} = {v:g}{_unit(p)}: plausible range {_range_text(p)} "
+                   f"({p.meaning}: {p.why})")
+    return out
+
+
+def _balloon_mass(sat) -> float:
+    """Reduced mass of the balloon against the boom [kg]: what a tether spring moves."""
+    boom = sat.m1 + sat.m2
+    return sat.m3 * boom / (sat.m3 + boom)
+
+
+def _cross_problems(sat) -> list:
+    out = []
+    dx, dy = sat.initial[0], sat.initial[1]
+    reach = max(sat.l10 + sat.b, sat.l20 + sat.a)
+    r, limit = math.hypot(dx, dy), REACH_FACTOR * reach
+    if r > limit:
+        out.append(f"delta_x, delta_y = ({dx:g}, {dy:g}) m: the balloon starts {r:.4g} m from "
+                   f"the COM; plausible range <= {limit:.4g} m ({REACH_FACTOR:g} x max(l10 + b, "
+                   f"l20 + a): far beyond any trail the tethers hold)")
+    span = (sat.a + sat.b) / BOOM_FACTOR
+    if sat.l10 + sat.l20 < span:
+        out.append(f"l10 + l20 = {sat.l10 + sat.l20:g} m: plausible range >= {span:.4g} m "
+                   f"((a + b) / {BOOM_FACTOR:g}: shorter tethers would always be stretched "
+                   f"over {BOOM_FACTOR:g}x across the boom)")
+    from .params import PARAMETERS
+    per_edge = PARAMETERS["E1"].factor  # N per N/mm^2 (1: the 1 mm^2 cross-section)
+    m = _balloon_mass(sat)
+    for E, c, l0, i in ((sat.E1, sat.c1, sat.l10, 1), (sat.E2, sat.c2, sat.l20, 2)):
+        # spring k = E / l0 (E is modulus x 1 mm^2, a force): period 2 pi sqrt(m l0 / E)
+        e_max = m * l0 * (2 * math.pi / T_TETHER_MIN) ** 2
+        if E > e_max:
+            period = 2 * math.pi * math.sqrt(m * l0 / E)
+            out.append(f"E{i} = {E / per_edge:g} N/mm^2: plausible range <= "
+                       f"{e_max / per_edge:.4g} N/mm^2 for "
+                       f"m3 and l{i}0 (tether {i} would oscillate with period {period:.3g} s, "
+                       f"under the {T_TETHER_MIN:g} s the integrator resolves)")
+        c_max = m / T_DAMPER_MIN
+        if c > c_max:
+            out.append(f"c{i} = {c:g} N s/m: plausible range <= {c_max:.4g} N s/m for m3 "
+                       f"(damper time m3/c{i} = {m / c:.3g} s, under the {T_DAMPER_MIN:g} s "
+                       f"the integrator resolves)")
+    return out
+
+
+def problems(sat) -> list:
+    """Every plausibility violation of ``sat``, one line each.
+
+    Parameters
+    ----------
+    sat : tethersim.model.satellite.Satellite
+        A satellite that passed its hard checks.
+
+    Returns
+    -------
+    list of str
+        Messages naming the field (SI field names, edge units: E in N/mm^2,
+        altitude in km), the plausible range and why; empty if plausible.
+    """
+    return _table_problems(sat) + _cross_problems(sat)
+
+
+def check(sat, where: str = "") -> None:
+    """Refuse an implausible satellite unless it allows it.
+
+    Parameters
+    ----------
+    sat : tethersim.model.satellite.Satellite
+        The satellite being created.
+    where : str
+        Prefix naming the source (a preset path), e.g. ``"satI.toml: "``.
+
+    Raises
+    ------
+    tethersim.model.satellite.SatelliteError
+        Naming the first violation, its range and ``allow_implausible``.
+    """
+    if getattr(sat, "allow_implausible", False):
+        return
+    found = problems(sat)
+    if found:
+        from .satellite import SatelliteError
+        raise SatelliteError(f"{where}{found[0]}; {HINT}")
