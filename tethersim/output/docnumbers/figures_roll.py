@@ -10,6 +10,7 @@ from tethersim.analysis.equilibrium import find_equilibrium
 from tethersim.analysis.roll import (boom_inertias, case_satellite, roll_case, roll_drag_rate,
                                      roll_response, roll_yaw_quartic)
 from tethersim.engine.simulate import simulate
+from tethersim.model.params import with_values
 from tethersim.model.presets import load_preset
 from tethersim.output.docnumbers.check import Figure
 
@@ -161,3 +162,39 @@ FIGURES += [
     Figure(R, ("amplified ",), "roll_seed_3d"),
     Figure(R, ("amplified ", " and "), "roll_seed_obj"),
 ]
+
+# --- the planar stability map under an out-of-plane start (E1 x E2/E1 points) ------
+MAP_POINTS = ((0.004, 10.7), (0.01, 10.7), (0.004, 5.0), (0.004, 20.0), (0.01, 20.0))
+OUT_OF_PLANE_START = {"phi": math.radians(5.0), "psi": math.radians(5.0), "delta_z": 1.0}
+
+
+@lru_cache(maxsize=None)
+def _map_run(E1: float, ratio: float, model: str) -> tuple:
+    """(pitch half-range, largest |φ| of the run, largest |φ| in the last 5 orbits) [rad]
+    of 50 orbits from the preset's start (θ0 = 30°), out of the plane for a 3-D model."""
+    s = with_values(_sat(), {"E1": E1, "E2": E1 * ratio})
+    s = s.replace(initial_3d=OUT_OF_PLANE_START if model.startswith("3d") else {})
+    res = simulate(s, periods=50, model=model, progress=False)
+    late = res.t > res.t[-1] - 5 * s.period
+    th = res.theta[late]
+    if not model.startswith("3d"):
+        return float((th.max() - th.min()) / 2), 0.0, 0.0
+    phi = np.abs(res.series("phi"))
+    return float((th.max() - th.min()) / 2), float(phi.max()), float(phi[late].max())
+
+
+_M = "| E1 [N/mm²], E2/E1 | planar θ | `3d` θ | `3d` φ end |"  # start of the header
+MAP_COLUMNS = (
+    lambda e, r: _map_run(e, r, "derived")[0],
+    lambda e, r: _map_run(e, r, "3d")[0],
+    lambda e, r: _map_run(e, r, "3d")[2],
+    lambda e, r: _map_run(e, r, "objective-damper")[0],
+    lambda e, r: _map_run(e, r, "3d-objective-damper")[0],
+    lambda e, r: _map_run(e, r, "3d-objective-damper")[1],
+    lambda e, r: _map_run(e, r, "3d-objective-damper")[2],
+)
+for _i, (_e, _r) in enumerate(MAP_POINTS):
+    for _j, _col in enumerate(MAP_COLUMNS):
+        _key = f"roll_map_{_i}_{_j}"
+        QUANTITIES[_key] = (lambda col, e, r: lambda: col(e, r))(_col, _e, _r)
+        FIGURES.append(Figure(R, (_M, f"| {_e:g}, {_r:g} | ") + (" | ",) * _j, _key))
