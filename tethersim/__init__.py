@@ -27,7 +27,7 @@ __all__ = ["Satellite", "SatelliteError", "SimResult", "RK4StepWarning", "Outcom
            "load_preset", "simulate", "outcome", "run_summary", "write_timeseries",
            "write_netcdf", "write_table", "accelerations", "generalized_forces", "parameters",
            "MODELS", "FAMILIES", "STATE", "PARAMETERS", "__version__", "find_equilibrium",
-           "Equilibrium", "SweepSpec", "run_sweep"]
+           "Equilibrium", "SweepSpec", "run_sweep", "bodies", "body_accelerations"]
 from tethersim._version import __version__  # noqa: E402
 MODELS = NAMES  # every generated model (tethersim.model.registry)
 
@@ -137,6 +137,88 @@ def generalized_forces(sat: Satellite, state, model: str = DEFAULT_MODEL) -> dic
     out = np.zeros((len(m.families), m.n_coordinates))
     dispatch.family_forces(m.index, y, p, out)
     return {f: out[i].copy() for i, f in enumerate(m.families)}
+
+
+def bodies(sat: Satellite, state, t: float = 0.0, model: str = DEFAULT_MODEL):
+    """Inertial positions and velocities of the three bodies, the boom's attitude and spin.
+
+    The map from a model's coordinates to the inertial frame, so a model can be
+    checked against any Newton–Euler code without knowing its coordinates
+    (conventions: tethersim/engine/bodies.py; on a circular orbit the COM is at
+    r0 (cos ωt, sin ωt, 0), as the runtime's COM orbit columns).
+
+    Parameters
+    ----------
+    sat : Satellite
+        The satellite.
+    state : array_like
+        The model's state in its STATE order (``get_model(model).state``).
+    t : float, optional
+        Time [s] (sets the orbit phase of a circular-orbit model).
+    model : str, optional
+        Model name, default ``"derived"``; planar models have φ = ψ = δz = 0.
+
+    Returns
+    -------
+    tethersim.engine.bodies.Bodies
+        ``position``, ``velocity`` (3 bodies × XYZ: tip-mass, bus, balloon),
+        ``com_position``, ``com_velocity``, ``attitude`` (columns: roll, boom,
+        pitch axes in N) and ``angular_velocity`` [rad/s], SI.
+
+    Examples
+    --------
+    >>> import tethersim
+    >>> sat = tethersim.load_preset("satI")
+    >>> b = tethersim.bodies(sat, [29, 0, 0, 0, 0, 0])
+    >>> [round(float(v), 3) for v in b.offset[0]]  # tip-mass: 10.5 m up (radial, +X at t = 0)
+    [10.5, 0.0, 0.0]
+    """
+    from tethersim.engine.bodies import bodies_from_states
+
+    m, y, _ = _state_and_params(sat, state, model)
+    return bodies_from_states(sat, m.name, float(t), y)
+
+
+def body_accelerations(sat: Satellite, state, t: float = 0.0, model: str = DEFAULT_MODEL):
+    """Inertial accelerations of the three bodies and the boom's angular acceleration.
+
+    From the model's generalized accelerations at ``state`` (drag, tethers and
+    gravity as the model has them) mapped to the inertial frame of
+    :func:`bodies`: for the balloon, m3 times this is the sum of the forces on
+    it; for the boom, Euler's equations about its COM hold with this
+    angular acceleration.
+
+    Parameters
+    ----------
+    sat : Satellite
+        The satellite.
+    state : array_like
+        The model's state in its STATE order.
+    t : float, optional
+        Time [s].
+    model : str, optional
+        Model name, default ``"derived"``.
+
+    Returns
+    -------
+    tethersim.engine.bodies.BodyAccelerations
+        ``acceleration`` (3 bodies × XYZ) [m/s²], ``com_acceleration`` [m/s²],
+        ``angular_acceleration`` [rad/s²], in N.
+
+    Examples
+    --------
+    >>> import tethersim
+    >>> sat = tethersim.load_preset("satI")
+    >>> acc = tethersim.body_accelerations(sat, [29, 0, 0, 0, 0, 0])
+    >>> round(float(acc.com_acceleration[0]), 4)  # −ω² r0 along X at t = 0
+    -9.2115
+    """
+    from tethersim.engine.bodies import accelerations_from_qdd
+
+    m, y, p = _state_and_params(sat, state, model)
+    d = np.empty(m.n_state)
+    dispatch.rhs(m.index, float(t), y, p, d)
+    return accelerations_from_qdd(sat, m.name, float(t), y, d[m.n_coordinates:])
 
 
 # heavier parts of the API (scipy.optimize, xarray/zarr) load on first use

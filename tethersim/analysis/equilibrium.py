@@ -9,7 +9,7 @@ decay time and a predicted settling time to the thesis's ±0.05 rad band.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from scipy.optimize import root
@@ -17,11 +17,16 @@ from scipy.optimize import root
 from tethersim.generated import dispatch
 
 from tethersim.analysis.metrics import SETTLING_TOL, wrap
-from tethersim.model.registry import DEFAULT_MODEL, THESIS_VARIANTS, model_index
-from tethersim.model.satellite import Satellite, parameter_vector
+from tethersim.model.inputs import parameter_vector
+from tethersim.model.registry import DEFAULT_MODEL, MODELS, get_model
+from tethersim.model.satellite import Satellite
+from tethersim.engine.bodies import bodies_from_states
 from tethersim.engine.linearise import attitude_jacobian, rk4_max_step
 
 RESIDUAL_TOL = 1e-10  # largest |acceleration| accepted at an equilibrium [SI]
+NEUTRAL_TOL = 1e-10  # |λ| [1/s] below which a mode is neutral (a cyclic coordinate)
+# circular-orbit models, planar and 3-D (a free orbit's anomaly has no equilibrium)
+CIRCULAR = tuple(m.name for m in MODELS if m.orbit == "circular")
 
 
 class NoEquilibrium(RuntimeError, ValueError):
@@ -48,6 +53,9 @@ class Equilibrium:
         Largest |q̈| left at the solution [m/s², rad/s²].
     eigenvalues : numpy.ndarray
         Eigenvalues of the generated Jacobian there [1/s].
+    coordinates : dict
+        Every coordinate of the model by name (3-D: also δz [m], roll φ and
+        yaw ψ [rad]), rates zero.
     """
 
     satellite: Satellite
@@ -58,27 +66,44 @@ class Equilibrium:
     taut: tuple  # (tether 1 taut, tether 2 taut)
     residual: float
     eigenvalues: np.ndarray  # 1/s
+    coordinates: dict = field(default_factory=dict, compare=False)
 
     @property
     def state(self) -> np.ndarray:
-        return np.array([self.delta_x, self.delta_y, self.theta, 0.0, 0.0, 0.0])
+        """The model's state there (its STATE order, rates zero)."""
+        if not self.coordinates:
+            return np.array([self.delta_x, self.delta_y, self.theta, 0.0, 0.0, 0.0])
+        q = list(self.coordinates.values())
+        return np.array(q + [0.0] * len(q))
+
+    @property
+    def neutral(self) -> int:
+        """Number of eigenvalues with |λ| < NEUTRAL_TOL: a coordinate nothing restores.
+
+        In the 3-D models with the thesis's boxes (the same moment about every
+        axis) the boom is symmetric about its own axis and no force acts about it,
+        so the yaw ψ and its rate give two zero eigenvalues (docs/roll.md).
+        """
+        return int(np.sum(np.abs(self.eigenvalues) < NEUTRAL_TOL))
 
     @property
     def stable(self) -> bool:
-        return bool(np.all(self.eigenvalues.real < 0))
+        """Every mode that is not neutral decays (Re λ < 0)."""
+        ev = self.eigenvalues[np.abs(self.eigenvalues) >= NEUTRAL_TOL]
+        return bool(np.all(ev.real < 0))
 
     def modes(self) -> list:
         """(frequency [rad/s], damping ratio, decay time [s]) of each oscillatory pair."""
         out = []
         for lam in self.eigenvalues:
-            if lam.imag > 0:
+            if lam.imag > 0 and abs(lam) >= NEUTRAL_TOL:
                 w = abs(lam)
                 out.append((lam.imag, -lam.real / w, math.inf if lam.real >= 0 else -1 / lam.real))
         return sorted(out)
 
     def predicted_settling_time(self, amplitude: float) -> float:
         """Time [s] for the slowest mode to decay from ``amplitude`` to ±0.05 rad."""
-        rate = -max(self.eigenvalues.real)
+        rate = -max(self.eigenvalues[np.abs(self.eigenvalues) >= NEUTRAL_TOL].real)
         if rate <= 0:
             return math.inf
         return max(0.0, math.log(abs(amplitude) / SETTLING_TOL) / rate)
@@ -92,9 +117,12 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     sat : Satellite
         The satellite.
     model : str, optional
-        Model variant (default ``"derived"``).
-    guess : sequence of 3 floats, optional
-        Starting (δx [m], δy [m], θ [rad]); default the initial offset and θ = 0.
+        Model variant (default ``"derived"``): any circular-orbit model, planar
+        or 3-D (``CIRCULAR``).
+    guess : sequence of floats, optional
+        Starting (δx [m], δy [m], θ [rad]) (the other coordinates of a 3-D
+        model from zero), or every coordinate of the model in its order;
+        default the initial offset and θ = 0.
 
     Returns
     -------
@@ -113,49 +141,73 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     >>> eq = ts.find_equilibrium(ts.load_preset("satI"))
     >>> round(eq.delta_x)
     29
+    >>> eq3 = ts.find_equilibrium(ts.load_preset("satI"), "3d")  # roll, yaw, δz too
+    >>> eq3.coordinates["phi"], eq3.neutral, eq3.stable  # yaw about the boom: neutral
+    (0.0, 2, True)
     """
-    m = model_index(model, THESIS_VARIANTS, "find_equilibrium")
+    mdl = get_model(model, CIRCULAR, "find_equilibrium")
+    m, n = mdl.index, mdl.n_coordinates
+    names = mdl.state[:n]
     if sat.E1 == 0 and sat.E2 == 0:
         # nothing holds the balloon against drag: the root finder would wander off
         raise NoEquilibrium("E1 = E2 = 0 N/mm^2: no tether holds the balloon, so drag carries "
                             "it away and there is no equilibrium; allowed range for an "
                             "equilibrium: E1 > 0 or E2 > 0")
-    p = parameter_vector(sat)
-    g = np.array(guess if guess is not None else (sat.initial[0], sat.initial[1], 0.0), float)
-    d = np.empty(6)
-    J = np.empty((6, 6))
+    p = parameter_vector(sat, model)
+    if guess is not None and len(guess) == n:
+        g = np.array(guess, float)
+    else:
+        start = dict(zip(("delta_x", "delta_y", "theta"),
+                         guess if guess is not None else (sat.initial[0], sat.initial[1], 0.0)))
+        g = np.array([float(start.get(k, 0.0)) for k in names])
+    d = np.empty(2 * n)
+    J = np.empty((2 * n, 2 * n))
 
     def f(q):
-        dispatch.rhs(m, 0.0, np.array([q[0], q[1], q[2], 0.0, 0.0, 0.0]), p, d)
-        return d[3:].copy()
+        dispatch.rhs(m, 0.0, np.concatenate([q, np.zeros(n)]), p, d)
+        return d[n:].copy()
 
     def jac(q):
-        dispatch.jacobian(m, 0.0, np.array([q[0], q[1], q[2], 0.0, 0.0, 0.0]), p, J)
-        return J[3:, :3].copy()
+        dispatch.jacobian(m, 0.0, np.concatenate([q, np.zeros(n)]), p, J)
+        return J[n:, :n].copy()
 
     sol = root(f, g, jac=jac, method="hybr", options={"xtol": 1e-14})
+    if n > 3 and float(np.max(np.abs(f(sol.x)))) > RESIDUAL_TOL:
+        # a neutral coordinate (yaw of a boom symmetric about its axis) makes the
+        # Jacobian singular: Levenberg-Marquardt still converges
+        sol = root(f, g, jac=jac, method="lm", options={"xtol": 1e-15, "ftol": 1e-15})
     q = sol.x
     res = float(np.max(np.abs(f(q))))
     if not sol.success and res > RESIDUAL_TOL:
         why = " ".join(str(sol.message).split())  # scipy's message spans lines
         raise NoEquilibrium(f"no equilibrium found from guess {tuple(float(x) for x in g)}: {why} "
                            f"(residual {res:.3g})")
-    th = float(wrap(q[2]))
-    lam1 = math.hypot(sat.b * math.sin(th) - q[0], sat.b * math.cos(th) - q[1])
-    lam2 = math.hypot(-sat.a * math.sin(th) - q[0], -sat.a * math.cos(th) - q[1])
-    ev = np.linalg.eigvals(attitude_jacobian(sat, [q[0], q[1], th, 0, 0, 0], model))
-    return Equilibrium(sat, model, float(q[0]), float(q[1]), th,
-                       (lam1 > sat.l10, lam2 > sat.l20), res, ev)
+    i_th = names.index("theta")
+    q[i_th] = float(wrap(q[i_th]))
+    if "psi" in names:
+        q[names.index("psi")] = float(wrap(q[names.index("psi")]))
+    coords = {k: float(v) for k, v in zip(names, q)}
+    y = np.concatenate([q, np.zeros(n)])
+    off = bodies_from_states(sat, model, 0.0, y).offset
+    lam1, lam2 = np.linalg.norm(off[0] - off[2]), np.linalg.norm(off[1] - off[2])
+    ev = np.linalg.eigvals(attitude_jacobian(sat, y, model))
+    return Equilibrium(sat, model, coords["delta_x"], coords["delta_y"], coords["theta"],
+                       (bool(lam1 > sat.l10), bool(lam2 > sat.l20)), res, ev,
+                       coords if n > 3 else {})
 
 
 def format_equilibrium(eq: Equilibrium) -> str:
     s = eq.satellite
     lines = [f"{s.name}, model {eq.model}: equilibrium in the rotating frame",
              f"  delta_x {eq.delta_x:.6g} m   delta_y {eq.delta_y:.6g} m   "
-             f"theta {eq.theta:.6g} rad ({math.degrees(eq.theta):.4g} deg)",
+             f"theta {eq.theta:.6g} rad ({math.degrees(eq.theta):.4g} deg)"
+             + "".join(f"   {k} {v:.6g}" for k, v in eq.coordinates.items()
+                       if k in ("delta_z", "phi", "psi")),
              f"  tether 1 {'taut' if eq.taut[0] else 'slack'}, tether 2 "
              f"{'taut' if eq.taut[1] else 'slack'}; residual {eq.residual:.2g}",
-             f"  linearly {'stable' if eq.stable else 'UNSTABLE'}; modes "
+             f"  linearly {'stable' if eq.stable else 'UNSTABLE'}"
+             + (f" ({eq.neutral} neutral eigenvalues: yaw about the boom)" if eq.neutral else "")
+             + "; modes "
              "(frequency [rad/s], period [s], damping ratio, decay time [h]):"]
     for w, zeta, tau in eq.modes():
         lines.append(f"    {w:.5g}  {2 * math.pi / w:10.5g}  {zeta:.3g}  {tau / 3600:.4g}")

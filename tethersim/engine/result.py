@@ -235,6 +235,21 @@ class SimResult:
         return {k: com + ox[:, None] * xhat + oy[:, None] * yhat
                 for k, (ox, oy) in offsets.items()}
 
+    def bodies(self):
+        """Inertial positions, velocities, attitude and spin of the bodies along the run.
+
+        The map of :func:`tethersim.bodies` at every sample (the COM on its
+        circle of radius r0 at polar angle ωt for a circular-orbit model).
+
+        Returns
+        -------
+        tethersim.engine.bodies.Bodies
+            Arrays with a leading sample axis, SI, inertial frame.
+        """
+        from tethersim.engine.bodies import bodies_from_states
+
+        return bodies_from_states(self.satellite, self.model, self.t, self.model_states)
+
     def energy_budget(self) -> dict:
         """Jacobi integral h(t) [J], dissipated work W(t) [J] and residual h − h0 − W.
 

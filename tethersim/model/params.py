@@ -13,7 +13,7 @@ from collections import namedtuple
 
 import numpy as np
 
-from tethersim.model.presets import N_PER_MM2_TO_N
+from tethersim.model.presets import INITIAL_3D_KEYS, N_PER_MM2_TO_N
 from tethersim.model.satellite import Satellite, SatelliteError
 
 # The one table of settable quantities: name -> Param(file key, unit at the edge, SI
@@ -54,35 +54,47 @@ PARAMETERS = {
 # name -> (unit at the edge, SI value per edge unit): the table's conversion columns
 EDGE_UNITS = {n: (p.unit, p.factor) for n, p in PARAMETERS.items()}
 NAMES = tuple(EDGE_UNITS)
+# the out-of-plane start of the 3-D models (Satellite.initial_3d), settable like a
+# parameter (--set phi0_deg=5) but not listed in NAMES (not a sweep axis of the CLI)
+INITIAL_EDGE_UNITS = {k: (unit, si) for k, (unit, _, si) in INITIAL_3D_KEYS.items()}
+_ALL_UNITS = {**EDGE_UNITS, **INITIAL_EDGE_UNITS}
 MAX_GRID = 1_000_000
 
 
 def check_name(name: str) -> str:
-    if name not in EDGE_UNITS:
-        raise ValueError(f"unknown parameter {name!r}; allowed: {', '.join(NAMES)}")
+    if name not in _ALL_UNITS:
+        raise ValueError(f"unknown parameter {name!r}; allowed: {', '.join(_ALL_UNITS)}")
     return name
 
 
 def unit(name: str) -> str:
-    return EDGE_UNITS[check_name(name)][0]
+    return _ALL_UNITS[check_name(name)][0]
 
 
 def to_si(name: str, value: float) -> float:
-    return float(value) * EDGE_UNITS[check_name(name)][1]
+    return float(value) * _ALL_UNITS[check_name(name)][1]
 
 
 def from_si(name: str, value: float) -> float:
-    return float(value) / EDGE_UNITS[check_name(name)][1]
+    return float(value) / _ALL_UNITS[check_name(name)][1]
 
 
 def edge_value(sat: Satellite, name: str) -> float:
     """The satellite's value of ``name`` in edge units."""
-    return from_si(name, getattr(sat, check_name(name)))
+    if check_name(name) in INITIAL_3D_KEYS:
+        return from_si(name, sat.initial_3d.get(INITIAL_3D_KEYS[name][1], 0.0))
+    return from_si(name, getattr(sat, name))
 
 
 def with_values(sat: Satellite, values: dict) -> Satellite:
     """A copy of ``sat`` with {name: value in edge units} set (validated)."""
-    return sat.replace(**{check_name(k): to_si(k, v) for k, v in values.items()})
+    fields = {check_name(k): to_si(k, v) for k, v in values.items()
+              if k not in INITIAL_3D_KEYS}
+    start = {INITIAL_3D_KEYS[k][1]: to_si(k, v) for k, v in values.items()
+             if k in INITIAL_3D_KEYS}
+    if start:
+        fields["initial_3d"] = {**sat.initial_3d, **start}
+    return sat.replace(**fields)
 
 
 def _shown(text: str) -> str:

@@ -21,6 +21,9 @@ _POSITIVE = ("m1", "m2", "m3", "A1", "A2", "A3", "a", "b", "l10", "l20")
 _NON_NEGATIVE = ("E1", "E2", "c1", "c2", "CD")
 COM_RTOL = 1e-6  # relative tolerance of the COM-on-the-boom condition m1 b = m2 a
 DENSITY_MODES = ("uniform", "per-body")
+# out-of-plane initial state of the 3-D models (docs/roll.md): name -> unit
+INITIAL_3D = {"delta_z": "m", "phi": "rad", "psi": "rad", "delta_z_dot": "m/s",
+              "phi_dot": "rad/s", "psi_dot": "rad/s"}
 UNITS = {"m1": "kg", "m2": "kg", "m3": "kg", "A1": "m^2", "A2": "m^2", "A3": "m^2",
          "a": "m", "b": "m", "l10": "m", "l20": "m", "E1": "N", "E2": "N",
          "c1": "N s/m", "c2": "N s/m", "CD": "1", "altitude": "m"}
@@ -63,6 +66,10 @@ class Satellite:
     density_mode : str
         "uniform" (thesis: ρ at the orbit altitude for every body) or
         "per-body" (each body at its own altitude).
+    initial_3d : dict
+        The out-of-plane start of the 3-D models, {name: value} with names in
+        ``INITIAL_3D`` (δz [m], roll φ [rad], yaw ψ [rad] and their rates);
+        missing names are zero, and the planar models ignore it.
     """
 
     name: str
@@ -86,6 +93,7 @@ class Satellite:
     density_mode: str = "uniform"
     source: str = field(default="", compare=False)
     allow_implausible: bool = False  # run outside tethersim.model.plausibility's ranges knowingly
+    initial_3d: dict = field(default_factory=dict, hash=False)
 
     def __post_init__(self):
         for f in fields(self):
@@ -127,6 +135,7 @@ class Satellite:
             raise SatelliteError(f"{self._where()}theta0 = {math.degrees(init[2]):g} deg: "
                                  f"allowed range -180 to 180 deg")
         object.__setattr__(self, "initial", init)
+        object.__setattr__(self, "initial_3d", self._checked_initial_3d())
         if self.density_mode not in DENSITY_MODES:
             raise SatelliteError(f"{self._where()}density = {self.density_mode!r}: "
                                  f"allowed values {DENSITY_MODES}")
@@ -145,6 +154,33 @@ class Satellite:
                                  f"must be true or false")
         from . import plausibility  # imports params, which imports this module
         plausibility.check(self, self._where())
+
+    def _checked_initial_3d(self) -> dict:
+        given = self.initial_3d if self.initial_3d is not None else {}
+        if not isinstance(given, dict):
+            raise SatelliteError(f"{self._where()}initial_3d = {given!r}: must be a dict "
+                                 f"{{name: value}} with names in {', '.join(INITIAL_3D)}")
+        out = {}
+        for k, v in given.items():
+            if k not in INITIAL_3D:
+                raise SatelliteError(f"{self._where()}initial_3d[{k!r}]: unknown; allowed "
+                                     f"{', '.join(INITIAL_3D)}")
+            try:
+                v = float(v)
+            except (TypeError, ValueError):
+                v = math.nan
+            if not math.isfinite(v):
+                raise SatelliteError(f"{self._where()}initial_3d[{k!r}] = {given[k]!r}: must "
+                                     f"be a finite number ({INITIAL_3D[k]})")
+            if k == "phi" and not abs(v) < math.pi / 2:
+                raise SatelliteError(f"{self._where()}phi0 = {math.degrees(v):g} deg: allowed "
+                                     f"range -90 to 90 deg, exclusive (the roll-pitch-yaw "
+                                     f"angles are singular at |phi| = 90 deg)")
+            if k == "psi" and not -math.pi <= v <= math.pi:
+                raise SatelliteError(f"{self._where()}psi0 = {math.degrees(v):g} deg: allowed "
+                                     f"range -180 to 180 deg")
+            out[k] = v
+        return out
 
     def _where(self) -> str:
         return f"{self.source}: " if self.source else ""

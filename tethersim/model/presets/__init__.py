@@ -7,7 +7,9 @@ File layout (units in the key name where they are not SI)::
     [tethers]      l10 l20 [m]  E1_N_per_mm2 E2_N_per_mm2 [N/mm^2]  c1 c2 [N s/m]
     [orbit]        altitude_km [km]
     [initial]      delta_x delta_y [m]  theta0_deg [deg]  delta_x_dot delta_y_dot [m/s]
-                   theta_dot [rad/s]
+                   theta_dot [rad/s]; optional, for the 3-D models: delta_z [m]
+                   phi0_deg psi0_deg [deg] (roll, yaw)  delta_z_dot [m/s]
+                   phi_dot psi_dot [rad/s]
     [environment]  (optional) CD [-], density = "uniform" | "per-body"
     [model]        (optional) allow_implausible = true: run outside the plausible
                    ranges (tethersim.plausibility) knowingly; the summary says so
@@ -37,6 +39,12 @@ SCHEMA = {
 }
 OPTIONAL = {"environment": {"CD": "1", "density": "uniform | per-body"},
             "model": {"allow_implausible": "true | false"}}
+# optional keys of [initial]: the out-of-plane start of the 3-D models
+# (file key -> (unit, Satellite.initial_3d name, SI per file unit))
+INITIAL_3D_KEYS = {"delta_z": ("m", "delta_z", 1.0), "phi0_deg": ("deg", "phi", math.pi / 180),
+                   "psi0_deg": ("deg", "psi", math.pi / 180),
+                   "delta_z_dot": ("m/s", "delta_z_dot", 1.0),
+                   "phi_dot": ("rad/s", "phi_dot", 1.0), "psi_dot": ("rad/s", "psi_dot", 1.0)}
 PRESET_NAMES = {"sati": "satI.toml", "satii": "satII.toml", "dumbsat": "dumbsat.toml"}
 N_PER_MM2_TO_N = 1e6 * TETHER_AREA  # (N/mm^2 -> N/m^2) x 1 mm^2 = 1
 
@@ -70,10 +78,16 @@ def from_dict(doc: dict, where: str = "<dict>", allow_implausible: bool = False)
             raise SatelliteError(f"{where}: missing table [{table}] with keys {sorted(keys)}")
         if not isinstance(sub, dict):
             raise SatelliteError(f"{where}: {table} must be a table [{table}]")
+        extra = INITIAL_3D_KEYS if table == "initial" else {}
         for key in sub:
-            if key not in keys:
+            if key not in keys and key not in extra:
                 raise SatelliteError(f"{where}: unknown key {table}.{key!r}; allowed: "
-                                     f"{sorted(keys)}")
+                                     f"{sorted(keys) + sorted(extra)}")
+        initial_3d = {} if table != "initial" else {
+            name: _number(where, f"initial.{key}", sub[key], unit) * si
+            for key, (unit, name, si) in extra.items() if key in sub}
+        if table == "initial":
+            vals["initial_3d"] = initial_3d
         for key, unit in keys.items():
             if key not in sub:
                 if table in OPTIONAL:
@@ -98,12 +112,14 @@ def from_dict(doc: dict, where: str = "<dict>", allow_implausible: bool = False)
             E2=vals["E2_N_per_mm2"] * N_PER_MM2_TO_N, c1=vals["c1"], c2=vals["c2"],
             altitude=vals["altitude_km"] * 1e3, initial=initial,
             CD=vals.get("CD", CD_DEFAULT), density_mode=vals.get("density", "uniform"),
-            source=where, allow_implausible=allow_implausible or vals.get("allow_implausible", False))
+            source=where, allow_implausible=allow_implausible or vals.get("allow_implausible", False),
+            initial_3d=vals["initial_3d"])
     except SatelliteError as exc:
         # name the file's key, not the internal SI field
         msg = str(exc)
         for internal, key in (("E1 =", "tethers.E1_N_per_mm2 ="), ("E2 =", "tethers.E2_N_per_mm2 ="),
-                              ("theta0 =", "initial.theta0_deg ="), ("altitude =", "orbit.altitude_km =")):
+                              ("theta0 =", "initial.theta0_deg ="), ("altitude =", "orbit.altitude_km ="),
+                              ("phi0 =", "initial.phi0_deg ="), ("psi0 =", "initial.psi0_deg =")):
             msg = msg.replace(internal, key)
         # E in N equals the file's N/mm^2 value (1 mm^2 cross-section): name the file's unit
         msg = re.sub(r"(E[12]_N_per_mm2 = \S+) N:", r"\1 N/mm^2:", msg)

@@ -4,7 +4,7 @@ from __future__ import annotations
 import math
 
 from tethersim.model.satellite import Satellite
-from tethersim.model.presets import N_PER_MM2_TO_N
+from tethersim.model.presets import INITIAL_3D_KEYS, N_PER_MM2_TO_N
 
 
 def dumps(sat: Satellite, notes: dict | None = None, header: str = "") -> str:
@@ -20,6 +20,9 @@ def dumps(sat: Satellite, notes: dict | None = None, header: str = "") -> str:
                     "delta_x_dot": x0[3], "delta_y_dot": x0[4], "theta_dot": x0[5]},
         "environment": {"CD": sat.CD, "density": sat.density_mode},
     }
+    for key, (_, name, si) in INITIAL_3D_KEYS.items():  # the 3-D start, where set
+        if name in sat.initial_3d:
+            tables["initial"][key] = sat.initial_3d[name] / si
     if sat.allow_implausible:
         tables["model"] = {"allow_implausible": True}
     lines = [f"# {line}" if line else "#" for line in header.splitlines()]

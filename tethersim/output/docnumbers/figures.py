@@ -151,3 +151,8 @@ from tethersim.output.docnumbers import figures_cases as _cases  # noqa: E402
 
 QUANTITIES.update(_cases.QUANTITIES)
 FIGURES += _cases.FIGURES
+
+from tethersim.output.docnumbers import figures_roll as _roll  # noqa: E402
+
+QUANTITIES.update(_roll.QUANTITIES)
+FIGURES += _roll.FIGURES

@@ -1,4 +1,5 @@
-"""PNG plots of a result: θ, δx, δy against time (orbits below, hours above).
+"""PNG plots of a result: θ, δx, δy against time (orbits below, hours above);
+for a 3-D model also roll φ, yaw ψ and the balloon's out-of-plane δz.
 
 The pitch panel marks θ_ss, the thesis's ±0.05 rad band about it and the settling
 time.  The balloon's taut-tether bounce (period ~70-80 s) is far faster than the
@@ -20,6 +21,11 @@ from tethersim.engine.result import SimResult
 FAST_PNG = {"compress_level": 1}  # zlib level 1: a third of the encode time, ~1.3x the bytes
 PANELS = (("theta", "pitch θ [rad]"), ("x", "balloon δx [m] (+x: wake)"),
           ("y", "balloon δy [m] (+y: up)"))
+# drawn when the model has these states (3-D models; docs/roll.md)
+PANELS_3D = (("phi", "roll φ [rad]"), ("psi", "yaw ψ [rad] (about the boom)"),
+             ("delta_z", "balloon δz [m] (+z: orbit normal)"))
+FILE_NAMES = {"theta": "theta", "x": "delta_x", "y": "delta_y", "phi": "roll", "psi": "yaw",
+              "delta_z": "delta_z"}
 
 
 ZOOM_ORBITS = 2.0  # inset: the first orbits, where the tether bounce is large
@@ -93,7 +99,10 @@ def _hours_on_top(ax, period):
 
 
 def plot_result(res: SimResult, out_dir, prefix: str = "") -> list:
-    """Write theta.png, delta_x.png, delta_y.png and overview.png; return the paths."""
+    """Write theta.png, delta_x.png, delta_y.png and overview.png; return the paths.
+
+    A 3-D model adds roll.png, yaw.png and delta_z.png (and their overview panels).
+    """
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -103,15 +112,21 @@ def plot_result(res: SimResult, out_dir, prefix: str = "") -> list:
     period = res.satellite.period
     orbits = res.t / period
     paths = []
-    fig_all, axes = plt.subplots(3, 1, figsize=(10, 9), sharex=True)
+    panels = PANELS + tuple(pn for pn in PANELS_3D if pn[0] in res.layout.state)
+    fig_all, axes = plt.subplots(len(panels), 1, figsize=(10, 3 * len(panels)), sharex=True)
     # fixed margins instead of a layout engine: one draw per savefig, half the time
-    fig_all.subplots_adjust(left=0.09, right=0.97, top=0.9, bottom=0.06, hspace=0.12)
-    for (attr, label), ax_all in zip(PANELS, axes):
+    top, bottom = (0.9, 0.06) if len(panels) == 3 else (0.95, 0.03)
+    fig_all.subplots_adjust(left=0.09, right=0.97, top=top, bottom=bottom, hspace=0.12)
+    for (attr, label), ax_all in zip(panels, axes):
         fig, ax = plt.subplots(figsize=(10, 4))
         fig.subplots_adjust(left=0.09, right=0.97, top=0.78, bottom=0.13)
         for a in (ax, ax_all):
             if attr == "theta":
                 a.plot(orbits, res.theta, lw=0.8)
+            elif attr in ("phi", "psi"):
+                a.plot(orbits, res.series(attr), lw=0.8)
+            elif attr == "delta_z":
+                _draw_fast(a, res, orbits, res.series(attr), label, zoom=True)
             else:
                 _draw_fast(a, res, orbits, getattr(res, attr), label, zoom=True)
             a.set_ylabel(label)
@@ -132,7 +147,7 @@ def plot_result(res: SimResult, out_dir, prefix: str = "") -> list:
         ax.set_xlabel("time [orbits]")
         _hours_on_top(ax, period)
         ax.set_title(f"{res.satellite.name}: {label.split(' [')[0]}\n{res.label}", fontsize=9)
-        name = {"theta": "theta", "x": "delta_x", "y": "delta_y"}[attr]
+        name = FILE_NAMES[attr]
         p = out_dir / f"{prefix}{name}.png"
         fig.savefig(p, dpi=120, pil_kwargs=FAST_PNG)
         plt.close(fig)
