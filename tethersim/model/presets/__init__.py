@@ -5,12 +5,15 @@ File layout (units in the key name where they are not SI)::
     name = "SatI"
     [satellite]    m1 m2 m3 [kg]  A1 A2 A3 [m^2]  a b [m]
     [tethers]      l10 l20 [m]  E1_N_per_mm2 E2_N_per_mm2 [N/mm^2]  c1 c2 [N s/m]
-    [orbit]        altitude_km [km]
+    [orbit]        altitude_km [km]; optional: orbit = "circular" | "free", j2 = true | false,
+                   eccentricity [-] (altitude_km is then the perigee), reentry_altitude_km [km]
     [initial]      delta_x delta_y [m]  theta0_deg [deg]  delta_x_dot delta_y_dot [m/s]
                    theta_dot [rad/s]
     [environment]  (optional) CD [-], density = "uniform" | "per-body"
     [model]        (optional) allow_implausible = true: run outside the plausible
                    ranges (tethersim.plausibility) knowingly; the summary says so
+    [atmosphere]   (optional) atmosphere = "vallado" | "nrlmsise00", epoch = ISO UTC,
+                   f107, f107a [sfu], ap, density_scale [-] (tethersim.model.options)
 
 Moduli are given, as in the thesis, in N/mm^2 for a 1 mm^2 cross-section,
 so the value in N/mm^2 equals the tether force scale in N (thesis p. 3-1).
@@ -36,7 +39,14 @@ SCHEMA = {
                 "delta_y_dot": "m/s", "theta_dot": "rad/s"},
 }
 OPTIONAL = {"environment": {"CD": "1", "density": "uniform | per-body"},
-            "model": {"allow_implausible": "true | false"}}
+            "model": {"allow_implausible": "true | false"},
+            "atmosphere": {"atmosphere": "vallado | nrlmsise00", "epoch": "ISO UTC",
+                           "f107": "sfu", "f107a": "sfu", "ap": "1", "density_scale": "1"}}
+# optional keys of required tables
+OPTIONAL_KEYS = {"orbit": {"orbit": "circular | free", "j2": "true | false",
+                           "eccentricity": "1", "reentry_altitude_km": "km"}}
+_TEXT = {"density": str, "orbit": str, "atmosphere": str, "epoch": str, "j2": bool,
+         "allow_implausible": bool}
 PRESET_NAMES = {"sati": "satI.toml", "satii": "satII.toml", "dumbsat": "dumbsat.toml"}
 N_PER_MM2_TO_N = 1e6 * TETHER_AREA  # (N/mm^2 -> N/m^2) x 1 mm^2 = 1
 
@@ -70,21 +80,20 @@ def from_dict(doc: dict, where: str = "<dict>", allow_implausible: bool = False)
             raise SatelliteError(f"{where}: missing table [{table}] with keys {sorted(keys)}")
         if not isinstance(sub, dict):
             raise SatelliteError(f"{where}: {table} must be a table [{table}]")
+        extra = OPTIONAL_KEYS.get(table, {})
         for key in sub:
-            if key not in keys:
+            if key not in keys and key not in extra:
                 raise SatelliteError(f"{where}: unknown key {table}.{key!r}; allowed: "
-                                     f"{sorted(keys)}")
-        for key, unit in keys.items():
+                                     f"{sorted(keys) + sorted(extra)}")
+        for key, unit in {**keys, **extra}.items():
             if key not in sub:
-                if table in OPTIONAL:
+                if table in OPTIONAL or key in extra:
                     continue
                 raise SatelliteError(f"{where}: missing key {table}.{key} ({unit})")
-            if key == "density":
-                vals[key] = sub[key]
-            elif key == "allow_implausible":
-                if not isinstance(sub[key], bool):
-                    raise SatelliteError(f"{where}: model.allow_implausible = {sub[key]!r}: "
-                                         f"must be true or false")
+            if key in _TEXT:
+                if not isinstance(sub[key], _TEXT[key]):
+                    kind = "true or false" if _TEXT[key] is bool else f"a string ({unit})"
+                    raise SatelliteError(f"{where}: {table}.{key} = {sub[key]!r}: must be {kind}")
                 vals[key] = sub[key]
             else:
                 vals[key] = _number(where, f"{table}.{key}", sub[key], unit)
@@ -98,7 +107,8 @@ def from_dict(doc: dict, where: str = "<dict>", allow_implausible: bool = False)
             E2=vals["E2_N_per_mm2"] * N_PER_MM2_TO_N, c1=vals["c1"], c2=vals["c2"],
             altitude=vals["altitude_km"] * 1e3, initial=initial,
             CD=vals.get("CD", CD_DEFAULT), density_mode=vals.get("density", "uniform"),
-            source=where, allow_implausible=allow_implausible or vals.get("allow_implausible", False))
+            source=where, allow_implausible=allow_implausible or vals.get("allow_implausible", False),
+            **_options(vals))
     except SatelliteError as exc:
         # name the file's key, not the internal SI field
         msg = str(exc)
@@ -111,15 +121,24 @@ def from_dict(doc: dict, where: str = "<dict>", allow_implausible: bool = False)
         raise SatelliteError(msg) from None
 
 
+def _options(vals: dict) -> dict:
+    """The orbit and air options a document set (SI; absent keys keep the defaults)."""
+    out = {k: vals[k] for k in ("orbit", "j2", "eccentricity", "atmosphere", "epoch", "f107",
+                                "f107a", "ap", "density_scale") if k in vals}
+    if "reentry_altitude_km" in vals:
+        out["reentry_altitude"] = vals["reentry_altitude_km"] * 1e3
+    return out
+
+
 def _file_key(msg: str, where: str) -> str:
     """Name the file's key (satellite.m1, tethers.c1, ...) of the field a message starts with."""
-    from ..params import PARAMETERS  # params imports this package: at call time
+    from ..params import OPTIONS, PARAMETERS  # params imports this package: at call time
 
     head = f"{where}: "
     if not msg.startswith(head):
         return msg
     rest = msg[len(head):]
-    for name, p in PARAMETERS.items():
+    for name, p in list(PARAMETERS.items()) + list(OPTIONS.items()):
         if rest.startswith(f"{name} = "):
             return head + p.key + rest[len(name):]
     return msg
