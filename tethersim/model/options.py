@@ -174,3 +174,39 @@ def density_text(sat) -> str:
                 f"times{scale}; MSIS is not in the compiled loop yet")
     return (f"uniform {uniform_density(sat):.4g} kg/m^3: Vallado Table 8-4 at "
             f"{sat.altitude / 1e3:g} km{scale}")
+
+
+def air_density(sat, altitude_m: float, t: float = 0.0, longitude_rad: float = 0.0) -> float:
+    """Air density [kg/m^3] for a satellite's air settings.
+
+    Parameters
+    ----------
+    sat : Satellite
+        Its ``atmosphere``, ``epoch``, indices and ``density_scale`` are used.
+    altitude_m : float
+        Geodetic altitude [m] (on the equator).
+    t : float, optional
+        Time since the epoch [s] (MSIS only).
+    longitude_rad : float, optional
+        East longitude [rad] (MSIS only).
+
+    Returns
+    -------
+    float
+        Vallado's table or pymsis's own NRLMSISE-00 value (no grid), times
+        ``density_scale``.
+
+    Raises
+    ------
+    ValueError
+        An altitude outside the model's range (one line).
+
+    Examples
+    --------
+    >>> import tethersim
+    >>> f"{tethersim.air_density(tethersim.load_preset('satI'), 200e3):.4g}"
+    '2.789e-10'
+    """
+    from tethersim.model.air import air_density as _air_density
+
+    return _air_density(air_model(sat), altitude_m, t, longitude_rad) * sat.density_scale
