@@ -72,7 +72,10 @@ OPTIONS = {
     "j2": Option("orbit.j2", ("true", "false"), "Earth's J2 in the free orbit"),
     "atmosphere": Option("atmosphere.atmosphere", ("vallado", "nrlmsise00"), "air model"),
     "epoch": Option("atmosphere.epoch", "ISO UTC date-time", "instant of t = 0 (MSIS)"),
+    "density": Option("environment.density", ("uniform", "per-body"),
+                      "one density, or each body's own altitude"),
 }
+_OPTION_FIELDS = {"density": "density_mode"}  # option name -> Satellite field, where they differ
 # name -> (unit at the edge, SI value per edge unit): the table's conversion columns
 EDGE_UNITS = {n: (p.unit, p.factor) for n, p in PARAMETERS.items()}
 NAMES = tuple(EDGE_UNITS)
@@ -203,7 +206,7 @@ def apply_overrides(sat: Satellite, sets=(), scales=()) -> Satellite:
     for s in sets:
         name = s.split("=", 1)[0].strip()
         if "=" in s and name in OPTIONS:
-            chosen[name] = option_value(name, s.split("=", 1)[1])
+            chosen[_OPTION_FIELDS.get(name, name)] = option_value(name, s.split("=", 1)[1])
         else:
             numbers.append(s)
     if chosen:

@@ -79,14 +79,22 @@ def write_rows(path, rows) -> Path:
                        tuple((k, k) for k in keys))
 
 
-def timeseries_columns() -> tuple:
-    """(name, unit) of every column of a run's time series, time first."""
-    return (("t", "s"),) + tuple(zip(STATE + ORBIT_COLUMNS, STATE_UNITS + ORBIT_UNITS))
+def timeseries_columns(res: SimResult | None = None) -> tuple:
+    """(name, unit) of every column of a run's time series, time first.
+
+    The thesis layout by default; for ``res``, its model's state (a free-orbit
+    model carries r and ν itself and has no appended COM orbit).
+    """
+    if res is None or res.layout.orbit == "circular" and res.layout.state == tuple(STATE):
+        return (("t", "s"),) + tuple(zip(STATE + ORBIT_COLUMNS, STATE_UNITS + ORBIT_UNITS))
+    lay = res.layout
+    extra = tuple(zip(ORBIT_COLUMNS, ORBIT_UNITS)) if lay.orbit == "circular" else ()
+    return (("t", "s"),) + tuple(zip(lay.state, lay.state_units)) + extra
 
 
 def write_timeseries(res: SimResult, path) -> Path:
     """Write a run's samples (t, the model state, the COM orbit) as CSV, SI units."""
-    names = timeseries_columns()
+    names = timeseries_columns(res)
     data = np.column_stack([res.t, res.states])
     rows = ({n: v for (n, _), v in zip(names, row)} for row in data)
     return write_table(path, rows, tuple((n, f"{n} [{u}]") for n, u in names))
@@ -97,7 +105,7 @@ def to_xarray(res: SimResult, attrs: dict | None = None):
     import xarray as xr
 
     data = {n: ("t", res.states[:, i], {"units": u})
-            for i, (n, u) in enumerate(timeseries_columns()[1:])}
+            for i, (n, u) in enumerate(timeseries_columns(res)[1:])}
     found = res.satellite.implausible if res.satellite.allow_implausible else ()
     meta = {"satellite": res.satellite.name, "model": res.model, "method": res.method,
             "label": res.label, "status": res.status, "message": res.message,
