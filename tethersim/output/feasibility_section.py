@@ -47,7 +47,7 @@ def section_feasibility(page: Page, periods: float, workers=None, sat_name: str 
                            title=f"{sat.name}: does the design work in a real orbit?")
     body = [_table(
         ["start altitude [km]", "lifetime [h]", "free run ended", "settling [h]",
-         "θ_ss nominal / min / mean / max [rad]", "drag make-up [m/s/day]", "verdict"],
+         "θ_ss nominal / min / mean / max [rad]", "drag make-up [m/s/day]", "feasibility verdict"],
         [[f"{r['altitude_km']:g}", ("≥ " if r["lifetime_capped"] else "") + _h(r["lifetime_h"]),
           f"{r['free_end']} at {r['end_altitude_km']:.0f} km", _h(r["settling_h"]),
           " / ".join(f"{r[k]:+.3f}" for k in ("theta_ss_rad", "theta_ss_min_rad",
