@@ -17,6 +17,7 @@ from tethersim.model.registry import DEFAULT_MODEL, NAMES, get_model
 from tethersim.model.presets import load, load_preset
 from tethersim.engine.result import SimResult
 from tethersim.model.satellite import Satellite, SatelliteError
+from tethersim.model.options import air_density
 from tethersim.model.satellite import parameters as _parameters
 from tethersim.engine.simulate import RK4StepWarning, simulate
 from tethersim.analysis.outcome import Outcome, outcome
@@ -27,7 +28,8 @@ __all__ = ["Satellite", "SatelliteError", "SimResult", "RK4StepWarning", "Outcom
            "load_preset", "simulate", "outcome", "run_summary", "write_timeseries",
            "write_netcdf", "write_table", "accelerations", "generalized_forces", "parameters",
            "MODELS", "FAMILIES", "STATE", "PARAMETERS", "__version__", "find_equilibrium",
-           "Equilibrium", "SweepSpec", "run_sweep", "bodies", "body_accelerations"]
+           "Equilibrium", "SweepSpec", "run_sweep", "bodies", "body_accelerations",
+           "air_density"]
 from tethersim._version import __version__  # noqa: E402
 MODELS = NAMES  # every generated model (tethersim.model.registry)
 

@@ -54,6 +54,11 @@ class Outcome:
         Estimated final error (δx [m], δy [m], θ [rad]) if the run was checked.
     converged : bool or None
         Whether that estimate is within the convergence bounds.
+    drag_makeup : float
+        Velocity per day that holds a circular orbit against the run's drag
+        [m/s/day] (tethersim.analysis.orbit_life); NaN for a free orbit.
+    reentry_time : float or None
+        When a free orbit re-entered [s]; None if it did not (not in ``row()``).
     """
 
     status: str
@@ -65,6 +70,8 @@ class Outcome:
     max_force: tuple
     error_estimate: tuple | None
     converged: bool | None
+    drag_makeup: float = math.nan
+    reentry_time: float | None = None
 
     @property
     def class_name(self) -> str:
@@ -181,6 +188,10 @@ def outcome(res: SimResult, tol: float = SETTLING_TOL, forces: bool = True) -> O
     if forces and n >= 1:
         q = family_force_peaks(res.layout.index, res.per_body, states, res.parameters)
         peak = tuple(float(q[i]) for i in (ix, iy, ith))  # coordinates lead the state
+    from tethersim.analysis.orbit_life import drag_makeup, lifetime
+    with np.errstate(all="ignore"):
+        makeup = drag_makeup(res) if n >= 2 else math.nan
     return Outcome(status=res.status, reason=reason, stability_class=int(cls), metrics=m,
                    trail_delta_x=trail[0], trail_delta_y=trail[1], max_force=peak,
-                   error_estimate=res.error_estimate, converged=res.converged)
+                   error_estimate=res.error_estimate, converged=res.converged,
+                   drag_makeup=makeup, reentry_time=lifetime(res))

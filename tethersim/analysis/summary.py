@@ -59,8 +59,24 @@ def run_summary(res: SimResult, out: Outcome | None = None) -> dict:
         "final delta_x [m]": float(res.x[n - 1]),
         "final delta_y [m]": float(res.y[n - 1]),
         "status": res.status,
+        **orbit_summary(res, out),
         **implausible_summary(res.satellite),
     }
+
+
+def orbit_summary(res: SimResult, out: Outcome) -> dict:
+    """Orbit mode, the density the run used, drag make-up or re-entry time."""
+    from tethersim.model.options import density_text
+
+    sat = res.satellite
+    d = {"orbit": f"{sat.orbit} (model {res.model})", "air density": density_text(sat)}
+    if res.layout.orbit == "circular":
+        d["drag make-up to hold the circular orbit [m/s/day]"] = out.drag_makeup
+    else:
+        rt = out.reentry_time
+        d["re-entry time [h]"] = rt / 3600 if rt is not None else float("nan")
+        d["final altitude [km]"] = float(res.altitude[-1] / 1e3)
+    return d
 
 
 def implausible_summary(sat) -> dict:

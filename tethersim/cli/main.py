@@ -26,6 +26,7 @@ from tethersim._version import __version__
 from tethersim.cli import (
     compare,
     equilibrium,
+    feasibility,
     forces,
     headlines,
     options,
@@ -38,7 +39,8 @@ from tethersim.cli import (
 )
 
 # in the order of `tethersim --help`
-COMMANDS = (run, validate, show, equilibrium, compare, forces, sweep, tune, report, headlines)
+COMMANDS = (run, validate, show, equilibrium, compare, forces, sweep, tune, report, headlines,
+            feasibility)
 
 
 def build_parser() -> options.Parser:

@@ -49,7 +49,12 @@ def run(args) -> int:
     print(f"{sat.name}  ({sat.source})")
     print("  parameters in the units --set takes (E1, E2 in N/mm^2, altitude in km, else SI):")
     for name in params.NAMES:
+        if getattr(sat, name) is None:  # an unset MSIS index: the bundled table's
+            continue
         print(f"  {name:<12} {exact(params.edge_value(sat, name)):<22} {params.unit(name)}")
+    print(f"  options: orbit {sat.orbit}, j2 {str(sat.j2).lower()}, atmosphere "
+          f"{sat.atmosphere}, epoch {sat.epoch}"
+          + ("" if sat.f107 is not None else " (f107, f107a, ap unset: the bundled table)"))
     print("  initial state (SI):")
     names = ("delta_x [m]", "delta_y [m]", "theta [rad]", "delta_x_dot [m/s]",
              "delta_y_dot [m/s]", "theta_dot [rad/s]")
@@ -57,6 +62,8 @@ def run(args) -> int:
         print(f"  {n:<18} {v:.6g}")
     print(f"  r0 {sat.r0:.6g} m, omega {sat.omega:.6g} rad/s, period {sat.period:.6g} s, "
           f"rho {sat.rho:.4g} kg/m^3, density {sat.density_mode}")
+    from tethersim.model.options import density_text
+    print(f"  air density of a run: {density_text(sat)}")
     for line in (sat.implausible if sat.allow_implausible else ()):
         print(f"  implausible (allowed): {line}")
     return 0

@@ -22,7 +22,7 @@ from tethersim.engine.integrators.rk4 import rk4_run
 from tethersim.engine.integrators.select import specialised
 from tethersim.engine.linearise import rk4_amplification
 from tethersim.engine.result import SimResult
-from tethersim.model.registry import DEFAULT_MODEL, model_index
+from tethersim.model.registry import DEFAULT_MODEL, model_for_orbit, model_index
 from tethersim.model.inputs import initial_model_state, parameter_vector
 from tethersim.model.satellite import Satellite
 
@@ -136,7 +136,7 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
     periods = _check_positive("periods", periods)
     if method not in METHODS:
         raise ValueError(f"method = {method!r}: allowed values {', '.join(METHODS)}")
-    model_index(model)
+    model = model_for_orbit(model, sat.orbit)  # orbit = "free": the model's free twin
     if method == "rk4":
         steps = _check_positive("steps", steps if steps is not None
                                 else max(1, round(STEPS_PER_PERIOD * periods)), integer=True)

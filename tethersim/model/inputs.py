@@ -10,9 +10,10 @@ beyond the values it adds:
   axis) unless the satellite sets ``inertia = "points"`` (all zero);
 * ``J2`` (0 unless the satellite asks for it) and ``R_E`` [m];
 * the out-of-plane initial state (δz, roll φ, yaw ψ and rates), zero unless set;
-* for a free orbit, r = r0 and ν = 0 at t = 0, ṙ = 0 and ν̇ the circular rate
-  (with J2, the rate that keeps an equatorial orbit circular,
-  ν̇² = μ/r³ · (1 + 3/2 J2 (R_E/r)²)).
+* for a free orbit, the perigee at t = 0: r = r_p = R_E + altitude, ν = 0, ṙ = 0
+  and ν̇ the perigee rate of eccentricity e, ν̇² = μ (1 + e) / r_p³ (vis-viva: the
+  apogee is then r_p (1 + e)/(1 − e)); with J2, times (1 + 3/2 J2 (R_E/r_p)²), the
+  factor that keeps an equatorial orbit circular at e = 0.
 """
 from __future__ import annotations
 
@@ -61,6 +62,8 @@ def initial_model_state(sat: Satellite, model: str) -> np.ndarray:
     if m.orbit == "free":
         r = sat.r0
         j2 = J2_EARTH if getattr(sat, "j2", False) else 0.0
+        e = getattr(sat, "eccentricity", 0.0)
         values.update(r=r, nu=0.0, r_dot=0.0,
-                      nu_dot=math.sqrt(MU_EARTH / r**3 * (1 + 1.5 * j2 * (R_EARTH / r) ** 2)))
+                      nu_dot=math.sqrt(MU_EARTH * (1 + e) / r**3
+                                       * (1 + 1.5 * j2 * (R_EARTH / r) ** 2)))
     return np.array([values[n] for n in m.state], dtype=np.float64)

@@ -50,7 +50,32 @@ PARAMETERS = {
     "altitude": Param("orbit.altitude_km", "km", 1e3, "circular orbit altitude", 120.0, 1000.0,
                       False, "below 120 km the orbit re-enters within hours; above 1000 km "
                              "is outside Vallado's atmosphere table"),
+    # orbit and air options (tethersim.model.options holds the hard rules)
+    "eccentricity": Param("orbit.eccentricity", "1", 1.0, "initial free-orbit eccentricity "
+                          "(altitude at perigee)", 0.0, 0.0999, True, "near-circular orbits"),
+    "reentry_altitude": Param("orbit.reentry_altitude_km", "km", 1e3, "re-entry altitude (run "
+                              "ends)", 80.0, 1000.0, False, "MSIS's lower edge to the table's top"),
+    "density_scale": Param("atmosphere.density_scale", "1", 1.0, "factor on the air density",
+                           0.01, 100.0, False, "solar-cycle and storm densities"),
+    "f107": Param("atmosphere.f107", "sfu", 1.0, "F10.7 of the previous day (MSIS)", 60.0, 400.0,
+                  False, "observed solar radio flux"),
+    "f107a": Param("atmosphere.f107a", "sfu", 1.0, "81-day mean F10.7 (MSIS)", 60.0, 400.0,
+                   False, "observed solar radio flux"),
+    "ap": Param("atmosphere.ap", "1", 1.0, "daily Ap (MSIS)", 0.0, 400.0, True,
+                "quiet to a severe storm"),
 }
+# options that are not numbers: name -> (file key, allowed values or kind, meaning); --set
+# takes them as text (orbit=free, j2=true, atmosphere=nrlmsise00, epoch=2017-06-23T00:00:00)
+Option = namedtuple("Option", "key allowed meaning")
+OPTIONS = {
+    "orbit": Option("orbit.orbit", ("circular", "free"), "orbit mode"),
+    "j2": Option("orbit.j2", ("true", "false"), "Earth's J2 in the free orbit"),
+    "atmosphere": Option("atmosphere.atmosphere", ("vallado", "nrlmsise00"), "air model"),
+    "epoch": Option("atmosphere.epoch", "ISO UTC date-time", "instant of t = 0 (MSIS)"),
+    "density": Option("environment.density", ("uniform", "per-body"),
+                      "one density, or each body's own altitude"),
+}
+_OPTION_FIELDS = {"density": "density_mode"}  # option name -> Satellite field, where they differ
 # name -> (unit at the edge, SI value per edge unit): the table's conversion columns
 EDGE_UNITS = {n: (p.unit, p.factor) for n, p in PARAMETERS.items()}
 NAMES = tuple(EDGE_UNITS)
@@ -62,9 +87,23 @@ MAX_GRID = 1_000_000
 
 
 def check_name(name: str) -> str:
+    if name in OPTIONS:
+        o = OPTIONS[name]
+        allowed = ", ".join(o.allowed) if isinstance(o.allowed, tuple) else o.allowed
+        raise ValueError(f"{name!r} is an option, not a number: --set {name}=VALUE ({allowed})")
     if name not in _ALL_UNITS:
-        raise ValueError(f"unknown parameter {name!r}; allowed: {', '.join(_ALL_UNITS)}")
+        raise ValueError(f"unknown parameter {name!r}; allowed: {', '.join(_ALL_UNITS)}; "
+                         f"options: {', '.join(OPTIONS)}")
     return name
+
+
+def option_value(name: str, text: str):
+    """The value of option ``name`` (OPTIONS) from its text; one-line error if not allowed."""
+    o = OPTIONS[name]
+    value = text.strip()
+    if isinstance(o.allowed, tuple) and value.lower() not in o.allowed:
+        raise ValueError(f"--set {name}={_shown(text)}: allowed values {', '.join(o.allowed)}")
+    return value.lower() == "true" if name == "j2" else value
 
 
 def unit(name: str) -> str:
@@ -80,10 +119,11 @@ def from_si(name: str, value: float) -> float:
 
 
 def edge_value(sat: Satellite, name: str) -> float:
-    """The satellite's value of ``name`` in edge units."""
+    """The satellite's value of ``name`` in edge units (NaN for an unset index)."""
     if check_name(name) in INITIAL_3D_KEYS:
         return from_si(name, sat.initial_3d.get(INITIAL_3D_KEYS[name][1], 0.0))
-    return from_si(name, getattr(sat, name))
+    v = getattr(sat, name)
+    return math.nan if v is None else from_si(name, v)
 
 
 def with_values(sat: Satellite, values: dict) -> Satellite:
@@ -169,8 +209,24 @@ def parse_assignment(text: str, option: str = "--set") -> tuple:
 
 
 def apply_overrides(sat: Satellite, sets=(), scales=()) -> Satellite:
-    """Apply '--set NAME=VALUE' (edge units) then '--scale NAME=FACTOR' to a satellite."""
-    values = dict(parse_assignment(s) for s in sets)
+    """Apply '--set NAME=VALUE' (edge units) then '--scale NAME=FACTOR' to a satellite.
+
+    Options (:data:`OPTIONS`: orbit, j2, atmosphere, epoch) are set as text first.
+    """
+    chosen = {}
+    numbers = []
+    for s in sets:
+        name = s.split("=", 1)[0].strip()
+        if "=" in s and name in OPTIONS:
+            chosen[_OPTION_FIELDS.get(name, name)] = option_value(name, s.split("=", 1)[1])
+        else:
+            numbers.append(s)
+    if chosen:
+        try:
+            sat = sat.replace(**chosen)
+        except SatelliteError as exc:
+            raise SatelliteError(f"after --set: {exc}") from None
+    values = dict(parse_assignment(s) for s in numbers)
     for s in scales:
         name, factor = parse_assignment(s, "--scale")
         values[name] = values.get(name, edge_value(sat, name)) * factor

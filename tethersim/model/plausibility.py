@@ -44,6 +44,8 @@ def _table_problems(sat) -> list:
 
     out = []
     for name, p in PARAMETERS.items():
+        if getattr(sat, name) is None:  # an unset index (MSIS reads the table)
+            continue
         v = getattr(sat, name) / p.factor
         if (p.zero_ok and v == 0) or p.low <= v <= p.high:
             continue

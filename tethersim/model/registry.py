@@ -126,3 +126,38 @@ def get_model(name: str, supported=None, what: str = "") -> Model:
 def model_index(name: str, supported=None, what: str = "") -> int:
     """Index of model ``name`` for the compiled kernels (see :func:`get_model`)."""
     return get_model(name, supported, what).index
+
+
+#: the free-orbit twin of each thesis model (``orbit = "free"``); ``printed`` has none
+FREE_VARIANTS = {"derived": "free", "exact-gravity": "free-exact-gravity",
+                 "objective-damper": "free-objective-damper"}
+
+
+def model_for_orbit(name: str, orbit: str = "circular") -> str:
+    """The model that runs ``name`` in orbit mode ``orbit``.
+
+    Parameters
+    ----------
+    name : str
+        Requested model (``--model``).
+    orbit : str, optional
+        The satellite's ``orbit``: ``"circular"`` (``name`` itself) or ``"free"``
+        (its free twin, :data:`FREE_VARIANTS`; a free model stays itself).
+
+    Returns
+    -------
+    str
+        Model name.
+
+    Raises
+    ------
+    ValueError
+        One line: a model with no free twin (``printed``, the 3-D models).
+    """
+    m = get_model(name)
+    if orbit != "free" or m.orbit == "free":
+        return name
+    if name not in FREE_VARIANTS:
+        raise ValueError(f"model = {name!r} has no free-orbit variant (orbit = 'free'); "
+                         f"allowed: {', '.join(FREE_VARIANTS)}")
+    return FREE_VARIANTS[name]

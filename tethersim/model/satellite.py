@@ -13,7 +13,7 @@ import numpy as np
 
 from tethersim.generated import layout
 
-from tethersim.model import atmosphere
+from tethersim.model import atmosphere, options
 from tethersim.model.constants import CD_DEFAULT, MU_EARTH, OMEGA_EARTH, R_EARTH
 
 # fields that must be > 0 and >= 0 (units in UNITS)
@@ -24,6 +24,8 @@ DENSITY_MODES = ("uniform", "per-body")
 # out-of-plane initial state of the 3-D models (docs/roll.md): name -> unit
 INITIAL_3D = {"delta_z": "m", "phi": "rad", "psi": "rad", "delta_z_dot": "m/s",
               "phi_dot": "rad/s", "psi_dot": "rad/s"}
+_OPTIONAL = ("allow_implausible", "orbit", "j2", "eccentricity", "reentry_altitude", "atmosphere",
+             "epoch", "f107", "f107a", "ap", "density_scale")
 UNITS = {"m1": "kg", "m2": "kg", "m3": "kg", "A1": "m^2", "A2": "m^2", "A3": "m^2",
          "a": "m", "b": "m", "l10": "m", "l20": "m", "E1": "N", "E2": "N",
          "c1": "N s/m", "c2": "N s/m", "CD": "1", "altitude": "m"}
@@ -70,6 +72,10 @@ class Satellite:
         The out-of-plane start of the 3-D models, {name: value} with names in
         ``INITIAL_3D`` (δz [m], roll φ [rad], yaw ψ [rad] and their rates);
         missing names are zero, and the planar models ignore it.
+    orbit, j2, eccentricity, reentry_altitude, atmosphere, epoch, f107, f107a, ap, density_scale
+        Orbit and air options (tethersim.model.options): circular or free orbit, J2,
+        eccentricity (altitude at perigee), re-entry altitude [m], air model,
+        epoch, solar and geomagnetic indices, density scale.
     """
 
     name: str
@@ -94,6 +100,17 @@ class Satellite:
     source: str = field(default="", compare=False)
     allow_implausible: bool = False  # run outside tethersim.model.plausibility's ranges knowingly
     initial_3d: dict = field(default_factory=dict, hash=False)
+    # orbit and air options (tethersim.model.options; edge units in tethersim.model.params)
+    orbit: str = "circular"
+    j2: bool = False
+    eccentricity: float = 0.0
+    reentry_altitude: float = 120e3  # m
+    atmosphere: str = "vallado"
+    epoch: str = options.DEFAULT_EPOCH
+    f107: float | None = None  # sfu
+    f107a: float | None = None  # sfu
+    ap: float | None = None
+    density_scale: float = 1.0
 
     def __post_init__(self):
         for f in fields(self):
@@ -149,6 +166,7 @@ class Satellite:
                     f"{self._where()}altitude = {self.altitude / 1e3:g} km with density = "
                     f"'per-body': allowed range {lo / 1e3:.3f}-{hi / 1e3:.3f} km, so that every "
                     f"body (within {reach:.4g} m of the COM) stays inside 0-1000 km")
+        options.check(self)
         if not isinstance(self.allow_implausible, bool):
             raise SatelliteError(f"{self._where()}allow_implausible = {self.allow_implausible!r}: "
                                  f"must be true or false")
@@ -203,8 +221,8 @@ class Satellite:
 
     @property
     def rho(self) -> float:
-        """Air density at the orbit altitude [kg/m^3]."""
-        return atmosphere.density(self.altitude)
+        """Air density of the uniform density mode [kg/m^3] (tethersim.model.options)."""
+        return options.uniform_density(self)
 
     @property
     def pitch_inertia(self) -> float:
@@ -226,8 +244,9 @@ class Satellite:
     def to_dict(self) -> dict:
         d = asdict(self)
         d.pop("source")
-        if not d["allow_implausible"]:  # absent when false: spec JSON of stores unchanged
-            d.pop("allow_implausible")
+        for f in fields(self):  # options at their defaults are absent: store JSON unchanged
+            if f.name in _OPTIONAL and d[f.name] == f.default:
+                d.pop(f.name)
         return d
 
 

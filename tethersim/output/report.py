@@ -6,7 +6,8 @@ converged; force breakdowns (Figs 5.7-5.20); six stability maps (Figs 5.13,
 5.21-5.23, 5.27-5.28), each converged, faithful and predicted from the
 eigenvalues, with their agreement; the torque balance E2/E1 vs b/a; and a
 table that sets each surviving statement of the thesis (shared/thesis/facts.md)
-beside what this project computes.
+beside what this project computes; and whether the design works in a real orbit
+(free-orbit lifetime, settling, trim across the solar cycle: docs/feasibility.md).
 
 The sweeps are written to resumable stores under OUT/sweeps, so an
 interrupted report continues where it stopped when run again.
@@ -25,6 +26,7 @@ from tethersim.model import params
 from tethersim.analysis.metrics import steady_state_window
 from tethersim.analysis.outcome import outcome
 from tethersim.model.presets import load_preset
+from tethersim.output.feasibility_section import section_feasibility
 from tethersim.output.page import Page, pre as _pre, table as _table, write_html
 
 SATS = ("satI", "satII", "dumbsat")
@@ -336,7 +338,8 @@ def build_report(out, grid: int = 41, periods: float = 50.0, workers=None,
              ("nominal runs", lambda: section_nominal(page, periods)),
              ("headline cases", lambda: section_headlines(page)),
              ("force breakdowns", lambda: section_forces(page, periods)),
-             ("moduli only", lambda: section_moduli_only(page))]
+             ("moduli only", lambda: section_moduli_only(page)),
+             ("feasibility in a real orbit", lambda: section_feasibility(page, periods, workers))]
     maps = []
     for title, fn in steps:
         t0 = time.perf_counter()

@@ -5,7 +5,8 @@ File layout (units in the key name where they are not SI)::
     name = "SatI"
     [satellite]    m1 m2 m3 [kg]  A1 A2 A3 [m^2]  a b [m]
     [tethers]      l10 l20 [m]  E1_N_per_mm2 E2_N_per_mm2 [N/mm^2]  c1 c2 [N s/m]
-    [orbit]        altitude_km [km]
+    [orbit]        altitude_km [km]; optional: orbit = "circular" | "free", j2 = true | false,
+                   eccentricity [-] (altitude_km is then the perigee), reentry_altitude_km [km]
     [initial]      delta_x delta_y [m]  theta0_deg [deg]  delta_x_dot delta_y_dot [m/s]
                    theta_dot [rad/s]; optional, for the 3-D models: delta_z [m]
                    phi0_deg psi0_deg [deg] (roll, yaw)  delta_z_dot [m/s]
@@ -13,6 +14,8 @@ File layout (units in the key name where they are not SI)::
     [environment]  (optional) CD [-], density = "uniform" | "per-body"
     [model]        (optional) allow_implausible = true: run outside the plausible
                    ranges (tethersim.plausibility) knowingly; the summary says so
+    [atmosphere]   (optional) atmosphere = "vallado" | "nrlmsise00", epoch = ISO UTC,
+                   f107, f107a [sfu], ap, density_scale [-] (tethersim.model.options)
 
 Moduli are given, as in the thesis, in N/mm^2 for a 1 mm^2 cross-section,
 so the value in N/mm^2 equals the tether force scale in N (thesis p. 3-1).
@@ -38,13 +41,20 @@ SCHEMA = {
                 "delta_y_dot": "m/s", "theta_dot": "rad/s"},
 }
 OPTIONAL = {"environment": {"CD": "1", "density": "uniform | per-body"},
-            "model": {"allow_implausible": "true | false"}}
+            "model": {"allow_implausible": "true | false"},
+            "atmosphere": {"atmosphere": "vallado | nrlmsise00", "epoch": "ISO UTC",
+                           "f107": "sfu", "f107a": "sfu", "ap": "1", "density_scale": "1"}}
 # optional keys of [initial]: the out-of-plane start of the 3-D models
 # (file key -> (unit, Satellite.initial_3d name, SI per file unit))
 INITIAL_3D_KEYS = {"delta_z": ("m", "delta_z", 1.0), "phi0_deg": ("deg", "phi", math.pi / 180),
                    "psi0_deg": ("deg", "psi", math.pi / 180),
                    "delta_z_dot": ("m/s", "delta_z_dot", 1.0),
                    "phi_dot": ("rad/s", "phi_dot", 1.0), "psi_dot": ("rad/s", "psi_dot", 1.0)}
+# optional keys of required tables
+OPTIONAL_KEYS = {"orbit": {"orbit": "circular | free", "j2": "true | false",
+                           "eccentricity": "1", "reentry_altitude_km": "km"}}
+_TEXT = {"density": str, "orbit": str, "atmosphere": str, "epoch": str, "j2": bool,
+         "allow_implausible": bool}
 PRESET_NAMES = {"sati": "satI.toml", "satii": "satII.toml", "dumbsat": "dumbsat.toml"}
 N_PER_MM2_TO_N = 1e6 * TETHER_AREA  # (N/mm^2 -> N/m^2) x 1 mm^2 = 1
 
@@ -78,7 +88,7 @@ def from_dict(doc: dict, where: str = "<dict>", allow_implausible: bool = False)
             raise SatelliteError(f"{where}: missing table [{table}] with keys {sorted(keys)}")
         if not isinstance(sub, dict):
             raise SatelliteError(f"{where}: {table} must be a table [{table}]")
-        extra = INITIAL_3D_KEYS if table == "initial" else {}
+        extra = INITIAL_3D_KEYS if table == "initial" else OPTIONAL_KEYS.get(table, {})
         for key in sub:
             if key not in keys and key not in extra:
                 raise SatelliteError(f"{where}: unknown key {table}.{key!r}; allowed: "
@@ -88,17 +98,16 @@ def from_dict(doc: dict, where: str = "<dict>", allow_implausible: bool = False)
             for key, (unit, name, si) in extra.items() if key in sub}
         if table == "initial":
             vals["initial_3d"] = initial_3d
-        for key, unit in keys.items():
+        optional = {} if table == "initial" else extra  # [initial]'s 3-D keys are read above
+        for key, unit in {**keys, **optional}.items():
             if key not in sub:
-                if table in OPTIONAL:
+                if table in OPTIONAL or key in extra:
                     continue
                 raise SatelliteError(f"{where}: missing key {table}.{key} ({unit})")
-            if key == "density":
-                vals[key] = sub[key]
-            elif key == "allow_implausible":
-                if not isinstance(sub[key], bool):
-                    raise SatelliteError(f"{where}: model.allow_implausible = {sub[key]!r}: "
-                                         f"must be true or false")
+            if key in _TEXT:
+                if not isinstance(sub[key], _TEXT[key]):
+                    kind = "true or false" if _TEXT[key] is bool else f"a string ({unit})"
+                    raise SatelliteError(f"{where}: {table}.{key} = {sub[key]!r}: must be {kind}")
                 vals[key] = sub[key]
             else:
                 vals[key] = _number(where, f"{table}.{key}", sub[key], unit)
@@ -113,7 +122,7 @@ def from_dict(doc: dict, where: str = "<dict>", allow_implausible: bool = False)
             altitude=vals["altitude_km"] * 1e3, initial=initial,
             CD=vals.get("CD", CD_DEFAULT), density_mode=vals.get("density", "uniform"),
             source=where, allow_implausible=allow_implausible or vals.get("allow_implausible", False),
-            initial_3d=vals["initial_3d"])
+            initial_3d=vals["initial_3d"], **_options(vals))
     except SatelliteError as exc:
         # name the file's key, not the internal SI field
         msg = str(exc)
@@ -127,15 +136,24 @@ def from_dict(doc: dict, where: str = "<dict>", allow_implausible: bool = False)
         raise SatelliteError(msg) from None
 
 
+def _options(vals: dict) -> dict:
+    """The orbit and air options a document set (SI; absent keys keep the defaults)."""
+    out = {k: vals[k] for k in ("orbit", "j2", "eccentricity", "atmosphere", "epoch", "f107",
+                                "f107a", "ap", "density_scale") if k in vals}
+    if "reentry_altitude_km" in vals:
+        out["reentry_altitude"] = vals["reentry_altitude_km"] * 1e3
+    return out
+
+
 def _file_key(msg: str, where: str) -> str:
     """Name the file's key (satellite.m1, tethers.c1, ...) of the field a message starts with."""
-    from ..params import PARAMETERS  # params imports this package: at call time
+    from ..params import OPTIONS, PARAMETERS  # params imports this package: at call time
 
     head = f"{where}: "
     if not msg.startswith(head):
         return msg
     rest = msg[len(head):]
-    for name, p in PARAMETERS.items():
+    for name, p in list(PARAMETERS.items()) + list(OPTIONS.items()):
         if rest.startswith(f"{name} = "):
             return head + p.key + rest[len(name):]
     return msg

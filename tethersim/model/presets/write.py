@@ -25,6 +25,14 @@ def dumps(sat: Satellite, notes: dict | None = None, header: str = "") -> str:
             tables["initial"][key] = sat.initial_3d[name] / si
     if sat.allow_implausible:
         tables["model"] = {"allow_implausible": True}
+    changed = sat.to_dict()  # options away from their defaults only
+    tables["orbit"].update({k: changed[k] for k in ("orbit", "j2", "eccentricity") if k in changed})
+    if "reentry_altitude" in changed:
+        tables["orbit"]["reentry_altitude_km"] = sat.reentry_altitude / 1e3
+    air = {k: changed[k] for k in ("atmosphere", "epoch", "f107", "f107a", "ap", "density_scale")
+           if k in changed}
+    if air:
+        tables["atmosphere"] = air
     lines = [f"# {line}" if line else "#" for line in header.splitlines()]
     lines.append(f'name = "{sat.name}"')
     for table, values in tables.items():

@@ -1,0 +1,97 @@
+"""Feasibility: the verdict logic on constructed outcomes, the runner, the CLI's files."""
+from __future__ import annotations
+
+import csv
+import json
+import math
+
+import pytest
+
+import tethersim as ts
+from tethersim.analysis.classify import (FAILED, OFFSET, STABLE, TUMBLING, UNSETTLED,
+                                         UPSIDE_DOWN)
+from tethersim.analysis.feasibility import VERDICTS, verdict
+from tethersim.analysis.metrics import PitchMetrics
+from tethersim.analysis.outcome import Outcome
+
+NAN3 = (math.nan,) * 3
+
+
+def _out(theta_ss=0.0, settling_h=40.0, cls=STABLE, status="ok", tumbled=False):
+    m = PitchMetrics(mean_pitch=theta_ss, steady_state_pitch=theta_ss,
+                     settling_time=settling_h * 3600, tumbled=tumbled,
+                     upside_down=cls == UPSIDE_DOWN)
+    return Outcome(status=status, reason="" if status == "ok" else status,
+                   stability_class=cls, metrics=m, trail_delta_x=29.0, trail_delta_y=0.0,
+                   max_force=NAN3, error_estimate=None, converged=None)
+
+
+H = 3600.0
+
+
+@pytest.mark.parametrize("life_h, nominal, trims, expected", [
+    (100, _out(), [_out(0.01), _out(-0.04)], "feasible"),
+    (math.inf, _out(), [_out(0.05)], "feasible"),  # the band's edge is inside
+    (10, _out(), [_out()], "re-enters before settling"),
+    (39.9, _out(settling_h=40), [_out()], "re-enters before settling"),
+    (100, _out(), [_out(0.06, cls=OFFSET)], "trim lost as the air varies"),
+    (100, _out(), [_out(-0.2, cls=OFFSET), _out()], "trim lost as the air varies"),
+    (100, _out(), [_out(status="diverged", cls=FAILED)], "trim lost as the air varies"),
+    (100, _out(), [_out(0.0, cls=TUMBLING, tumbled=True)], "trim lost as the air varies"),
+    (100, _out(0.3, cls=OFFSET), [_out()], "trim lost as the air varies"),
+    (100, _out(settling_h=math.nan, cls=UNSETTLED), [_out()], "unstable"),
+    (100, _out(3.0, cls=UPSIDE_DOWN), [_out()], "unstable"),
+    (100, _out(status="diverged", cls=FAILED), [_out()], "unstable"),
+    (1, _out(cls=TUMBLING, tumbled=True), [_out(0.3, cls=OFFSET)], "unstable"),  # priority
+    (1, _out(), [_out(0.3, cls=OFFSET)], "re-enters before settling"),  # priority
+])
+def test_verdict_logic(life_h, nominal, trims, expected):
+    assert expected in VERDICTS
+    assert verdict(life_h * H, nominal, trims) == expected
+
+
+def test_atlas_runs_resumes_and_writes_the_csv(tmp_path, capsys):
+    from tethersim.cli.main import main
+    out = tmp_path / "f"
+    argv = ["feasibility", "satI", "--altitude", "200,300", "--periods", "2",
+            "--max-lifetime", "3", "--out", str(out), "--quiet"]
+    assert main(argv) == 0
+    with (out / "feasibility.csv").open() as fh:
+        rows = list(csv.DictReader(fh))
+    assert [float(r["altitude_km"]) for r in rows] == [200.0, 300.0]
+    for key in ("altitude_km", "lifetime_h", "settling_h", "verdict"):
+        assert key in rows[0]
+    assert all(r["verdict"] in VERDICTS for r in rows)
+    # 200 km: the free run ends before the 3 h cap; 300 km outlives it (capped)
+    assert rows[0]["lifetime_capped"] == "false" and float(rows[0]["lifetime_h"]) < 3
+    assert rows[1]["lifetime_capped"] == "true" and float(rows[1]["lifetime_h"]) == 3.0
+    assert (out / "feasibility.png").stat().st_size > 10_000
+    # resumable: a finished store is not rerun (its lines are kept byte for byte)
+    store = out / "store" / "points.jsonl"
+    before = store.read_text()
+    assert main(argv) == 0
+    assert store.read_text() == before and len(before.splitlines()) == 2
+    # another setting in the same store is refused in one line
+    capsys.readouterr()
+    assert main(argv[:-3] + ["--periods", "3", "--out", str(out), "--quiet"]) != 0
+    err = capsys.readouterr().err.strip()
+    assert "holds a feasibility atlas of other settings" in err and "\n" not in err
+
+
+def test_density_scales_are_msis_over_vallado():
+    from tethersim.experiments.feasibility import solar_scales
+    from tethersim.model.air import solar_cycle_densities
+    k = solar_scales(200.0)
+    rho = solar_cycle_densities(200e3, local_time_h=None)
+    assert k["max"] * 2.789e-10 == pytest.approx(rho["max"], rel=1e-12)
+    assert k["min"] < k["mean"] < k["max"]
+
+
+def test_atlas_settings_are_checked_before_any_run():
+    from tethersim.experiments.feasibility import FeasibilitySpec
+    sat = ts.load_preset("satI")
+    with pytest.raises(ValueError, match="solar = high: allowed cases min, mean, max"):
+        FeasibilitySpec(sat, (200.0,), solar=("high",))
+    with pytest.raises(ts.SatelliteError, match="altitude"):
+        FeasibilitySpec(sat, (1500.0,))
+    assert json.loads(FeasibilitySpec(sat, (200.0,)).to_json())["areas"] == [12.0]

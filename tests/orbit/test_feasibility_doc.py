@@ -1,0 +1,16 @@
+"""docs/feasibility.md's SatI row at 200 km is what the code computes (no hand-typed numbers)."""
+from __future__ import annotations
+
+from pathlib import Path
+
+from tethersim.output.feasibility_doc import HEADER, scan_rows, table_line
+
+DOC = Path(__file__).resolve().parents[2] / "docs" / "feasibility.md"
+
+
+def test_the_200_km_row_of_the_doc_is_computed():
+    text = DOC.read_text()
+    assert HEADER in text
+    (row,) = scan_rows((200.0,), workers=1)
+    assert table_line(row) in text.splitlines()
+    assert row["verdict"] == "re-enters before settling"

@@ -1,0 +1,103 @@
+"""What the orbit costs: drag make-up of a held circular orbit, lifetime of a free one.
+
+* :func:`along_track_drag` -- the along-track drag force of the three bodies [N] per
+  sample of a circular-orbit run (positive: towards the wake, +x).
+* :func:`drag_makeup` -- the velocity per day [m/s/day] a thruster must give to hold
+  the thesis's circular orbit: that drag averaged over the run, divided by the mass.
+* :func:`lifetime` -- when a free orbit re-entered [s] (``res.reentry_time``), else None.
+
+Drag on body i (the law of derive/forces.py): F_i = −½ C_D A_i ρ_i |V_i| V_i, V_i its
+velocity relative to air that co-rotates with the Earth.  In the local frame L (origin
+at Earth's centre, rotating at ω ẑ, docs/conventions.md) a body at r = (x, y) moving
+at ṙ has V = (ẋ − (ω − ω_E) y, ẏ + (ω − ω_E) x); ρ_i is the run's density (uniform,
+or Vallado at the body's altitude for ``density = "per-body"``).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from tethersim.engine.result import SimResult
+from tethersim.model import atmosphere
+from tethersim.model.constants import OMEGA_EARTH, R_EARTH
+
+DAY = 86400.0  # s
+
+
+def body_states(res: SimResult) -> dict:
+    """Local positions and velocities of the three bodies of a circular-orbit run.
+
+    Returns
+    -------
+    dict
+        ``{"tip-mass" | "bus" | "balloon": (x, y, xdot, ydot)}``, arrays [m, m/s] in L
+        (y measured from Earth's centre: r0 + offset).
+    """
+    s = res.satellite
+    r0 = s.r0
+    th, thd = res.theta, res.thetadot
+    sn, cs = np.sin(th), np.cos(th)
+    return {"tip-mass": (s.b * sn, r0 + s.b * cs, s.b * cs * thd, -s.b * sn * thd),
+            "bus": (-s.a * sn, r0 - s.a * cs, -s.a * cs * thd, s.a * sn * thd),
+            "balloon": (res.x, r0 + res.y, res.xdot, res.ydot)}
+
+
+def along_track_drag(res: SimResult) -> np.ndarray:
+    """Along-track drag of the three bodies [N] per sample (+x, the wake).
+
+    Parameters
+    ----------
+    res : SimResult
+        A run of a circular-orbit model.
+
+    Returns
+    -------
+    numpy.ndarray
+        (n,) the sum of the bodies' drag components along +x.
+
+    Raises
+    ------
+    ValueError
+        For a free-orbit run (no orbit is held, nothing is made up).
+    """
+    if res.layout.orbit != "circular":
+        raise ValueError(f"model {res.model}: drag make-up is for a held circular orbit; "
+                         f"a free orbit decays instead (see lifetime)")
+    s = res.satellite
+    dw = s.omega - OMEGA_EARTH
+    areas = {"tip-mass": s.A1, "bus": s.A2, "balloon": s.A3}
+    total = np.zeros(res.t.size)
+    for body, (x, y, xd, yd) in body_states(res).items():
+        vx, vy = xd - dw * y, yd + dw * x
+        if res.per_body:
+            h = np.hypot(x, y) - R_EARTH
+            rho = np.array([atmosphere.density_kernel(v, atmosphere.TABLE) for v in h])
+        else:
+            rho = s.rho
+        total += -0.5 * s.CD * areas[body] * rho * np.hypot(vx, vy) * vx
+    return total
+
+
+def drag_makeup(res: SimResult) -> float:
+    """Velocity per day [m/s/day] that holds a circular orbit against the drag of the run.
+
+    The along-track drag of the three bodies, averaged over the run's samples in
+    time (trapezoid), divided by the total mass, times one day.  NaN for a
+    free-orbit run or fewer than two finite samples.
+    """
+    if res.layout.orbit != "circular" or res.t.size < 2:
+        return math.nan
+    f = along_track_drag(res)
+    ok = np.isfinite(f)
+    if ok.sum() < 2:
+        return math.nan
+    t, f = res.t[ok], f[ok]
+    mean = float(np.trapezoid(f, t) / (t[-1] - t[0])) if t[-1] > t[0] else float(f[0])
+    s = res.satellite
+    return mean / (s.m1 + s.m2 + s.m3) * DAY
+
+
+def lifetime(res: SimResult) -> float | None:
+    """When the run re-entered [s] (``res.reentry_time``); None if it did not."""
+    return res.reentry_time

