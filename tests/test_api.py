@@ -376,7 +376,7 @@ def test_unstable_rk4_step_warns_before_the_run(monkeypatch):
     with pytest.warns(RK4StepWarning, match="unstable") as record:
         res = tethersim.simulate(SAT, periods=5, steps=50, method="rk4", check=False,
                                  progress=False)
-    assert res.status == "diverged"
+    assert res.status in ("diverged", "left-domain")  # flung off before it turns non-finite
     assert record[0].filename == __file__  # attributed to the caller of simulate()
     # escalated to an error, the warning stops simulate before any step is taken
     calls.clear()

@@ -22,8 +22,12 @@ def test_metrics_do_not_depend_on_the_output_sampling(sat):
     # the coarse output is exactly every 100th sample of the metrics grid ...
     np.testing.assert_array_equal(coarse.states, coarse.fine_states[::100])
     np.testing.assert_array_equal(coarse.fine_t[::100], np.linspace(0, coarse.t[-1], 11))
-    # ... and the metrics are those of the dense run
-    assert ts.outcome(coarse).metrics == ts.outcome(dense).metrics
+    # ... and the metrics are those of the dense run (the two grids' sample times agree
+    # to rounding, so the metrics to ~1e-15 relative)
+    a, b = ts.outcome(coarse).metrics, ts.outcome(dense).metrics
+    assert (a.tumbled, a.upside_down) == (b.tumbled, b.upside_down)
+    for name in ("mean_pitch", "steady_state_pitch", "settling_time"):
+        assert getattr(a, name) == pytest.approx(getattr(b, name), rel=1e-12), name
 
 
 def test_outcome_of_a_finished_run_counts(sat):

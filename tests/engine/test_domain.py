@@ -13,14 +13,18 @@ def sat():
 
 
 def test_a_free_orbit_re_enters_and_is_truncated_at_the_crossing(sat):
-    res = ts.simulate(sat, periods=3, model="free", progress=False)
-    assert res.status == "re-entered" and "120 km" in res.message
+    # each body in the air at its own altitude; the balloon's soft tethers give way near
+    # 160 km (docs/feasibility.md), so the threshold is set above that for this check
+    free = sat.replace(orbit="free", density_mode="per-body", reentry_altitude=170e3)
+    res = ts.simulate(free, periods=3, progress=False)
+    assert res.model == "free" and res.status == "re-entered" and "170 km" in res.message
     h = res.altitude
-    assert h[-1] < REENTRY_ALTITUDE <= h[-2]  # the last sample is the first one below
+    assert h[-1] < 170e3 <= h[-2]  # the last sample is the first one below
     assert res.t[-2] < res.reentry_time <= res.t[-1]
-    # the thesis's SatI falls from 200 km in hours, not days (issue 12's estimate: ~3 h)
-    assert 1.5 * 3600 < res.reentry_time < 4 * 3600
+    # the thesis's SatI falls from 200 km in hours, not days (issue 12: ~3 h to 120 km)
+    assert 0.5 * 3600 < res.reentry_time < 3 * 3600
     assert ts.outcome(res).class_name == "failed"
+    assert REENTRY_ALTITUDE == 120e3 == ts.load_preset("satI").reentry_altitude  # the default
 
 
 def test_a_circular_orbit_is_held_and_does_not_re_enter(sat):

@@ -112,7 +112,8 @@ def test_slack_at_start_still_warns_for_a_step_the_taut_tethers_cannot_take(sat)
     s = _switching_case(sat)  # tether 2 slack at t = 0
     with pytest.warns(RK4StepWarning):
         r = simulate(s, periods=0.5, steps=60, method="rk4")  # 44 s steps
-    assert r.status == "diverged" and "too long" in r.message
+    # it leaves the model's domain (balloon flung off) before the state turns non-finite
+    assert r.status in ("diverged", "left-domain") and "too long" in r.message
 
 
 def test_rk4_warning_only_when_step_exceeds_linear_stability(sat):
@@ -156,7 +157,7 @@ def test_nonfinite_start_returns_at_once_instead_of_hanging(sat):
 
     p = parameter_vector(sat)
     p[5] = np.nan  # A3: the Satellite record refuses this, the kernel must still stop
-    y = initial_state(sat.initial, sat.r0, sat.r0 * sat.omega)
+    y = initial_state(0, sat.initial, sat.r0, sat.r0 * sat.omega)
     out_t = np.array([100.0])
     out_y = np.empty((1, 10))
     t, h, i_out, status = dop853_run(0, False, 0.0, 100.0, y, 0.0, p, p.copy(),

@@ -52,7 +52,7 @@ def test_simulate_integrates_once_unless_asked_for_an_error_estimate(sat, method
 
 def test_estimate_error_leaves_a_failed_run_alone(sat):
     bad = simulate(sat, periods=5, steps=50, method="rk4", step_warning=False, progress=False)
-    assert bad.status == "diverged"
+    assert bad.status in ("diverged", "left-domain")
     assert bad.estimate_error() is bad
 
 

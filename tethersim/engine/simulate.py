@@ -174,8 +174,10 @@ def _within_domain(run: SimResult) -> SimResult:
         return run
     t_out = fine.t[v.index]  # keep every sample up to the first one outside
     keep, keep_fine = np.searchsorted(run.t, t_out, "right"), v.index + 1
+    # a run that then diverged says so too (an unstable RK4 step flings the balloon off first)
+    message = v.message + (f"; then {run.message}" if run.status != "ok" and run.message else "")
     return replace(run, t=run.t[:keep].copy(), states=run.states[:keep].copy(), status=v.status,
-                   message=v.message, reentry_time=v.time if v.status == "re-entered" else None,
+                   message=message, reentry_time=v.time if v.status == "re-entered" else None,
                    fine_t=None if run.fine_t is None else run.fine_t[:keep_fine].copy(),
                    fine_states=None if run.fine_t is None else run.fine_states[:keep_fine].copy())
 
