@@ -25,8 +25,8 @@ def main(out_dir: str) -> None:
     import numba  # noqa: F401
     phases["import numba"] = time.perf_counter() - t
     t = time.perf_counter()
-    from tethersim.cli.main import build_parser  # noqa: F401
     import tethersim as ts
+    from tethersim.cli.main import build_parser  # noqa: F401
     from tethersim.engine.simulate import simulate
     phases["import tethersim (cli, simulation, integrators from numba cache)"] = (
         time.perf_counter() - t)

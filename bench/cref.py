@@ -472,8 +472,8 @@ done:
 
 def c_source(model, length_defs) -> tuple[str, dict]:
     """The C file's text and facts about it (cse temporaries; same-cse check done)."""
-    from tethersim.generated import layout
     from tethersim.engine.integrators import dop853_tableau as tab
+    from tethersim.generated import layout
 
     body, blocks, n_tmp = rhs_c_body(model, length_defs)
     check_same_cse(blocks)

@@ -17,9 +17,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-import numpy as np
-
 import cref
+import numpy as np
 from timing import clock, interleave, median
 
 DRIVER = r"""
@@ -85,6 +84,7 @@ def _points(spec):
 def bench_csweep(rep, S, q, log):
     """Trajectories/s of the C+OpenMP driver and of run_sweep, 5 and 50 orbits, 1 and 2 threads."""
     from sweep_bench import GRID
+
     from tethersim import load_preset
     from tethersim.experiments.sweep import SweepSpec, run_sweep
     from tethersim.experiments.sweep.spec import ATOL_PER_RTOL

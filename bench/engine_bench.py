@@ -12,8 +12,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-
-from timing import cpu_clock as clock, interleave, median
+from timing import cpu_clock as clock
+from timing import interleave, median
 
 MODEL = 0  # 'derived' (generated.dispatch.MODEL_NAMES), the model of the C port
 PERIODS = 50

@@ -11,10 +11,10 @@ import math
 import numpy as np
 from numba import njit
 
+from tethersim.engine.dynamics import derivative
 from tethersim.generated.derived import rhs
 from tethersim.generated.derived import rhs as derived_rhs
 from tethersim.generated.layout import P_MU
-from tethersim.engine.dynamics import derivative
 
 
 @njit(cache=False)

@@ -41,7 +41,6 @@ for path in (str(HERE), str(REPO)):
         sys.path.insert(0, path)
 
 import numpy as np  # noqa: E402
-
 from timing import clock, cpu_clock, interleave, median, spread, wall  # noqa: E402
 
 RTOL, ATOL = 1e-10, 1e-12
@@ -130,11 +129,11 @@ def load_satellite():
 
 
 def setup(rep: Report):
+    import cref
+
     from derive.kinematics import planar_kinematics
     from derive.models import BY_NAME
     from derive.pipeline import derive, to_state_symbols
-
-    import cref
     from tethersim.engine.dynamics import initial_state
     from tethersim.model.satellite import parameter_vector
 
@@ -208,6 +207,7 @@ def _tether_margins(y, p):
 # --------------------------------------------------------------------------- 1
 def bench_rhs(rep: Report, S, q, lamb, pydy_f, pydy_gen):
     import nbloops
+
     from generated.derived import rhs
     log("\n[1] one call of the generated 6-state RHS (generated.derived.rhs)")
     p, y6 = S["p"], S["y0"][:6].copy()

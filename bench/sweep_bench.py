@@ -13,7 +13,6 @@ import tempfile
 from pathlib import Path
 
 import numpy as np
-
 from timing import clock, interleave, median, wall
 
 GRID = (np.linspace(0.0036, 0.0044, 12), np.linspace(0.039, 0.047, 12))  # N/mm^2, 144 runs

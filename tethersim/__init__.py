@@ -8,20 +8,19 @@ from __future__ import annotations
 import numpy as np
 
 from tethersim import _jit  # noqa: F401  (first: numba's cache folder, before any kernel)
-from tethersim.generated import dispatch
-from tethersim.generated.layout import FAMILIES, PARAMETERS, STATE
-
-from tethersim.engine.dynamics import densities_at
-from tethersim.model.inputs import parameter_vector
-from tethersim.model.registry import DEFAULT_MODEL, NAMES, get_model
-from tethersim.model.presets import load, load_preset
-from tethersim.engine.result import SimResult
-from tethersim.model.satellite import Satellite, SatelliteError
-from tethersim.model.options import air_density
-from tethersim.model.satellite import parameters as _parameters
-from tethersim.engine.simulate import RK4StepWarning, simulate
 from tethersim.analysis.outcome import Outcome, outcome
 from tethersim.analysis.summary import run_summary
+from tethersim.engine.dynamics import densities_at
+from tethersim.engine.result import SimResult
+from tethersim.engine.simulate import RK4StepWarning, simulate
+from tethersim.generated import dispatch
+from tethersim.generated.layout import FAMILIES, PARAMETERS, STATE
+from tethersim.model.inputs import parameter_vector
+from tethersim.model.options import air_density
+from tethersim.model.presets import load, load_preset
+from tethersim.model.registry import DEFAULT_MODEL, NAMES, get_model
+from tethersim.model.satellite import Satellite, SatelliteError
+from tethersim.model.satellite import parameters as _parameters
 from tethersim.output.tables import write_netcdf, write_table, write_timeseries
 
 __all__ = ["Satellite", "SatelliteError", "SimResult", "RK4StepWarning", "Outcome", "load",
@@ -31,6 +30,7 @@ __all__ = ["Satellite", "SatelliteError", "SimResult", "RK4StepWarning", "Outcom
            "Equilibrium", "SweepSpec", "run_sweep", "bodies", "body_accelerations",
            "air_density"]
 from tethersim._version import __version__  # noqa: E402
+
 MODELS = NAMES  # every generated model (tethersim.model.registry)
 
 

@@ -16,8 +16,14 @@ import pytest
 import tethersim
 from tethersim import Satellite
 from tethersim.analysis.equilibrium import find_equilibrium
-from tethersim.analysis.roll import (boom_inertias, case_satellite, roll_case, roll_drag_rate,
-                                     roll_response, roll_yaw_quartic)
+from tethersim.analysis.roll import (
+    boom_inertias,
+    case_satellite,
+    roll_case,
+    roll_drag_rate,
+    roll_response,
+    roll_yaw_quartic,
+)
 
 
 @pytest.fixture(scope="module")

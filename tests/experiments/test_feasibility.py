@@ -8,8 +8,7 @@ import math
 import pytest
 
 import tethersim as ts
-from tethersim.analysis.classify import (FAILED, OFFSET, STABLE, TUMBLING, UNSETTLED,
-                                         UPSIDE_DOWN)
+from tethersim.analysis.classify import FAILED, OFFSET, STABLE, TUMBLING, UNSETTLED, UPSIDE_DOWN
 from tethersim.analysis.feasibility import VERDICTS, verdict
 from tethersim.analysis.metrics import PitchMetrics
 from tethersim.analysis.outcome import Outcome

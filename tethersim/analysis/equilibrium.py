@@ -14,14 +14,13 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.optimize import root
 
-from tethersim.generated import dispatch
-
 from tethersim.analysis.metrics import SETTLING_TOL, wrap
+from tethersim.engine.bodies import bodies_from_states
+from tethersim.engine.linearise import attitude_jacobian, rk4_max_step
+from tethersim.generated import dispatch
 from tethersim.model.inputs import parameter_vector
 from tethersim.model.registry import DEFAULT_MODEL, MODELS, get_model
 from tethersim.model.satellite import Satellite
-from tethersim.engine.bodies import bodies_from_states
-from tethersim.engine.linearise import attitude_jacobian, rk4_max_step
 
 RESIDUAL_TOL = 1e-10  # largest |acceleration| accepted at an equilibrium [SI]
 NEUTRAL_TOL = 1e-10  # |λ| [1/s] below which a mode is neutral (a cyclic coordinate)

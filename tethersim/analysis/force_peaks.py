@@ -45,9 +45,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from tethersim.generated.layout import FAMILIES
-
 from tethersim.engine.result import SimResult
+from tethersim.generated.layout import FAMILIES
 
 # (name, symbol, SI unit) of each generalized coordinate, in the order of Q[..., k]
 COORDINATES = (("delta_x", "δx", "N"), ("delta_y", "δy", "N"), ("theta", "θ", "N m"))

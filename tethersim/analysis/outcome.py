@@ -23,8 +23,7 @@ from dataclasses import asdict, dataclass, replace
 import numpy as np
 
 from tethersim.analysis.classify import CLASSES, FAILED, classify
-from tethersim.analysis.metrics import (SETTLING_TOL, PitchMetrics, pitch_metrics,
-                                        steady_state_window)
+from tethersim.analysis.metrics import SETTLING_TOL, PitchMetrics, pitch_metrics, steady_state_window
 from tethersim.engine.evaluate import family_force_peaks
 from tethersim.engine.result import SimResult
 

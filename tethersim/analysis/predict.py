@@ -67,19 +67,16 @@ misses:
 - 2 runs predicted tumbling end upside down.
 
 **Limits.** The prediction is linear about the branch equilibrium, plus the one energy
-test above.  It does not follow:
-
-- a swing that crosses into another well without reaching ±π (the class is still that
-  of the θ ≈ 0 branch);
-- energy that the balloon's own motion feeds in or takes out (see above).
+test above.  It does not follow a swing that crosses into another well without reaching
+±π (the class is still that of the θ ≈ 0 branch), nor energy that the balloon's own
+motion feeds in or takes out (see above).
 
 Two roots closer than WALK_STEP / WALK_SUBSTEPS (0.3°) merge.  A stable–unstable pair
 inside one 5° step, with no sign change, is stepped over.  Densities are taken at the
 orbit altitude, as in tethersim.analysis.equilibrium (``density = "per-body"`` is not modelled
 here).
 
-Units: SI inside.  Map coordinates are in the edge units of tethersim.model.params (E in
-N/mm², altitude in km).
+Units: SI inside; map coordinates in the edge units of tethersim.model.params.
 """
 from __future__ import annotations
 
@@ -90,13 +87,21 @@ import xarray as xr
 from scipy.optimize import brentq
 from tqdm.auto import tqdm
 
-
-from tethersim.model import params
-from tethersim.analysis.classify import (CLASSES, FAILED, OFFSET, SETTLING_REQUIREMENT, STABLE, TUMBLING,
-                       UNSETTLED, UPSIDE_DOWN, flag_attrs)
+from tethersim.analysis.classify import (
+    CLASSES,
+    FAILED,
+    OFFSET,
+    SETTLING_REQUIREMENT,
+    STABLE,
+    TUMBLING,
+    UNSETTLED,
+    UPSIDE_DOWN,
+    flag_attrs,
+)
 from tethersim.analysis.equilibrium import find_equilibrium
-from tethersim.analysis.torque_balance import PitchTorque
 from tethersim.analysis.metrics import SETTLING_TOL, SS_FRACTION
+from tethersim.analysis.torque_balance import PitchTorque
+from tethersim.model import params
 from tethersim.model.registry import DEFAULT_MODEL, THESIS_VARIANTS, model_index
 from tethersim.model.satellite import Satellite, SatelliteError
 

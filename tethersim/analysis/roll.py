@@ -26,9 +26,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from tethersim.generated import dispatch
-
 from tethersim.analysis.equilibrium import NEUTRAL_TOL, find_equilibrium
+from tethersim.generated import dispatch
 from tethersim.model.constants import OMEGA_EARTH
 from tethersim.model.inputs import box_inertias, parameter_vector
 from tethersim.model.registry import get_model

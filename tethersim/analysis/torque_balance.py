@@ -11,14 +11,28 @@ import math
 
 import numpy as np
 
-from tethersim.generated import dispatch
-from tethersim.generated.layout import (P_A, P_A1, P_A2, P_B, P_C1, P_C2, P_CD, P_E1, P_E2, P_L10,
-                              P_L20, P_OMEGA, P_OMEGA_EARTH, P_R0, P_RHO1, P_RHO2)
-
 from tethersim.analysis.equilibrium import RESIDUAL_TOL
+from tethersim.generated import dispatch
+from tethersim.generated.layout import (
+    P_A,
+    P_A1,
+    P_A2,
+    P_B,
+    P_C1,
+    P_C2,
+    P_CD,
+    P_E1,
+    P_E2,
+    P_L10,
+    P_L20,
+    P_OMEGA,
+    P_OMEGA_EARTH,
+    P_R0,
+    P_RHO1,
+    P_RHO2,
+)
 from tethersim.model.registry import DEFAULT_MODEL, THESIS_VARIANTS, model_index
 from tethersim.model.satellite import Satellite, parameter_vector
-
 
 NEWTON_MAX = 50  # iterations of the balloon's 2-state Newton solve
 NEWTON_STEP_TOL = 1e-11  # m: converged when the Newton step is this small...

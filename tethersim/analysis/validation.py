@@ -20,9 +20,9 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.special import ellipk
 
+from tethersim.engine.simulate import simulate
 from tethersim.model.constants import MU_EARTH
 from tethersim.model.satellite import Satellite
-from tethersim.engine.simulate import simulate
 
 
 @dataclass(frozen=True)

@@ -73,11 +73,11 @@ def run(args) -> int:
     """
     import math
 
+    from tethersim.engine.guards import check_sweep
     from tethersim.experiments.sweep import SweepSpec, run_sweep
     from tethersim.experiments.sweep.analysis import band_slope, class_counts
     from tethersim.model import params
     from tethersim.output.plots.sweep import plot_stability_map
-    from tethersim.engine.guards import check_sweep
     from tethersim.output.tables import write_table
 
     sat = options.satellite(args)

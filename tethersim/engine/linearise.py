@@ -10,7 +10,6 @@ from __future__ import annotations
 import numpy as np
 
 from tethersim.generated import dispatch
-
 from tethersim.model.inputs import initial_model_state, parameter_vector
 from tethersim.model.registry import get_model
 from tethersim.model.satellite import Satellite

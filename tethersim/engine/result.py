@@ -13,10 +13,8 @@ from functools import cached_property
 
 import numpy as np
 
-
 from tethersim.engine.dynamics import has_com_orbit
-from tethersim.engine.evaluate import (family_forces_series, jacobi_series,
-                                       tether_margin_series)
+from tethersim.engine.evaluate import family_forces_series, jacobi_series, tether_margin_series
 from tethersim.model.constants import R_EARTH
 from tethersim.model.inputs import parameter_vector
 from tethersim.model.registry import Model, get_model
@@ -173,7 +171,7 @@ class SimResult:
             conv += f" (estimated final error in θ {self.error_estimate[2]:.2g} rad)"
         return f"{self.satellite.name}, model {self.model}: {kind}; {conv}"
 
-    def estimate_error(self) -> "SimResult":
+    def estimate_error(self) -> SimResult:
         """Rerun finer and return this result with ``error_estimate`` set.
 
         Returns

@@ -22,8 +22,8 @@ from tethersim.engine.integrators.rk4 import rk4_run
 from tethersim.engine.integrators.select import specialised
 from tethersim.engine.linearise import rk4_amplification
 from tethersim.engine.result import SimResult
-from tethersim.model.registry import DEFAULT_MODEL, model_for_orbit, model_index
 from tethersim.model.inputs import initial_model_state, parameter_vector
+from tethersim.model.registry import DEFAULT_MODEL, model_for_orbit, model_index
 from tethersim.model.satellite import Satellite
 
 METHODS = ("adaptive", "rk4")
@@ -335,6 +335,8 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
     fine_t, fine_y = out_t[:i_out].copy(), out_y[:i_out].copy()
     keep = slice(None, None, refine)
     return SimResult(sat, model, "adaptive", fine_t[keep].copy(), fine_y[keep].copy(),
+                     fine_t=fine_t if refine > 1 else None,
+                     fine_states=fine_y if refine > 1 else None,
                      periods=periods,
                      rtol=rtol, atol=atol, locate_switches=locate, nfev=int(counters[0]),
                      n_accepted=int(counters[1]), n_rejected=int(counters[2]),

@@ -22,11 +22,10 @@ import math
 
 import numpy as np
 
-from tethersim.model.registry import NAMES, THESIS_VARIANTS
-
 from tethersim.analysis.metrics import SS_FRACTION, steady_state_window
 from tethersim.analysis.outcome import ROW_COLUMNS, outcome
 from tethersim.engine.result import SimResult
+from tethersim.model.registry import NAMES, THESIS_VARIANTS
 from tethersim.model.satellite import Satellite
 
 # (key, header with unit) of each table column, in order: the model, the one

@@ -23,11 +23,11 @@ import numpy as np
 
 from tethersim.analysis.classify import CLASSES, STABLE, TUMBLING, UPSIDE_DOWN
 from tethersim.analysis.metrics import SETTLING_TOL
-from tethersim.model.params import from_si
-from tethersim.model.satellite import Satellite
 from tethersim.experiments.sweep.point import run_point
 from tethersim.experiments.sweep.runner import map_points
 from tethersim.experiments.sweep.spec import SweepSpec
+from tethersim.model.params import from_si
+from tethersim.model.satellite import Satellite
 
 SCAN_POINTS = 33  # E2 scan points over [0.5, 2] x the torque-balance estimate
 EDGE_RTOL = 1e-4  # relative precision of each band edge in E2

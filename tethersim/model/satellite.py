@@ -12,7 +12,6 @@ from dataclasses import asdict, dataclass, field, fields, replace
 import numpy as np
 
 from tethersim.generated import layout
-
 from tethersim.model import atmosphere, options
 from tethersim.model.constants import CD_DEFAULT, MU_EARTH, OMEGA_EARTH, R_EARTH
 
@@ -235,7 +234,7 @@ class Satellite:
         from . import plausibility
         return tuple(plausibility.problems(self))
 
-    def replace(self, **changes) -> "Satellite":
+    def replace(self, **changes) -> Satellite:
         """A copy with fields changed (validated again)."""
         if self.source and "source" not in changes and not self.source.endswith("(modified)"):
             changes["source"] = f"{self.source} (modified)"

@@ -4,7 +4,8 @@ from __future__ import annotations
 import html
 import math
 
-from tethersim.output.page import Page, table as _table
+from tethersim.output.page import Page
+from tethersim.output.page import table as _table
 
 ALTITUDES_KM = (200.0, 250.0, 300.0)  # the thesis's 200 km and two higher starts
 LIFETIME_CAP_ORBITS = 4  # x the circular runs' length: the free runs' cap

@@ -22,12 +22,14 @@ from pathlib import Path
 
 import numpy as np
 
-from tethersim.model import params
 from tethersim.analysis.metrics import steady_state_window
 from tethersim.analysis.outcome import outcome
+from tethersim.model import params
 from tethersim.model.presets import load_preset
 from tethersim.output.feasibility_section import section_feasibility
-from tethersim.output.page import Page, pre as _pre, table as _table, write_html
+from tethersim.output.page import Page, write_html
+from tethersim.output.page import pre as _pre
+from tethersim.output.page import table as _table
 
 SATS = ("satI", "satII", "dumbsat")
 
@@ -85,8 +87,8 @@ def section_validation(page: Page) -> None:
 
 
 def section_nominal(page: Page, periods: float) -> dict:
-    from tethersim.output.plots.run import plot_result
     from tethersim.engine.simulate import simulate
+    from tethersim.output.plots.run import plot_result
 
     rows, figs, results = [], [], {}
     for n in SATS:
@@ -170,8 +172,8 @@ def section_headlines(page: Page) -> list:
 
 def section_forces(page: Page, periods: float) -> None:
     from tethersim.analysis.force_peaks import format_table, largest_forces
-    from tethersim.output.plots.forces import plot_forces
     from tethersim.engine.simulate import simulate
+    from tethersim.output.plots.forces import plot_forces
 
     base = load_preset("satI")
     body, peaks = [], {}
@@ -220,10 +222,10 @@ def section_moduli_only(page: Page) -> None:
 
 
 def section_maps(page: Page, grid: int, periods: float, workers, progress) -> list:
-    from tethersim.output.plots.sweep import plot_stability_map
     from tethersim.analysis.predict import agreement, predicted_map
     from tethersim.experiments.sweep import SweepSpec, run_sweep
     from tethersim.experiments.sweep.analysis import band_slope, class_counts, differences
+    from tethersim.output.plots.sweep import plot_stability_map
 
     body, summary = [], []
     for ms in MAPS:

@@ -22,9 +22,14 @@ from numba import literally, njit
 from tethersim.engine.dynamics import derivative, model_tether_margins
 from tethersim.engine.integrators import switching
 from tethersim.engine.integrators.borrow import borrow
-from tethersim.engine.integrators.steps import (N_K, copy_into, dop853_dense, dop853_error_norm,
-                                                dop853_interpolate,
-                    dop853_step)
+from tethersim.engine.integrators.steps import (
+    N_K,
+    copy_into,
+    dop853_dense,
+    dop853_error_norm,
+    dop853_interpolate,
+    dop853_step,
+)
 
 ORDER = 8
 ERROR_ESTIMATOR_ORDER = 7

@@ -21,7 +21,8 @@ import numpy as np
 from numba import njit
 
 from tethersim.engine.dynamics import derivative
-from tethersim.engine.integrators.dop853_tableau import A, B, C, D, E3, E5, N_STAGES
+from tethersim.engine.integrators.dop853_tableau import E3, E5, N_STAGES, A, B, C, D
+
 
 @njit(cache=True)
 def copy_into(dst, src):

@@ -4,13 +4,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-
 from tethersim.analysis.classify import CLASSES, FAILED, UPSIDE_DOWN
 from tethersim.analysis.metrics import SETTLING_TOL
 from tethersim.model.params import edge_value, with_values
 from tethersim.model.satellite import Satellite
-
-
 
 MODELS = ("derived", "printed", "objective-damper")
 SCHEMES = ("rk4-thesis", "rk4-half", "rk4-quarter", "dop853")

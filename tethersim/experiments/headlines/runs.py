@@ -30,15 +30,22 @@ import warnings
 import numpy as np
 
 from tethersim.analysis.classify import CLASSES
-from tethersim.analysis.outcome import finite_prefix, outcome
 from tethersim.analysis.equilibrium import find_equilibrium
 from tethersim.analysis.metrics import wrap
-from tethersim.model.satellite import Satellite
-from tethersim.engine.simulate import simulate
+from tethersim.analysis.outcome import finite_prefix, outcome
 from tethersim.engine.linearise import rk4_amplification, rk4_max_step
-from tethersim.experiments.headlines.cases import (BY_NAME, HEADLINES, MODELS, NEAR, SCHEMES,
-                                                  STEP_DIVISORS, Headline, claim_holds)
-
+from tethersim.engine.simulate import simulate
+from tethersim.experiments.headlines.cases import (
+    BY_NAME,
+    HEADLINES,
+    MODELS,
+    NEAR,
+    SCHEMES,
+    STEP_DIVISORS,
+    Headline,
+    claim_holds,
+)
+from tethersim.model.satellite import Satellite
 
 
 # --- equilibria -----------------------------------------------------------------------

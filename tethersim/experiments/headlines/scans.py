@@ -9,13 +9,11 @@ import numpy as np
 from tethersim.analysis.classify import CLASSES
 from tethersim.analysis.equilibrium import find_equilibrium
 from tethersim.analysis.metrics import wrap
-from tethersim.model.params import edge_value, with_values
-from tethersim.model.satellite import Satellite
 from tethersim.engine.linearise import rk4_amplification, rk4_max_step
 from tethersim.experiments.headlines.cases import BY_NAME, CONTINUATION_JUMP, MODELS, Headline
 from tethersim.experiments.headlines.runs import row_of, run_case
-
-
+from tethersim.model.params import edge_value, with_values
+from tethersim.model.satellite import Satellite
 
 # --- scans ---------------------------------------------------------------------------------
 DAMPING_FACTORS = (1, 2, 3, 5, 10, 20, 30, 50, 70, 80, 90, 100, 150, 200, 250, 270, 280, 290, 300,

@@ -7,9 +7,7 @@ import numpy as np
 
 from tethersim.analysis.classify import CLASSES, FAILED
 from tethersim.analysis.metrics import wrap
-from tethersim.experiments.headlines.cases import (AGREE_TOL, BY_NAME, SCHEMES, STEP_DIVISORS,
-                                                  TRENDS)
-
+from tethersim.experiments.headlines.cases import AGREE_TOL, BY_NAME, SCHEMES, STEP_DIVISORS, TRENDS
 
 
 # --- verdicts ---------------------------------------------------------------------------

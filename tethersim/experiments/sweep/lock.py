@@ -83,7 +83,7 @@ class StoreLock:
         self.store = Path(store)
         self._lock = FileLock(str(self.store.with_name(self.store.name + ".lock")))
 
-    def acquire(self) -> "StoreLock":
+    def acquire(self) -> StoreLock:
         """Take the lock or raise :class:`StoreLocked` naming the holder; never waits."""
         self.store.parent.mkdir(parents=True, exist_ok=True)
         try:

@@ -9,10 +9,9 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
-
 from tethersim.analysis.outcome import outcome
-from tethersim.engine.simulate import FAITHFUL_STEPS_PER_PERIOD, simulate
 from tethersim.engine.linearise import rk4_amplification
+from tethersim.engine.simulate import FAITHFUL_STEPS_PER_PERIOD, simulate
 from tethersim.experiments.sweep.spec import ATOL_PER_RTOL, SweepSpec
 
 # (name, dtype, units, long name): the record of one point, in this order

@@ -13,11 +13,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from tethersim.model import params
 from tethersim.analysis.metrics import SETTLING_TOL
+from tethersim.engine.simulate import FAITHFUL_STEPS_PER_PERIOD
+from tethersim.model import params
 from tethersim.model.registry import DEFAULT_MODEL, model_index
 from tethersim.model.satellite import Satellite, SatelliteError
-from tethersim.engine.simulate import FAITHFUL_STEPS_PER_PERIOD
 
 METHODS = ("adaptive", "faithful")
 SAMPLES_PER_PERIOD = 100  # adaptive output grid for the metrics
@@ -138,7 +138,7 @@ class SweepSpec:
         }, sort_keys=True)
 
     @classmethod
-    def from_json(cls, text: str) -> "SweepSpec":
+    def from_json(cls, text: str) -> SweepSpec:
         d = json.loads(text)
         sat = d.pop("satellite")
         sat["initial"] = tuple(sat["initial"])

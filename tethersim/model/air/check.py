@@ -14,9 +14,15 @@ from numba import njit
 
 from tethersim.model import atmosphere
 from tethersim.model.air import grid as _grid
-from tethersim.model.air.model import (SOLAR_CYCLE, SOLAR_CYCLE_EPOCH,
-                                       SOLAR_CYCLE_LOCAL_TIME_H, AirModel, msis_direct,
-                                       msis_grid, solar_cycle_densities)
+from tethersim.model.air.model import (
+    SOLAR_CYCLE,
+    SOLAR_CYCLE_EPOCH,
+    SOLAR_CYCLE_LOCAL_TIME_H,
+    AirModel,
+    msis_direct,
+    msis_grid,
+    solar_cycle_densities,
+)
 
 #: the settings the error is measured for: (label, record, days)
 ERROR_CASES = (

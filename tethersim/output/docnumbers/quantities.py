@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from functools import lru_cache
+from functools import cache
 
 import numpy as np
 
@@ -23,7 +23,7 @@ MODULI_STEP = (5, 1500)  # Sec 5.1: 5 orbits in 1500 steps
 JUMP = 0.7  # rad: a continued branch that jumps further is lost (headlines.CONTINUATION_JUMP)
 
 
-@lru_cache(maxsize=None)
+@cache
 def sat(name: str = "satI", factor: float = 1.0, E1: float = 1.0, E2: float = 1.0):
     """A preset with its dampers times ``factor`` and its moduli times ``E1``, ``E2``."""
     s = load_preset(name)
@@ -37,7 +37,7 @@ def _eq(s, model, guess):
         return find_equilibrium(s, model, guess=guess)
 
 
-@lru_cache(maxsize=None)
+@cache
 def branch(model: str, theta0: float, factor: float):
     """The equilibrium near ``theta0`` at damping x 1, continued to x ``factor``.
 
@@ -64,7 +64,7 @@ def pitch_mode(eq) -> tuple:
     return eq.modes()[0]
 
 
-@lru_cache(maxsize=None)
+@cache
 def fold_factor(model: str = "derived", tol: float = 1e-3) -> float:
     """Damping factor where the inverted (θ ≈ π) equilibrium meets its saddle and vanishes.
 
@@ -154,11 +154,14 @@ def air_speed() -> float:
 
 
 # --- torque balance (docs/torque-balance.md) -------------------------------------------
-@lru_cache(maxsize=None)
+@cache
 def balance(name: str) -> dict:
     """TB terms at the preset's θ = 0 trail, the exact balance and the equilibrium pitch."""
-    from tethersim.analysis.torque_balance import (balanced_E2, balloon_trail_at_zero_pitch,
-                                                   torque_balance_terms)
+    from tethersim.analysis.torque_balance import (
+        balanced_E2,
+        balloon_trail_at_zero_pitch,
+        torque_balance_terms,
+    )
 
     s = load_preset(name)
     dx, dy = balloon_trail_at_zero_pitch(s)[:2]
@@ -168,7 +171,7 @@ def balance(name: str) -> dict:
     return out
 
 
-@lru_cache(maxsize=None)
+@cache
 def balanced_at(E1: float) -> tuple:
     """(balanced E2/E1, trail δx [m] at balance) for SatI with E1 [N/mm²]."""
     from tethersim.analysis.torque_balance import balanced_E2, balloon_trail_at_zero_pitch
@@ -179,7 +182,7 @@ def balanced_at(E1: float) -> tuple:
 
 
 # --- runs (slow tier) --------------------------------------------------------------------
-@lru_cache(maxsize=None)
+@cache
 def run_satI() -> dict:
     """SatI, 50 orbits, adaptive: settling, trail and largest forces (README)."""
     from tethersim.analysis.force_peaks import largest_forces
@@ -195,7 +198,7 @@ def run_satI() -> dict:
             "trail": float(np.mean(res.x[steady_state_window(res.t)])), **peaks}
 
 
-@lru_cache(maxsize=None)
+@cache
 def headline(case: str, model: str = "derived") -> dict:
     """The converged (DOP853) run of one headline case (``headlines.run_headlines``)."""
     from tethersim.experiments.headlines import run_headlines

@@ -11,11 +11,10 @@ from pathlib import Path
 
 import numpy as np
 
-from tethersim.generated.layout import FAMILIES
-
 from tethersim.analysis.force_peaks import COORDINATES, SMALL_FRACTION, peaks, small_families
-from tethersim.output.plots.run import FAST_PNG, _hours_on_top
 from tethersim.engine.result import SimResult
+from tethersim.generated.layout import FAMILIES
+from tethersim.output.plots.run import FAST_PNG, _hours_on_top
 
 FILE_NAMES = {"delta_x": "forces_delta_x.png", "delta_y": "forces_delta_y.png",
               "theta": "forces_theta.png"}
