@@ -71,10 +71,8 @@ test above.  It does not follow a swing that crosses into another well without r
 ±π (the class is still that of the θ ≈ 0 branch), nor energy that the balloon's own
 motion feeds in or takes out (see above).
 
-Two roots closer than WALK_STEP / WALK_SUBSTEPS (0.3°) merge.  A stable–unstable pair
-inside one 5° step, with no sign change, is stepped over.  Densities are taken at the
-orbit altitude, as in tethersim.analysis.equilibrium (``density = "per-body"`` is not modelled
-here).
+Two roots closer than WALK_STEP / WALK_SUBSTEPS (0.3°) merge; a stable–unstable pair inside
+one 5° step, with no sign change, is stepped over.  Densities are at the orbit altitude.
 
 Units: SI inside; map coordinates in the edge units of tethersim.model.params.
 """
