@@ -13,12 +13,11 @@ from tethersim.analysis.summary import run_summary
 from tethersim.engine.dynamics import densities_at
 from tethersim.engine.result import SimResult
 from tethersim.engine.simulate import RK4StepWarning, simulate
-from tethersim.generated import dispatch
 from tethersim.generated.layout import FAMILIES, PARAMETERS, STATE
 from tethersim.model.inputs import parameter_vector
 from tethersim.model.options import air_density
 from tethersim.model.presets import load, load_preset
-from tethersim.model.registry import DEFAULT_MODEL, NAMES, get_model
+from tethersim.model.registry import DEFAULT_MODEL, KERNELS, NAMES, get_model
 from tethersim.model.satellite import Satellite, SatelliteError
 from tethersim.model.satellite import parameters as _parameters
 from tethersim.output.tables import write_netcdf, write_table, write_timeseries
@@ -106,7 +105,7 @@ def accelerations(sat: Satellite, state, model: str = DEFAULT_MODEL) -> np.ndarr
     """
     m, y, p = _state_and_params(sat, state, model)
     d = np.empty(m.n_state)
-    dispatch.rhs(m.index, 0.0, y, p, d)
+    KERNELS[m.index].rhs(0.0, y, p, d)
     return d[m.n_coordinates:].copy()
 
 
@@ -137,7 +136,7 @@ def generalized_forces(sat: Satellite, state, model: str = DEFAULT_MODEL) -> dic
     """
     m, y, p = _state_and_params(sat, state, model)
     out = np.zeros((len(m.families), m.n_coordinates))
-    dispatch.family_forces(m.index, y, p, out)
+    KERNELS[m.index].family_forces(y, p, out)
     return {f: out[i].copy() for i, f in enumerate(m.families)}
 
 
@@ -219,7 +218,7 @@ def body_accelerations(sat: Satellite, state, t: float = 0.0, model: str = DEFAU
 
     m, y, p = _state_and_params(sat, state, model)
     d = np.empty(m.n_state)
-    dispatch.rhs(m.index, float(t), y, p, d)
+    KERNELS[m.index].rhs(float(t), y, p, d)
     return accelerations_from_qdd(sat, m.name, float(t), y, d[m.n_coordinates:])
 
 

@@ -12,9 +12,8 @@ from tethersim.analysis.force_peaks import (
     largest_forces_from,
     small_families,
 )
-from tethersim.generated import dispatch
 from tethersim.generated import layout as L
-from tethersim.model.registry import model_index
+from tethersim.model.registry import KERNELS, model_index
 from tethersim.model.satellite import parameter_vector
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
@@ -80,8 +79,8 @@ def test_sum_of_families_is_the_models_generalized_force(short_run, sat, derived
     d_on, d_off = np.empty(6), np.empty(6)
     for i in range(0, len(short_run.t), 50):
         y = short_run.states[i, :6].copy()
-        dispatch.rhs(m, short_run.t[i], y, p, d_on)
-        dispatch.rhs(m, short_run.t[i], y, p_off, d_off)
+        KERNELS[m].rhs(short_run.t[i], y, p, d_on)
+        KERNELS[m].rhs(short_run.t[i], y, p_off, d_off)
         total = Q[i].sum(axis=0)
         scale = np.abs(Q[i]).max(axis=0)
         assert np.all(np.abs(M @ (d_on[3:] - d_off[3:]) - total) <= 1e-12 * scale)
@@ -92,7 +91,7 @@ def test_forces_on_dx_balance_at_equilibrium(sat):
     drag3 + spring1 + spring2 ≈ 0 on δx, up to the (tiny) thesis-model damper terms."""
     eq = find_equilibrium(sat)
     Q = np.empty((7, 3))
-    dispatch.family_forces(model_index("derived"), eq.state, parameter_vector(sat), Q)
+    KERNELS[model_index("derived")].family_forces(eq.state, parameter_vector(sat), Q)
     fam = {f: Q[i] for i, f in enumerate(L.FAMILIES)}
     drag = fam["drag3"][0]
     assert drag > 0.1  # 0.18 N along +x, the wake (docs/conventions.md)

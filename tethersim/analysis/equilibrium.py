@@ -17,9 +17,8 @@ from scipy.optimize import root
 from tethersim.analysis.metrics import SETTLING_TOL, wrap
 from tethersim.engine.bodies import bodies_from_states
 from tethersim.engine.linearise import attitude_jacobian, rk4_max_step
-from tethersim.generated import dispatch
 from tethersim.model.inputs import parameter_vector
-from tethersim.model.registry import DEFAULT_MODEL, MODELS, get_model
+from tethersim.model.registry import DEFAULT_MODEL, KERNELS, MODELS, get_model
 from tethersim.model.satellite import Satellite
 
 RESIDUAL_TOL = 1e-10  # largest |acceleration| accepted at an equilibrium [SI]
@@ -163,11 +162,11 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     J = np.empty((2 * n, 2 * n))
 
     def f(q):
-        dispatch.rhs(m, 0.0, np.concatenate([q, np.zeros(n)]), p, d)
+        KERNELS[m].rhs(0.0, np.concatenate([q, np.zeros(n)]), p, d)
         return d[n:].copy()
 
     def jac(q):
-        dispatch.jacobian(m, 0.0, np.concatenate([q, np.zeros(n)]), p, J)
+        KERNELS[m].jacobian(0.0, np.concatenate([q, np.zeros(n)]), p, J)
         return J[n:, :n].copy()
 
     sol = root(f, g, jac=jac, method="hybr", options={"xtol": 1e-14})

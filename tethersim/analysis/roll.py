@@ -27,10 +27,9 @@ import numpy as np
 from scipy.optimize import brentq
 
 from tethersim.analysis.equilibrium import NEUTRAL_TOL, find_equilibrium
-from tethersim.generated import dispatch
 from tethersim.model.constants import OMEGA_EARTH
 from tethersim.model.inputs import box_inertias, parameter_vector
-from tethersim.model.registry import get_model
+from tethersim.model.registry import KERNELS, get_model
 from tethersim.model.satellite import Satellite
 
 OUT_OF_PLANE = ("delta_z", "phi", "psi")
@@ -151,7 +150,7 @@ def _boom_pitch_equilibrium(p: np.ndarray, model: str, guess: float) -> np.ndarr
     d = np.empty(2 * n)
 
     def f(th):
-        dispatch.rhs(m.index, 0.0, state(th), p, d)
+        KERNELS[m.index].rhs(0.0, state(th), p, d)
         return d[n + m.state.index("theta")]
 
     lo, hi = guess - 0.3, guess + 0.3
@@ -269,7 +268,7 @@ def roll_case(sat: Satellite, case: str = "balloon", model: str = "3d") -> RollC
         y = _boom_pitch_equilibrium(p, model, guess)
         out_keys, in_keys = ("phi", "psi"), ("theta",)
     J = np.empty((m.n_state, m.n_state))
-    dispatch.jacobian(m.index, 0.0, np.ascontiguousarray(y, dtype=float), p, J)
+    KERNELS[m.index].jacobian(0.0, np.ascontiguousarray(y, dtype=float), p, J)
     n = m.n_coordinates
     i_out = [names.index(k) for k in OUT_OF_PLANE] + [n + names.index(k) for k in OUT_OF_PLANE]
     i_in = [names.index(k) for k in IN_PLANE] + [n + names.index(k) for k in IN_PLANE]

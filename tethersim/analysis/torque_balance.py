@@ -12,7 +12,6 @@ import math
 import numpy as np
 
 from tethersim.analysis.equilibrium import RESIDUAL_TOL
-from tethersim.generated import dispatch
 from tethersim.generated.layout import (
     P_A,
     P_A1,
@@ -31,7 +30,7 @@ from tethersim.generated.layout import (
     P_RHO1,
     P_RHO2,
 )
-from tethersim.model.registry import DEFAULT_MODEL, THESIS_VARIANTS, model_index
+from tethersim.model.registry import DEFAULT_MODEL, KERNELS, THESIS_VARIANTS, model_index
 from tethersim.model.satellite import Satellite, parameter_vector
 
 NEWTON_MAX = 50  # iterations of the balloon's 2-state Newton solve
@@ -68,8 +67,8 @@ class PitchTorque:
         y[:] = 0.0
         y[0], y[1], y[2] = self.trail[0], self.trail[1], theta
         for _ in range(NEWTON_MAX):
-            dispatch.rhs(m, 0.0, y, p, d)
-            dispatch.jacobian(m, 0.0, y, p, J)
+            KERNELS[m].rhs(0.0, y, p, d)
+            KERNELS[m].jacobian(0.0, y, p, J)
             a11, a12, a21, a22 = J[3, 0], J[3, 1], J[4, 0], J[4, 1]
             det = a11 * a22 - a12 * a21
             if not (math.isfinite(det) and det != 0.0):
@@ -79,7 +78,7 @@ class PitchTorque:
             y[0] -= sx
             y[1] -= sy
             if abs(sx) + abs(sy) <= NEWTON_STEP_TOL:
-                dispatch.rhs(m, 0.0, y, p, d)
+                KERNELS[m].rhs(0.0, y, p, d)
                 if max(abs(d[3]), abs(d[4])) <= RESIDUAL_TOL:
                     self.trail[:] = y[0], y[1]
                     return float(y[0]), float(y[1])
@@ -192,10 +191,10 @@ def balanced_E2(sat: Satellite, E1: float | None = None, model: str = DEFAULT_MO
     for _ in range(NEWTON_MAX):
         y[0], y[1] = z[0], z[1]
         p[P_E2] = z[2]
-        dispatch.rhs(m, 0.0, y, p, d)
-        dispatch.jacobian(m, 0.0, y, p, J)
+        KERNELS[m].rhs(0.0, y, p, d)
+        KERNELS[m].jacobian(0.0, y, p, J)
         p[P_E2] = z[2] + 1.0
-        dispatch.rhs(m, 0.0, y, p, d1)
+        KERNELS[m].rhs(0.0, y, p, d1)
         A[:, :2] = J[3:, :2]
         A[:, 2] = d1[3:] - d[3:]
         try:
@@ -211,7 +210,7 @@ def balanced_E2(sat: Satellite, E1: float | None = None, model: str = DEFAULT_MO
             break
     y[0], y[1] = z[0], z[1]
     p[P_E2] = z[2]
-    dispatch.rhs(m, 0.0, y, p, d)
+    KERNELS[m].rhs(0.0, y, p, d)
     if not (np.all(np.isfinite(z)) and np.max(np.abs(d[3:])) <= BALANCE_RESIDUAL_TOL):
         raise RuntimeError(f"{sat.name}: no torque-balanced E2 found for E1 = {E1:g} N "
                            f"(residual {np.max(np.abs(d[3:])):.3g})")

@@ -27,10 +27,9 @@ from numba.extending import overload
 
 from tethersim.model.atmosphere import TABLE, density_kernel
 from tethersim.model.constants import R_EARTH
-from tethersim.model.registry import MODELS
+from tethersim.model.registry import KERNELS, MODELS
 
 N_ORBIT = 4  # X, Y, VX, VY appended after a circular-orbit model's own state
-KERNELS = tuple(m.module for m in MODELS)  # registry order = the literal model index
 
 
 def has_com_orbit(model: int) -> bool:

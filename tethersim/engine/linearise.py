@@ -9,9 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from tethersim.generated import dispatch
 from tethersim.model.inputs import initial_model_state, parameter_vector
-from tethersim.model.registry import get_model
+from tethersim.model.registry import KERNELS, get_model
 from tethersim.model.satellite import Satellite
 
 
@@ -37,7 +36,7 @@ def attitude_jacobian(sat: Satellite, state=None, model: str = "derived") -> np.
     n = m.n_state
     y = initial_model_state(sat, model) if state is None else np.asarray(state, float)[:n]
     J = np.empty((n, n))
-    dispatch.jacobian(m.index, 0.0, np.ascontiguousarray(y), parameter_vector(sat, model), J)
+    KERNELS[m.index].jacobian(0.0, np.ascontiguousarray(y), parameter_vector(sat, model), J)
     return J
 
 

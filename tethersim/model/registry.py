@@ -90,6 +90,10 @@ MODELS = tuple(_model(i, n, m) for i, (n, m) in enumerate(generated.MODELS.items
 NAMES = tuple(m.name for m in MODELS)
 BY_NAME = {m.name: m for m in MODELS}
 THESIS_VARIANTS = tuple(m.name for m in MODELS if m.thesis_variant)
+# each model's generated module by index: calling its own kernels from Python compiles
+# that model only (the generated dispatch.py branches over every model, and compiling a
+# call through it compiles all of them)
+KERNELS = tuple(m.module for m in MODELS)
 
 
 def get_model(name: str, supported=None, what: str = "") -> Model:
