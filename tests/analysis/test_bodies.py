@@ -16,6 +16,9 @@ import tethersim
 from tethersim.model.constants import MU_EARTH, OMEGA_EARTH
 from tethersim.model.inputs import box_inertias
 
+# compiles and runs the 3-D / free-orbit kernels: the slow tier (make test-slow, CI)
+pytestmark = pytest.mark.slow
+
 RTOL = 1e-9
 EZ = np.array([0.0, 0.0, 1.0])
 

@@ -25,6 +25,9 @@ from tethersim.analysis.roll import (
     roll_yaw_quartic,
 )
 
+# compiles and runs the 3-D / free-orbit kernels: the slow tier (make test-slow, CI)
+pytestmark = pytest.mark.slow
+
 
 @pytest.fixture(scope="module")
 def sat():

@@ -211,6 +211,7 @@ def test_generated_kernels_equal_the_symbolic_model_at_random_states(name):
     assert len(seen) >= 3  # both tethers' gates were exercised
 
 
+@pytest.mark.slow  # the free models' 10x10 Jacobians compile for ~30 s cold
 @pytest.mark.parametrize("name", NAMES)
 def test_generated_jacobian_matches_central_differences_of_rhs(name):
     rng = np.random.default_rng(5)

@@ -12,6 +12,7 @@ def sat():
     return ts.load_preset("satI")
 
 
+@pytest.mark.slow  # compiles the free-orbit loop
 def test_a_free_orbit_re_enters_and_is_truncated_at_the_crossing(sat):
     # each body in the air at its own altitude; the balloon's soft tethers give way near
     # 160 km (docs/feasibility.md), so the threshold is set above that for this check

@@ -13,6 +13,9 @@ from tethersim.model import atmosphere
 from tethersim.model.constants import MU_EARTH, OMEGA_EARTH, R_EARTH
 from tethersim.model.registry import FREE_VARIANTS, model_for_orbit
 
+# compiles and runs the 3-D / free-orbit kernels: the slow tier (make test-slow, CI)
+pytestmark = pytest.mark.slow
+
 SAT = ts.load_preset("satI")
 
 

@@ -50,7 +50,7 @@ simulated classifier):
 
 The predicted settling time is Equilibrium.predicted_settling_time (ln(A/tol) over the
 slowest decay rate, amplitude A = |θ0 − θ_eq|).  It ignores the first nonlinear swings
-(within ~10 % of the simulated time for SatI; tests/test_equilibrium.py).
+(within ~10 % of the simulated time for SatI; tests/analysis/test_equilibrium.py).
 
 **Checked against simulation.** SatI's 41 × 41 grid (E1 0–0.02, E2 0–0.06 N/mm²) was
 run as 50-orbit DOP853 runs (simulate defaults) and classified.  Of 1680 points, 90.4 %

@@ -163,7 +163,7 @@ def torque_balance_ratio(sat: Satellite, model: str = DEFAULT_MODEL, trail=None)
     at θ = 0 and the satellite's own E1, E2 (balloon_trail_at_zero_pitch).  TB4 is
     exact at the trail of the balanced satellite.  At the default trail it is
     within 1e-5 (relative) of balanced_E2/E1 while E2 is within a factor 2 of balance,
-    for the three presets (tests/test_predict.py).  Its leading term is b/a.
+    for the three presets (tests/analysis/test_predict.py).  Its leading term is b/a.
     """
     if trail is None:
         trail = balloon_trail_at_zero_pitch(sat, model)

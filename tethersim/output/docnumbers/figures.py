@@ -7,6 +7,7 @@ code agreeing, or code changed without the doc, fails ``tests/output/test_doc_nu
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from tethersim.output.docnumbers import quantities as q
 from tethersim.output.docnumbers.check import Figure
@@ -155,4 +156,6 @@ FIGURES += _cases.FIGURES
 from tethersim.output.docnumbers import figures_roll as _roll  # noqa: E402
 
 QUANTITIES.update(_roll.QUANTITIES)
-FIGURES += _roll.FIGURES
+# every roll figure compiles the 3-D kernels (jacobian ~15 s cold) or runs them for 40-50
+# orbits: the slow tier (make test-slow, CI) checks them all
+FIGURES += [replace(f, slow=True) for f in _roll.FIGURES]
