@@ -3,8 +3,13 @@ from __future__ import annotations
 
 import math
 
+import pytest
+
 import tethersim
 from tethersim.output.plots.run import plot_result
+
+# compiles the 3-D kernels (jacobian ~15 s cold): the slow tier (make test-slow, CI)
+pytestmark = pytest.mark.slow
 
 
 def test_3d_run_writes_roll_yaw_and_delta_z_plots(tmp_path):
