@@ -54,9 +54,12 @@ def state_size(model: int) -> int:
     return MODELS[model].n_state + (N_ORBIT if has_com_orbit(model) else 0)
 
 
-def _literal(model):
-    # only a literal model index picks a kernel: a run-time index is a typing
-    # error, not a silent fallback to a branch on every evaluation
+def literal_index(model):
+    """The model index a numba type carries as a literal, else None (overloads' typing).
+
+    Only a literal model index picks a kernel: a run-time index is a typing error,
+    not a silent fallback to a branch on every evaluation.
+    """
     return model.literal_value if isinstance(model, types.IntegerLiteral) else None
 
 
@@ -82,7 +85,7 @@ def model_com_orbit(model, y, p, dydt):
 
 @overload(model_rhs, inline="always", prefer_literal=True)
 def _model_rhs(model, t, y, p, dydt):
-    if (k := _literal(model)) is None:
+    if (k := literal_index(model)) is None:
         return None
     rhs = KERNELS[k].rhs
 
@@ -93,7 +96,7 @@ def _model_rhs(model, t, y, p, dydt):
 
 @overload(model_tether_margins, inline="always", prefer_literal=True)
 def _model_tether_margins(model, y, p, g):
-    if (k := _literal(model)) is None:
+    if (k := literal_index(model)) is None:
         return None
     margins = KERNELS[k].tether_margins
 
@@ -104,7 +107,7 @@ def _model_tether_margins(model, y, p, g):
 
 @overload(model_densities, inline="always", prefer_literal=True)
 def _model_densities(model, y, p, pw):
-    if (k := _literal(model)) is None:
+    if (k := literal_index(model)) is None:
         return None
     radii = KERNELS[k].body_radii
     i1, i2, i3 = (MODELS[k].parameters.index(n) for n in ("rho1", "rho2", "rho3"))
@@ -121,7 +124,7 @@ def _model_densities(model, y, p, pw):
 
 @overload(model_com_orbit, inline="always", prefer_literal=True)
 def _model_com_orbit(model, y, p, dydt):
-    if (k := _literal(model)) is None:
+    if (k := literal_index(model)) is None:
         return None
     if not has_com_orbit(k):
         def nothing(model, y, p, dydt):

@@ -8,10 +8,10 @@ coordinates, families) comes from its generated module.
 from __future__ import annotations
 
 import numpy as np
-from numba import literally, njit, types
+from numba import literally, njit
 from numba.extending import overload
 
-from tethersim.engine.dynamics import KERNELS, model_densities, model_tether_margins
+from tethersim.engine.dynamics import KERNELS, literal_index, model_densities, model_tether_margins
 from tethersim.model.registry import MODELS
 
 
@@ -30,13 +30,9 @@ def model_shape(model):
     raise NotImplementedError("model_shape is only callable from compiled code")
 
 
-def _literal(model):
-    return model.literal_value if isinstance(model, types.IntegerLiteral) else None
-
-
 @overload(model_family_forces, inline="always", prefer_literal=True)
 def _model_family_forces(model, y, p, out):
-    if (k := _literal(model)) is None:
+    if (k := literal_index(model)) is None:
         return None
     f = KERNELS[k].family_forces
 
@@ -47,7 +43,7 @@ def _model_family_forces(model, y, p, out):
 
 @overload(model_jacobi, inline="always", prefer_literal=True)
 def _model_jacobi(model, y, p):
-    if (k := _literal(model)) is None:
+    if (k := literal_index(model)) is None:
         return None
     f = KERNELS[k].jacobi
 
@@ -58,7 +54,7 @@ def _model_jacobi(model, y, p):
 
 @overload(model_shape, inline="always", prefer_literal=True)
 def _model_shape(model):
-    if (k := _literal(model)) is None:
+    if (k := literal_index(model)) is None:
         return None
     shape = (len(MODELS[k].families), MODELS[k].n_coordinates)
 
