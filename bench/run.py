@@ -135,7 +135,7 @@ def setup(rep: Report):
     from derive.models import BY_NAME
     from derive.pipeline import derive, to_state_symbols
     from tethersim.engine.dynamics import initial_state
-    from tethersim.model.satellite import parameter_vector
+    from tethersim.model.inputs import parameter_vector
 
     sat, what = load_satellite()
     log(f"satellite: {sat.name} ({what}); period {sat.period:.1f} s")
@@ -157,7 +157,7 @@ def setup(rep: Report):
         f"gcc {t_gcc:.1f} s -> {lib_o3.path.relative_to(REPO)}")
     rep.check("generated/derived.py rhs is what derive/codegen.py prints now", current,
               "" if current else "generated/ is stale: numba and C kernels differ; run make derive")
-    p = parameter_vector(sat)
+    p = parameter_vector(sat, "derived")
     y0 = initial_state(0, sat.initial, sat.r0, sat.r0 * sat.omega)
     S = dict(sat=sat, model=model, length_defs=length_defs, c=lib_o3, c_native=lib_nat,
              p=p, y0=y0, setup_s={"derive": t_derive, "c_source": t_src, "gcc": t_gcc})

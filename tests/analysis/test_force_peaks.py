@@ -13,8 +13,8 @@ from tethersim.analysis.force_peaks import (
     small_families,
 )
 from tethersim.generated import layout as L
+from tethersim.model.inputs import parameter_vector
 from tethersim.model.registry import KERNELS, model_index
-from tethersim.model.satellite import parameter_vector
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 FORCE_PARAMETERS = (L.P_CD, L.P_E1, L.P_E2, L.P_C1, L.P_C2)  # zero: every family vanishes
@@ -71,7 +71,7 @@ def test_sum_of_families_is_the_models_generalized_force(short_run, sat, derived
     mm = derived_model("derived").mass_matrix
     M = np.array(mm.subs({s: pars[s.name] for s in mm.free_symbols}), dtype=float)
     assert np.allclose(M, np.diag(np.diag(M)))  # checked once, so the test can stay simple
-    p = parameter_vector(sat)
+    p = parameter_vector(sat, "derived")
     p_off = p.copy()
     p_off[list(FORCE_PARAMETERS)] = 0.0
     m = model_index("derived")
@@ -91,7 +91,7 @@ def test_forces_on_dx_balance_at_equilibrium(sat):
     drag3 + spring1 + spring2 ≈ 0 on δx, up to the (tiny) thesis-model damper terms."""
     eq = find_equilibrium(sat)
     Q = np.empty((7, 3))
-    KERNELS[model_index("derived")].family_forces(eq.state, parameter_vector(sat), Q)
+    KERNELS[model_index("derived")].family_forces(eq.state, parameter_vector(sat, "derived"), Q)
     fam = {f: Q[i] for i, f in enumerate(L.FAMILIES)}
     drag = fam["drag3"][0]
     assert drag > 0.1  # 0.18 N along +x, the wake (docs/conventions.md)

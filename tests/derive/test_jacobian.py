@@ -5,8 +5,8 @@ import numpy as np
 import pytest
 
 import tethersim as ts
+from tethersim.model.inputs import parameter_vector
 from tethersim.model.registry import KERNELS, THESIS_VARIANTS, model_index
-from tethersim.model.satellite import parameter_vector
 
 
 def _fd_jacobian(m, y, p):
@@ -34,7 +34,7 @@ STATES = {
 @pytest.mark.parametrize("preset", ["satI", "dumbsat"])
 def test_generated_jacobian_matches_finite_differences(model, case, preset):
     sat = ts.load_preset(preset)
-    p = parameter_vector(sat)
+    p = parameter_vector(sat, model)
     y = np.array(STATES[case])
     m = model_index(model)
     J = np.empty((6, 6))

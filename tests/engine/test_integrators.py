@@ -153,9 +153,9 @@ def test_nonfinite_start_returns_at_once_instead_of_hanging(sat):
     """A NaN derivative at t = 0 must end the run with a status, not loop forever."""
     from tethersim.engine.dynamics import initial_state
     from tethersim.engine.integrators.dop853 import STATUS_NONFINITE, dop853_run
-    from tethersim.model.satellite import parameter_vector
+    from tethersim.model.inputs import parameter_vector
 
-    p = parameter_vector(sat)
+    p = parameter_vector(sat, "derived")
     p[5] = np.nan  # A3: the Satellite record refuses this, the kernel must still stop
     y = initial_state(0, sat.initial, sat.r0, sat.r0 * sat.omega)
     out_t = np.array([100.0])

@@ -30,8 +30,9 @@ from tethersim.generated.layout import (
     P_RHO1,
     P_RHO2,
 )
+from tethersim.model.inputs import parameter_vector
 from tethersim.model.registry import DEFAULT_MODEL, KERNELS, THESIS_VARIANTS, model_index
-from tethersim.model.satellite import Satellite, parameter_vector
+from tethersim.model.satellite import Satellite
 
 NEWTON_MAX = 50  # iterations of the balloon's 2-state Newton solve
 NEWTON_STEP_TOL = 1e-11  # m: converged when the Newton step is this small...
@@ -55,7 +56,7 @@ class PitchTorque:
 
     def __init__(self, sat: Satellite, model: str, trail=None):
         self.m = model_index(model, THESIS_VARIANTS, "the torque balance")
-        self.p = parameter_vector(sat)
+        self.p = parameter_vector(sat, model)
         self.y = np.zeros(6)
         self.d = np.empty(6)
         self.J = np.empty((6, 6))
@@ -127,7 +128,7 @@ def torque_balance_terms(sat: Satellite, delta_x: float, delta_y: float,
     TB4), drag_torque b D1 − a D2 [N m], damper_torque M_c [N m], ratio (TB4) and
     lambda1, lambda2 [m].
     """
-    p = parameter_vector(sat)
+    p = parameter_vector(sat, model)
     a, b, l1, l2 = p[P_A], p[P_B], p[P_L10], p[P_L20]
     dx, dy = float(delta_x), float(delta_y)
     h1, h2 = b - dy, a + dy
@@ -184,7 +185,7 @@ def balanced_E2(sat: Satellite, E1: float | None = None, model: str = DEFAULT_MO
     s = sat.replace(E1=E1, E2=E1 * sat.b / sat.a)
     trail = balloon_trail_at_zero_pitch(s, model)
     E2 = torque_balance_terms(s, trail[0], trail[1], model)["ratio"] * E1 if E1 > 0 else 0.0
-    p = parameter_vector(s)
+    p = parameter_vector(s, model)
     y, d, d1, J = np.zeros(6), np.empty(6), np.empty(6), np.empty((6, 6))
     z = np.array([trail[0], trail[1], E2])
     A = np.empty((3, 3))

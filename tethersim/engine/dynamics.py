@@ -183,12 +183,6 @@ def densities_at(model, y, p, pw):
     model_densities(model, y, p, pw)
 
 
-@njit(cache=True)
-def tether_margins_at(model, y, p, g):
-    """g = the tether margins at state y (Python-callable, literal model)."""
-    literally(model)
-    model_tether_margins(model, y, p, g)
-
 
 def initial_state(model: int, model_state, r0: float, v_circ: float) -> np.ndarray:
     """The integrated initial state: the model's own, then the COM at (r0, 0)

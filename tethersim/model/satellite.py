@@ -9,9 +9,6 @@ from __future__ import annotations
 import math
 from dataclasses import asdict, dataclass, field, fields, replace
 
-import numpy as np
-
-from tethersim.generated import layout
 from tethersim.model import atmosphere, options
 from tethersim.model.constants import CD_DEFAULT, MU_EARTH, OMEGA_EARTH, R_EARTH
 
@@ -261,8 +258,3 @@ def parameters(sat: Satellite) -> dict:
     }
     return values
 
-
-def parameter_vector(sat: Satellite) -> np.ndarray:
-    """p in the order of generated/layout.py PARAMETERS."""
-    values = parameters(sat)
-    return np.array([values[n] for n in layout.PARAMETERS], dtype=np.float64)
