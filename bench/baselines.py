@@ -117,12 +117,13 @@ def ivp_fun_numba(derivative, p):
     """solve_ivp fun(t, y) calling the compiled tethersim.engine.dynamics.derivative.
 
     derivative: its entry point for one model (bench/engine_bench.derivative_entry),
-    called as derivative(model, per_body, t, y, p, pw, dydt).
+    called as derivative(model, air, t, y, p, pw, dydt).
     """
-    pw = p.copy()
+    from tethersim.model.air.vector import uniform_air
+    pw, air = p.copy(), uniform_air()
 
     def fun(t, y):
         dydt = np.empty(10)
-        derivative(0, False, t, y, p, pw, dydt)
+        derivative(0, air, t, y, p, pw, dydt)
         return dydt
     return fun

@@ -15,6 +15,9 @@ from tethersim.engine.dynamics import derivative
 from tethersim.generated.derived import rhs
 from tethersim.generated.derived import rhs as derived_rhs
 from tethersim.generated.layout import P_MU
+from tethersim.model.air.vector import uniform_air
+
+AIR = uniform_air()
 
 
 @njit(cache=False)
@@ -36,7 +39,7 @@ def derivative_loop(y, p, pw, n, eps):
     dydt = np.empty(10)
     acc = 0.0
     for _ in range(n):
-        derivative(0, False, 0.0, y, p, pw, dydt)
+        derivative(0, AIR, 0.0, y, p, pw, dydt)
         for k in range(10):
             y[k] += eps * dydt[k]
         acc += dydt[5]

@@ -49,6 +49,11 @@ RK4_STEPS = 10_000
 SAMPLES_PER_PERIOD = 200  # the CLI's adaptive output grid
 
 
+def _uniform_air():
+    from tethersim.model.air.vector import uniform_air
+    return uniform_air()
+
+
 def log(msg=""):
     print(msg, flush=True)
 
@@ -290,7 +295,7 @@ def bench_rhs(rep: Report, S, q, lamb, pydy_f, pydy_gen):
 
 # --------------------------------------------------------------------------- 2
 def bench_rk4(rep: Report, S, q):
-    rk4_run = S["rk4"]
+    rk4_run, AIR = S["rk4"], _uniform_air()
     log(f"\n[2] RK4, {PERIODS} periods in {RK4_STEPS} steps, 10-state (attitude + orbit); "
         "thread CPU time")
     sat, p, y0 = S["sat"], S["p"], S["y0"]
@@ -313,7 +318,7 @@ def bench_rk4(rep: Report, S, q):
         return t
 
     res = interleave({
-        "numba": timer("numba", lambda y, ot, oy: rk4_run(0, False, 0.0, y, h, N, 1, p, pw, False,
+        "numba": timer("numba", lambda y, ot, oy: rk4_run(0, AIR, 0.0, y, h, N, 1, p, pw, False,
                                                            ot, oy, 0)),
         "c": timer("c", lambda y, ot, oy: S["c"].rk4_run(0.0, y, h, N, 1, p, ot, oy, 0)),
         "c_native": timer("c_native", lambda y, ot, oy: S["c_native"].rk4_run(
@@ -343,7 +348,7 @@ def bench_rk4(rep: Report, S, q):
 # --------------------------------------------------------------------------- 3, 4
 def dop853_numba(S, periods, locate=True):
     """One numba dop853_run from t=0 over `periods`; returns (seconds, counters, y, out_y)."""
-    dop853_run = S["dop853"]
+    dop853_run, AIR = S["dop853"], _uniform_air()
     sat, p, y0 = S["sat"], S["p"], S["y0"]
     T = periods * sat.period
     n_out = max(2, round(SAMPLES_PER_PERIOD * periods))
@@ -353,7 +358,7 @@ def dop853_numba(S, periods, locate=True):
     cnt = np.zeros(5, dtype=np.int64)
     pw = p.copy()
     t0 = cpu_clock()
-    r = dop853_run(0, False, 0.0, T, y, 0.0, p, pw, RTOL, ATOL, locate, out_t, out_y, 0, 10**9,
+    r = dop853_run(0, AIR, 0.0, T, y, 0.0, p, pw, RTOL, ATOL, locate, out_t, out_y, 0, 10**9,
                    cnt, math.inf)
     dt = cpu_clock() - t0
     assert r[3] == 0, r

@@ -5,16 +5,18 @@ Conventions (frame, sign of ω, θ direction): docs/conventions.md.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from tethersim import _jit  # noqa: F401  (first: numba's cache folder, before any kernel)
 from tethersim.analysis.outcome import Outcome, outcome
 from tethersim.analysis.summary import run_summary
-from tethersim.engine.dynamics import densities_at
+from tethersim.engine.dynamics import parameters_at
 from tethersim.engine.result import SimResult
 from tethersim.engine.simulate import RK4StepWarning, simulate
 from tethersim.generated.layout import FAMILIES, PARAMETERS, STATE
-from tethersim.model.inputs import parameter_vector
+from tethersim.model.inputs import air_vector, parameter_vector
 from tethersim.model.options import air_density
 from tethersim.model.presets import load, load_preset
 from tethersim.model.registry import DEFAULT_MODEL, KERNELS, NAMES, get_model
@@ -56,7 +58,7 @@ def parameters(sat: Satellite) -> dict:
     return _parameters(sat)
 
 
-def _state_and_params(sat: Satellite, state, model: str):
+def _state_and_params(sat: Satellite, state, model: str, t: float = 0.0):
     if not isinstance(sat, Satellite):
         raise TypeError(f"sat must be a Satellite, got {type(sat).__name__}")
     m = get_model(model)
@@ -64,15 +66,19 @@ def _state_and_params(sat: Satellite, state, model: str):
     if y.shape != (m.n_state,) or not np.all(np.isfinite(y)):
         names = ", ".join(f"{n} [{u}]" for n, u in zip(m.state, m.state_units))
         raise ValueError(f"state = {state!r}: must be {m.n_state} finite numbers ({names})")
-    p = parameter_vector(sat, model)
-    if sat.density_mode == "per-body":
-        pw = p.copy()
-        densities_at(m.index, y, p, pw)
-        p = pw
-    return m, np.ascontiguousarray(y), p
+    try:
+        t = float(t)
+    except (TypeError, ValueError):
+        raise ValueError(f"t = {t!r}: must be a finite time [s]") from None
+    if not math.isfinite(t):
+        raise ValueError(f"t = {t!r}: must be a finite time [s]")
+    y = np.ascontiguousarray(y)
+    # the per-body densities at this state and time (the run's own air vector)
+    p = parameters_at(m.index, t, y, parameter_vector(sat, model), air_vector(sat, max(t, 0.0)))
+    return m, y, p
 
 
-def accelerations(sat: Satellite, state, model: str = DEFAULT_MODEL) -> np.ndarray:
+def accelerations(sat: Satellite, state, model: str = DEFAULT_MODEL, *, t: float = 0.0) -> np.ndarray:
     """Generalized accelerations of a model at one state (SI).
 
     Parameters
@@ -84,6 +90,9 @@ def accelerations(sat: Satellite, state, model: str = DEFAULT_MODEL) -> np.ndarr
         (δx [m], δy [m], θ [rad], δẋ [m/s], δẏ [m/s], θ̇ [rad/s]).
     model : str, optional
         Model name (``tethersim.MODELS``), default ``"derived"``.
+    t : float, optional
+        Time since the epoch [s]: where the air is (per-body NRLMSISE-00) and the
+        orbit phase of a circular-orbit model.
 
     Returns
     -------
@@ -103,13 +112,13 @@ def accelerations(sat: Satellite, state, model: str = DEFAULT_MODEL) -> np.ndarr
     >>> tethersim.accelerations(sat, [0, 0, 0, 0, 0, 0]).shape
     (3,)
     """
-    m, y, p = _state_and_params(sat, state, model)
+    m, y, p = _state_and_params(sat, state, model, t)
     d = np.empty(m.n_state)
-    KERNELS[m.index].rhs(0.0, y, p, d)
+    KERNELS[m.index].rhs(float(t), y, p, d)
     return d[m.n_coordinates:].copy()
 
 
-def generalized_forces(sat: Satellite, state, model: str = DEFAULT_MODEL) -> dict:
+def generalized_forces(sat: Satellite, state, model: str = DEFAULT_MODEL, *, t: float = 0.0) -> dict:
     """Generalized force of every force family at one state (Eqs 3.31-3.47).
 
     Parameters
@@ -120,6 +129,8 @@ def generalized_forces(sat: Satellite, state, model: str = DEFAULT_MODEL) -> dic
         The model's state in its STATE order (see :func:`accelerations`).
     model : str, optional
         Model name, default ``"derived"``.
+    t : float, optional
+        Time since the epoch [s] (as :func:`accelerations`).
 
     Returns
     -------
@@ -134,7 +145,7 @@ def generalized_forces(sat: Satellite, state, model: str = DEFAULT_MODEL) -> dic
     >>> sorted(q)[:3]
     ['damper1', 'damper2', 'drag1']
     """
-    m, y, p = _state_and_params(sat, state, model)
+    m, y, p = _state_and_params(sat, state, model, t)
     out = np.zeros((len(m.families), m.n_coordinates))
     KERNELS[m.index].family_forces(y, p, out)
     return {f: out[i].copy() for i, f in enumerate(m.families)}
@@ -176,7 +187,7 @@ def bodies(sat: Satellite, state, t: float = 0.0, model: str = DEFAULT_MODEL):
     """
     from tethersim.engine.bodies import bodies_from_states
 
-    m, y, _ = _state_and_params(sat, state, model)
+    m, y, _ = _state_and_params(sat, state, model, t)
     return bodies_from_states(sat, m.name, float(t), y)
 
 
@@ -216,7 +227,7 @@ def body_accelerations(sat: Satellite, state, t: float = 0.0, model: str = DEFAU
     """
     from tethersim.engine.bodies import accelerations_from_qdd
 
-    m, y, p = _state_and_params(sat, state, model)
+    m, y, p = _state_and_params(sat, state, model, t)
     d = np.empty(m.n_state)
     KERNELS[m.index].rhs(float(t), y, p, d)
     return accelerations_from_qdd(sat, m.name, float(t), y, d[m.n_coordinates:])

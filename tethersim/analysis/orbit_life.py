@@ -10,7 +10,8 @@ Drag on body i (the law of derive/forces.py): F_i = −½ C_D A_i ρ_i |V_i| V_i
 velocity relative to air that co-rotates with the Earth.  In the local frame L (origin
 at Earth's centre, rotating at ω ẑ, docs/conventions.md) a body at r = (x, y) moving
 at ṙ has V = (ẋ − (ω − ω_E) y, ẏ + (ω − ω_E) x); ρ_i is the run's density (uniform,
-or Vallado at the body's altitude for ``density = "per-body"``).
+or, for ``density = "per-body"``, Vallado or NRLMSISE-00 at the body's own position,
+from the run's air vector: tethersim.model.air.vector).
 """
 from __future__ import annotations
 
@@ -19,7 +20,7 @@ import math
 import numpy as np
 
 from tethersim.engine.result import SimResult
-from tethersim.model import atmosphere
+from tethersim.model.air.vector import body_densities
 from tethersim.model.constants import OMEGA_EARTH, R_EARTH
 
 DAY = 86400.0  # s
@@ -71,8 +72,10 @@ def along_track_drag(res: SimResult) -> np.ndarray:
     for body, (x, y, xd, yd) in body_states(res).items():
         vx, vy = xd - dw * y, yd + dw * x
         if res.per_body:
-            h = np.hypot(x, y) - R_EARTH
-            rho = np.array([atmosphere.density_kernel(v, atmosphere.TABLE) for v in h])
+            # the body's inertial polar angle: the COM's ωt plus its angle in L
+            # (L's y axis radial at ωt, its x axis at ωt − π/2)
+            angle = s.omega * res.t + np.arctan2(-x, y)
+            rho = body_densities(np.hypot(x, y) - R_EARTH, angle, res.t, res.air)
         else:
             rho = s.rho
         total += -0.5 * s.CD * areas[body] * rho * np.hypot(vx, vy) * vx

@@ -185,7 +185,7 @@ def outcome(res: SimResult, tol: float = SETTLING_TOL, forces: bool = True) -> O
         trail = (float(np.mean(states[tail, ix])), float(np.mean(states[tail, iy])))
     peak = NAN3
     if forces and n >= 1:
-        q = family_force_peaks(res.layout.index, res.per_body, states, res.parameters)
+        q = family_force_peaks(res.layout.index, res.air, t, states, res.parameters)
         peak = tuple(float(q[i]) for i in (ix, iy, ith))  # coordinates lead the state
     from tethersim.analysis.orbit_life import drag_makeup, lifetime
     with np.errstate(all="ignore"):

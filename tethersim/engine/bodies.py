@@ -25,8 +25,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from tethersim.engine.dynamics import densities_at
-from tethersim.model.inputs import parameter_vector
 from tethersim.model.registry import get_model
 from tethersim.model.satellite import Satellite
 
@@ -165,17 +163,6 @@ def bodies_from_states(sat: Satellite, model: str, t, states) -> Bodies:
     _, _, _, RB, G, vG, w, pos, vel, off = _kinematics(sat, q, qd)
     tt = np.asarray(t, float) + np.zeros(states.shape[:-1])
     return Bodies(tt, pos, vel, G, vG, off, RB, w)
-
-
-def model_parameters(sat: Satellite, model: str, state: np.ndarray) -> np.ndarray:
-    """The parameter vector the engine uses at ``state`` (per-body densities included)."""
-    m = get_model(model)
-    p = parameter_vector(sat, model)
-    if sat.density_mode == "per-body":
-        pw = p.copy()
-        densities_at(m.index, np.ascontiguousarray(state, dtype=float), p, pw)
-        p = pw
-    return p
 
 
 def accelerations_from_qdd(sat: Satellite, model: str, t: float, state, qdd) -> BodyAccelerations:

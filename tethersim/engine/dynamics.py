@@ -25,7 +25,7 @@ import numpy as np
 from numba import literally, njit, types
 from numba.extending import overload
 
-from tethersim.model.atmosphere import TABLE, density_kernel
+from tethersim.model.air.vector import UNIFORM, body_density
 from tethersim.model.constants import R_EARTH
 from tethersim.model.registry import KERNELS, MODELS
 
@@ -73,8 +73,8 @@ def model_tether_margins(model, y, p, g):
     raise NotImplementedError("model_tether_margins is only callable from compiled code")
 
 
-def model_densities(model, y, p, pw):
-    """pw = p with ρ1..ρ3 at each body's altitude (compiled code, literal model only)."""
+def model_densities(model, t, y, p, pw, air):
+    """pw = p with ρ1..ρ3 at each body (air vector ``air``; compiled code, literal model only)."""
     raise NotImplementedError("model_densities is only callable from compiled code")
 
 
@@ -106,19 +106,29 @@ def _model_tether_margins(model, y, p, g):
 
 
 @overload(model_densities, inline="always", prefer_literal=True)
-def _model_densities(model, y, p, pw):
+def _model_densities(model, t, y, p, pw, air):
     if (k := literal_index(model)) is None:
         return None
     radii = KERNELS[k].body_radii
     i1, i2, i3 = (MODELS[k].parameters.index(n) for n in ("rho1", "rho2", "rho3"))
+    # the inertial polar angle of the reference point, for the longitude under it:
+    # ω t on the held circle (the COM starts on +X, initial_state), ν + π/2 on a free
+    # orbit (R = r (−sin ν, cos ν), docs/orbit.md).  Every body takes this angle: the
+    # bodies sit within ~100 m of it, 1.5e-5 rad of longitude, a 0.2 s shift of local
+    # time (docs/air.md bounds the density error this makes)
+    if has_com_orbit(k):
+        i_angle, from_state, offset = MODELS[k].parameters.index("omega"), False, 0.0
+    else:
+        i_angle, from_state, offset = MODELS[k].state.index("nu"), True, 0.5 * math.pi
 
-    def impl(model, y, p, pw):
+    def impl(model, t, y, p, pw, air):
         for i in range(p.shape[0]):  # a loop: no slice-assignment error path to compile
             pw[i] = p[i]
         r1, r2, r3 = radii(y, p)
-        pw[i1] = density_kernel(r1 - R_EARTH, TABLE)
-        pw[i2] = density_kernel(r2 - R_EARTH, TABLE)
-        pw[i3] = density_kernel(r3 - R_EARTH, TABLE)
+        angle = y[i_angle] + offset if from_state else p[i_angle] * t
+        pw[i1] = body_density(r1 - R_EARTH, angle, t, air)
+        pw[i2] = body_density(r2 - R_EARTH, angle, t, air)
+        pw[i3] = body_density(r3 - R_EARTH, angle, t, air)
     return impl
 
 
@@ -145,7 +155,7 @@ def _model_com_orbit(model, y, p, dydt):
 
 
 @njit(cache=True)
-def derivative(model, per_body, t, y, p, pw, dydt):
+def derivative(model, air, t, y, p, pw, dydt):
     """dy/dt of the integrated state: generated model (+ two-body COM orbit, Eq 3.9).
 
     Parameters
@@ -153,8 +163,9 @@ def derivative(model, per_body, t, y, p, pw, dydt):
     model : int literal
         Model index (registry order); must be a compile-time literal
         (``numba.literally`` in the calling loop).
-    per_body : bool
-        True: air density at each body's own altitude (computed into pw).
+    air : ndarray
+        The air vector (tethersim.model.air.vector): mode 0 reads the uniform
+        densities of p; the per-body modes compute ρ1..ρ3 into pw.
     t : float
         Time [s].
     y : ndarray
@@ -162,13 +173,13 @@ def derivative(model, per_body, t, y, p, pw, dydt):
     p : ndarray
         Parameter vector (the model's PARAMETERS order).
     pw : ndarray
-        Scratch parameter vector, overwritten when per_body.
+        Scratch parameter vector, overwritten in the per-body modes.
     dydt : ndarray
         Output, same length as y.
     """
     par = p
-    if per_body:
-        model_densities(model, y, p, pw)
+    if air[0] != UNIFORM:
+        model_densities(model, t, y, p, pw, air)
         par = pw
     # the generated rhs reads y[0:m] and writes dydt[0:m] only: passing the whole
     # arrays avoids building two slice views per call (~10 % of an RK4 run)
@@ -177,11 +188,13 @@ def derivative(model, per_body, t, y, p, pw, dydt):
 
 
 @njit(cache=True)
-def densities_at(model, y, p, pw):
-    """pw = p with the per-body densities at state y (Python-callable, literal model)."""
+def parameters_at(model, t, y, p, air):
+    """p with the per-body densities at (t, y) (Python-callable, literal model)."""
     literally(model)
-    model_densities(model, y, p, pw)
-
+    pw = p.copy()
+    if air[0] != UNIFORM:
+        model_densities(model, t, y, p, pw, air)
+    return pw
 
 
 def initial_state(model: int, model_state, r0: float, v_circ: float) -> np.ndarray:

@@ -12,6 +12,7 @@ from numba import literally, njit
 from numba.extending import overload
 
 from tethersim.engine.dynamics import KERNELS, literal_index, model_densities, model_tether_margins
+from tethersim.model.air.vector import UNIFORM
 from tethersim.model.registry import MODELS
 
 
@@ -64,8 +65,11 @@ def _model_shape(model):
 
 
 @njit(cache=True, nogil=True)  # nogil: sweeps evaluate forces on threads
-def family_forces_series(model, per_body, Y, p):
-    """Q[i, f, k]: generalized force of family f on coordinate k at sample i (SI)."""
+def family_forces_series(model, air, T, Y, p):
+    """Q[i, f, k]: generalized force of family f on coordinate k at sample (T[i], Y[i]) (SI).
+
+    ``air`` is the run's air vector (dynamics.derivative).
+    """
     literally(model)
     nf, nq = model_shape(model)
     n = Y.shape[0]
@@ -73,8 +77,8 @@ def family_forces_series(model, per_body, Y, p):
     pw = p.copy()
     for i in range(n):
         par = p
-        if per_body:
-            model_densities(model, Y[i], p, pw)
+        if air[0] != UNIFORM:
+            model_densities(model, T[i], Y[i], p, pw, air)
             par = pw
         model_family_forces(model, Y[i], par, out[i])
     return out
@@ -92,7 +96,7 @@ def jacobi_series(model, Y, p):
 
 
 @njit(cache=True, nogil=True)
-def family_force_peaks(model, per_body, Y, p):
+def family_force_peaks(model, air, T, Y, p):
     """Largest |Q| of any single family on each coordinate over the samples.
 
     What a sweep keeps of the force breakdown, without the (n, families,
@@ -106,8 +110,8 @@ def family_force_peaks(model, per_body, Y, p):
     pw = p.copy()
     for i in range(Y.shape[0]):
         par = p
-        if per_body:
-            model_densities(model, Y[i], p, pw)
+        if air[0] != UNIFORM:
+            model_densities(model, T[i], Y[i], p, pw, air)
             par = pw
         model_family_forces(model, Y[i], par, q)
         for f in range(nf):

@@ -16,7 +16,7 @@ import numpy as np
 from tethersim.engine.dynamics import has_com_orbit
 from tethersim.engine.evaluate import family_forces_series, jacobi_series, tether_margin_series
 from tethersim.model.constants import R_EARTH
-from tethersim.model.inputs import parameter_vector
+from tethersim.model.inputs import air_vector, parameter_vector
 from tethersim.model.registry import Model, get_model
 from tethersim.model.satellite import Satellite
 
@@ -129,12 +129,18 @@ class SimResult:
 
     @property
     def orbit(self) -> np.ndarray:
-        """(n, 4): the COM's inertial X, Y [m] and VX, VY [m/s] (circular-orbit models)."""
+        """(n, 4): the reference point's (boom COM's) inertial X, Y [m] and VX, VY [m/s].
+
+        Circular-orbit models integrate it (two-body, Eq 3.9); a free-orbit model
+        integrates r and ν, and R = r (−sin ν, cos ν) (docs/orbit.md), so
+        Ṙ = ṙ (−sin ν, cos ν) − r ν̇ (cos ν, sin ν).
+        """
         m = self.layout
-        if not has_com_orbit(m.index):
-            raise AttributeError(f"model {self.model} integrates r and nu itself: see "
-                                 f"res.series('r'), res.series('nu')")
-        return self.states[:, m.n_state:m.n_state + 4]
+        if has_com_orbit(m.index):
+            return self.states[:, m.n_state:m.n_state + 4]
+        r, nu, rd, nud = (self.series(n) for n in ("r", "nu", "r_dot", "nu_dot"))
+        s, c = np.sin(nu), np.cos(nu)
+        return np.column_stack([-r * s, r * c, -rd * s - r * nud * c, rd * c - r * nud * s])
 
     @property
     def altitude(self) -> np.ndarray:
@@ -187,8 +193,14 @@ class SimResult:
 
     @property
     def per_body(self) -> bool:
-        """True when each body sees the air density at its own altitude."""
+        """True when each body sees the air density at its own position."""
         return self.satellite.density_mode == "per-body"
+
+    @cached_property
+    def air(self) -> np.ndarray:
+        """The air vector the run used (tethersim.model.air.vector)."""
+        duration = self.periods * self.satellite.period if self.periods else float(self.t[-1])
+        return air_vector(self.satellite, duration)
 
     @property
     def parameters(self) -> np.ndarray:
@@ -202,7 +214,7 @@ class SimResult:
 
         SI: N on lengths, N m on angles; families in ``layout.families``.
         """
-        return family_forces_series(self.layout.index, self.per_body, self.states,
+        return family_forces_series(self.layout.index, self.air, self.t, self.states,
                                     self.parameters)
 
     def tether_tensions(self) -> np.ndarray:

@@ -22,7 +22,7 @@ from tethersim.engine.integrators.rk4 import rk4_run
 from tethersim.engine.integrators.select import specialised
 from tethersim.engine.linearise import rk4_amplification
 from tethersim.engine.result import SimResult
-from tethersim.model.inputs import initial_model_state, parameter_vector
+from tethersim.model.inputs import air_vector, initial_model_state, parameter_vector
 from tethersim.model.registry import DEFAULT_MODEL, model_for_orbit, model_index
 from tethersim.model.satellite import Satellite
 
@@ -60,9 +60,9 @@ def _check_positive(name, value, integer=False):
     return v
 
 
-def _kernel_args(sat: Satellite, model: str) -> tuple:
-    """(model index, per-body density): the compiled loop is chosen by the first."""
-    return model_index(model), sat.density_mode == "per-body"
+def _kernel_args(sat: Satellite, model: str, duration: float) -> tuple:
+    """(model index, air vector): the compiled loop is chosen by the first."""
+    return model_index(model), air_vector(sat, duration)
 
 
 def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
@@ -225,7 +225,7 @@ def _bar(total, desc, progress):
 
 
 def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
-    m, per_body = _kernel_args(sat, model)
+    m, air = _kernel_args(sat, model, periods * sat.period)
     p = parameter_vector(sat, model)
     pw = p.copy()
     h = periods * sat.period / steps
@@ -246,14 +246,14 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
     done = 0
     # this model's compiled loop, chosen (compiled or loaded) once, before the bar
     # starts: its rate, hence its ETA, then counts integration only
-    loop = specialised(rk4_run, m, (per_body, 0.0, y, h, chunk, 1, p, pw, locate, out_t, out_y,
+    loop = specialised(rk4_run, m, (air, 0.0, y, h, chunk, 1, p, pw, locate, out_t, out_y,
                                     row))
     with _bar(periods, f"{sat.name} RK4", progress) as bar:
         try:
             while done < steps:
                 n = min(chunk, steps - done)
                 t_call = time.perf_counter()
-                rows, sw, st = loop(m, per_body, done * h, y, h, n, 1, p, pw, locate, out_t,
+                rows, sw, st = loop(m, air, done * h, y, h, n, 1, p, pw, locate, out_t,
                                     out_y, row)
                 if progress is None and (time.perf_counter() - t_call) * steps < QUICK_RUN_S * n:
                     chunk = steps
@@ -288,10 +288,10 @@ def _refined_grid(t_end: float, n_out: int, refine: int) -> np.ndarray:
 
 def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
                   refine: int = 1) -> SimResult:
-    m, per_body = _kernel_args(sat, model)
+    t_end = periods * sat.period
+    m, air = _kernel_args(sat, model, t_end)
     p = parameter_vector(sat, model)
     pw = p.copy()
-    t_end = periods * sat.period
     y = initial_state(m, initial_model_state(sat, model), sat.r0, sat.r0 * sat.omega)
     out_t = _refined_grid(t_end, n_out, refine)
     out_y = np.full((out_t.size, state_size(m)), np.nan)
@@ -301,7 +301,7 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
     max_steps = int(MAX_STEPS_PER_PERIOD * periods)
     # this model's compiled loop, chosen (compiled or loaded) once, before the bar
     # starts: its rate, hence its ETA, then counts integration only
-    loop = specialised(dop853_run, m, (per_body, t, t_end, y, h, p, pw, rtol, atol, locate, out_t,
+    loop = specialised(dop853_run, m, (air, t, t_end, y, h, p, pw, rtol, atol, locate, out_t,
                                        out_y, i_out, max_steps, counters, math.inf))
     t0 = time.perf_counter()
     with _bar(periods, f"{sat.name} DOP853", progress) as bar:
@@ -314,7 +314,7 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
             for k in range(1, chunks + 1):
                 t_pause = math.inf if (k == chunks or t_pause == math.inf) else t_end * k / chunks
                 t_prev, t_call = t, time.perf_counter()
-                t, h, i_out, st = loop(m, per_body, t, t_end, y, h, p, pw, rtol, atol, locate,
+                t, h, i_out, st = loop(m, air, t, t_end, y, h, p, pw, rtol, atol, locate,
                                        out_t, out_y, i_out, max_steps, counters, t_pause)
                 bar.update((t - t_prev) / sat.period)
                 if st != STATUS_OK:

@@ -21,7 +21,9 @@ import math
 
 import numpy as np
 
+from tethersim.model.air.vector import air_vector as _air_vector
 from tethersim.model.constants import J2_EARTH, MU_EARTH, R_EARTH
+from tethersim.model.options import air_model
 from tethersim.model.registry import get_model
 from tethersim.model.satellite import Satellite, parameters
 
@@ -48,6 +50,16 @@ def parameter_vector(sat: Satellite, model: str) -> np.ndarray:
     """The parameter vector of ``model`` for ``sat`` (the model's PARAMETERS order)."""
     values = model_values(sat)
     return np.array([values[n] for n in get_model(model).parameters], dtype=np.float64)
+
+
+def air_vector(sat: Satellite, duration_s: float) -> np.ndarray:
+    """The air vector of a run of ``sat`` lasting ``duration_s`` seconds (model/air/vector.py).
+
+    Uniform density (the thesis: ρ in the parameter vector), or each body's own
+    density from Vallado's table or NRLMSISE-00, times ``density_scale``.
+    """
+    return _air_vector(air_model(sat), sat.density_mode == "per-body", sat.density_scale,
+                       duration_s)
 
 
 def initial_model_state(sat: Satellite, model: str) -> np.ndarray:

@@ -17,10 +17,11 @@ edge units and ranges in :data:`tethersim.model.params.PARAMETERS` and
   values for the epoch's day;
 * ``density_scale`` -- multiplies the air density (solar-cycle studies).
 
-The compiled loop reads Vallado's table when each body sees its own altitude
-(``density = "per-body"``); MSIS is not in the loop yet, so ``nrlmsise00`` and
-``density_scale`` apply to the uniform density mode only (one density for the
-whole run: :func:`uniform_density`), and the per-body combination is refused.
+Which density a run uses: ``density = "uniform"`` (the thesis) takes one density
+for the whole run (:func:`uniform_density`); ``density = "per-body"`` gives each
+body the density at its own altitude, longitude and time inside the compiled loop
+(Vallado's table, or NRLMSISE-00 interpolated from a grid:
+tethersim.model.air.vector), times ``density_scale`` either way.
 """
 from __future__ import annotations
 
@@ -95,11 +96,6 @@ def check(sat) -> None:
     for name in ("f107", "f107a", "ap"):
         if getattr(sat, name) is not None:
             _number(sat, name, getattr(sat, name))
-    if sat.density_mode == "per-body" and (sat.atmosphere != "vallado" or k != 1.0):
-        what = (f"atmosphere = {sat.atmosphere!r}" if sat.atmosphere != "vallado"
-                else f"density_scale = {k:g}")
-        _fail(sat, f"{what} with density = 'per-body': not available yet (the compiled loop "
-                   f"reads Vallado's table per body); use density = 'uniform'")
     try:
         air = air_model(sat)
     except ValueError as exc:
@@ -165,13 +161,18 @@ def density_text(sat) -> str:
     """One line saying which density a run of ``sat`` uses (run summary, docs/air.md)."""
     scale = f" x density_scale {sat.density_scale:g}" if sat.density_scale != 1.0 else ""
     if sat.density_mode == "per-body":
-        return "Vallado Table 8-4 at each body's own altitude"
+        if sat.atmosphere == "nrlmsise00":
+            air = air_model(sat)
+            return (f"NRLMSISE-00 at each body's own altitude, longitude and time (grid "
+                    f"interpolated in the compiled loop), from {air.epoch} UTC, F10.7 "
+                    f"{air.f107:g}, F10.7a {air.f107a:g}, Ap {air.ap:g} ({air.indices}){scale}")
+        return f"Vallado Table 8-4 at each body's own altitude{scale}"
     if sat.atmosphere == "nrlmsise00":
         air = air_model(sat)
         return (f"uniform {uniform_density(sat):.4g} kg/m^3: NRLMSISE-00 at "
                 f"{sat.altitude / 1e3:g} km, {air.epoch} UTC, F10.7 {air.f107:g}, "
                 f"F10.7a {air.f107a:g}, Ap {air.ap:g} ({air.indices}), mean of 24 local "
-                f"times{scale}; MSIS is not in the compiled loop yet")
+                f"times{scale}")
     return (f"uniform {uniform_density(sat):.4g} kg/m^3: Vallado Table 8-4 at "
             f"{sat.altitude / 1e3:g} km{scale}")
 

@@ -156,12 +156,15 @@ class Satellite:
             # every body must stay inside the atmosphere model: allow the boom and
             # the balloon at up to twice the longer tether (or its start) from the COM
             reach = max(self.a, self.b) + 2 * max(self.l10, self.l20, math.hypot(*init[:2]))
-            lo, hi = atmosphere.H_MIN + reach, atmosphere.H_MAX - reach
+            from tethersim.model.air.model import ALTITUDE_RANGE
+            h_min, h_max = ALTITUDE_RANGE.get(self.atmosphere, (atmosphere.H_MIN, atmosphere.H_MAX))
+            lo, hi = h_min + reach, h_max - reach
             if not lo <= self.altitude <= hi:
                 raise SatelliteError(
                     f"{self._where()}altitude = {self.altitude / 1e3:g} km with density = "
                     f"'per-body': allowed range {lo / 1e3:.3f}-{hi / 1e3:.3f} km, so that every "
-                    f"body (within {reach:.4g} m of the COM) stays inside 0-1000 km")
+                    f"body (within {reach:.4g} m of the COM) stays inside "
+                    f"{h_min / 1e3:g}-{h_max / 1e3:g} km ({self.atmosphere})")
         options.check(self)
         if not isinstance(self.allow_implausible, bool):
             raise SatelliteError(f"{self._where()}allow_implausible = {self.allow_implausible!r}: "

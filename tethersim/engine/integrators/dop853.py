@@ -42,7 +42,7 @@ STATUS_OK, STATUS_NONFINITE, STATUS_STEP_TOO_SMALL, STATUS_MAX_STEPS = 0, 1, 2, 
 
 
 @njit(cache=True)
-def initial_step(model, per_body, t0, y0, f0, p, pw, rtol, atol, t_end, y1, f1):
+def initial_step(model, air, t0, y0, f0, p, pw, rtol, atol, t_end, y1, f1):
     """Hairer's starting step (scipy.integrate._ivp.common.select_initial_step).
 
     y1, f1: scratch vectors like y0.
@@ -58,7 +58,7 @@ def initial_step(model, per_body, t0, y0, f0, p, pw, rtol, atol, t_end, y1, f1):
     h0 = min(h0, t_end - t0)
     for i in range(n):
         y1[i] = y0[i] + h0 * f0[i]
-    derivative(model, per_body, t0 + h0, y1, p, pw, f1)
+    derivative(model, air, t0 + h0, y1, p, pw, f1)
     d2 = 0.0
     for i in range(n):
         sc = atol + abs(y0[i]) * rtol
@@ -72,10 +72,11 @@ def initial_step(model, per_body, t0, y0, f0, p, pw, rtol, atol, t_end, y1, f1):
 
 
 @njit(cache=True, nogil=True)
-def _dop853_loop(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y,
+def _dop853_loop(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y,
                  i_out, max_steps, counters, t_pause, work, y_new, f, F, g):
     # every array is borrowed here, once: nothing below counts references
     y, p, pw, out_t, out_y = borrow(y), borrow(p), borrow(pw), borrow(out_t), borrow(out_y)
+    air = borrow(air)
     counters, work, y_new, f, F, g = (borrow(counters), borrow(work), borrow(y_new), borrow(f),
                                       borrow(F), borrow(g))
     n = y.shape[0]
@@ -83,14 +84,14 @@ def _dop853_loop(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, ou
     ys = work[N_K]
     g0, g1 = g[0], g[1]
     t = t0
-    derivative(model, per_body, t, y, p, pw, f)
+    derivative(model, air, t, y, p, pw, f)
     counters[0] += 1
     for i in range(n):
         if not math.isfinite(f[i]):
             return t, h, i_out, STATUS_NONFINITE
     if h <= 0.0:
         # F's rows are free until the first dense output: scratch for the trial step
-        h = initial_step(model, per_body, t, y, f, p, pw, rtol, atol, t_end, F[0], F[1])
+        h = initial_step(model, air, t, y, f, p, pw, rtol, atol, t_end, F[0], F[1])
         counters[0] += 1
     if not math.isfinite(h):
         return t, h, i_out, STATUS_NONFINITE
@@ -105,7 +106,7 @@ def _dop853_loop(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, ou
             if not (h >= min_step):  # written so that a NaN step also stops
                 return t, h, i_out, STATUS_STEP_TOO_SMALL
             h_try = min(h, t_end - t)
-            dop853_step(model, per_body, t, y, f, h_try, p, pw, K, ys, y_new)
+            dop853_step(model, air, t, y, f, h_try, p, pw, K, ys, y_new)
             counters[0] += 12
             err = dop853_error_norm(K, h_try, y, y_new, rtol, atol)
             if not math.isfinite(err):
@@ -123,14 +124,14 @@ def _dop853_loop(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, ou
             model_tether_margins(model, y, p, g0)
             model_tether_margins(model, y_new, p, g1)
             if switching.crossed(g0, g1) >= 0:
-                h_try = switching.locate(1, model, per_body, t, y, f, h_try, p, pw, work, y_new,
+                h_try = switching.locate(1, model, air, t, y, f, h_try, p, pw, work, y_new,
                                          g0, g1, g[2])
                 counters[3] += 1
         counters[1] += 1
         t_new = t + h_try
         if i_out < out_t.shape[0] and out_t[i_out] <= t_new:
             # the 3 extra stages of the interpolant only when an output falls in the step
-            dop853_dense(model, per_body, t, y, y_new, h_try, p, pw, K, ys, F)
+            dop853_dense(model, air, t, y, y_new, h_try, p, pw, K, ys, F)
             counters[0] += 3
         while i_out < out_t.shape[0] and out_t[i_out] <= t_new:
             dop853_interpolate(F, y, (out_t[i_out] - t) / h_try, out_y[i_out])
@@ -148,7 +149,7 @@ def _dop853_loop(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, ou
 
 # nogil: sweeps run many trajectories on threads (tethersim.experiments.sweep)
 @njit(cache=True, nogil=True)
-def dop853_run(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y, i_out,
+def dop853_run(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y, i_out,
                max_steps, counters, t_pause=math.inf):
     """Integrate y (in place) from t0 to t_end with DOP853.
 
@@ -157,8 +158,8 @@ def dop853_run(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, out_
     model : int
         Model index (tethersim.model.registry order); each value compiles
         (once, cached on disk) its own loop.
-    per_body : bool
-        Air density at each body's own altitude (dynamics.model_densities).
+    air : ndarray
+        The air vector (tethersim.model.air.vector; dynamics.derivative).
     t0, t_end : float
         Start and end time [s].
     y : ndarray
@@ -195,5 +196,5 @@ def dop853_run(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, out_
     f = np.empty(n)
     F = np.empty((7, n))
     g = np.empty((3, 2))  # tether margins at both ends of a step, and a trial
-    return _dop853_loop(model, per_body, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t,
+    return _dop853_loop(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t,
                         out_y, i_out, max_steps, counters, t_pause, work, y_new, f, F, g)

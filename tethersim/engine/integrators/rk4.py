@@ -28,7 +28,7 @@ MAX_SPLITS = 16  # switches located in one step before it is finished unsplit (c
 
 
 @njit(cache=True)
-def rk4_advance(model, per_body, t, y, h, p, pw, work, y_new, g0, g1, g):
+def rk4_advance(model, air, t, y, h, p, pw, work, y_new, g0, g1, g):
     """Advance y by h (in place), split at taut/slack switches.
 
     Out of line: only runs with locate=True.  Returns the number of switches
@@ -37,13 +37,13 @@ def rk4_advance(model, per_body, t, y, h, p, pw, work, y_new, g0, g1, g):
     splits = 0
     remaining = h
     while remaining > 0.0:
-        rk4_step(model, per_body, t, y, remaining, p, pw, work, y_new)
+        rk4_step(model, air, t, y, remaining, p, pw, work, y_new)
         model_tether_margins(model, y, p, g0)
         model_tether_margins(model, y_new, p, g1)
         if switching.crossed(g0, g1) < 0:
             copy_into(y, y_new)
             break
-        tau = switching.locate(0, model, per_body, t, y, y, remaining, p, pw, work, y_new,
+        tau = switching.locate(0, model, air, t, y, y, remaining, p, pw, work, y_new,
                                g0, g1, g)
         # y_new now holds the state just past the switch, at t + tau
         copy_into(y, y_new)
@@ -51,17 +51,18 @@ def rk4_advance(model, per_body, t, y, h, p, pw, work, y_new, g0, g1, g):
         remaining -= tau
         splits += 1
         if splits > MAX_SPLITS:
-            rk4_step(model, per_body, t, y, remaining, p, pw, work, y_new)
+            rk4_step(model, air, t, y, remaining, p, pw, work, y_new)
             copy_into(y, y_new)
             break
     return splits
 
 
 @njit(cache=True, nogil=True)
-def _rk4_loop(model, per_body, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0,
+def _rk4_loop(model, air, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0,
               work, y_new, g):
     # every array is borrowed here, once: nothing below counts references
     y, p, pw, out_t, out_y = borrow(y), borrow(p), borrow(pw), borrow(out_t), borrow(out_y)
+    air = borrow(air)
     work, y_new, g = borrow(work), borrow(y_new), borrow(g)
     n = y.shape[0]
     row = row0
@@ -69,10 +70,10 @@ def _rk4_loop(model, per_body, t0, y, h, n_steps, stride, p, pw, locate, out_t, 
     for k in range(1, n_steps + 1):
         t = t0 + (k - 1) * h
         if locate:
-            switches += rk4_advance(model, per_body, t, y, h, p, pw, work, y_new,
+            switches += rk4_advance(model, air, t, y, h, p, pw, work, y_new,
                                     g[0], g[1], g[2])
         else:
-            rk4_step(model, per_body, t, y, h, p, pw, work, y_new)
+            rk4_step(model, air, t, y, h, p, pw, work, y_new)
             copy_into(y, y_new)
         if k % stride == 0:
             out_t[row] = t0 + k * h
@@ -86,7 +87,7 @@ def _rk4_loop(model, per_body, t0, y, h, n_steps, stride, p, pw, locate, out_t, 
 
 # nogil: sweeps run many trajectories on threads (tethersim.experiments.sweep)
 @njit(cache=True, nogil=True)
-def rk4_run(model, per_body, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0):
+def rk4_run(model, air, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0):
     """n_steps RK4 steps of size h from (t0, y), y advanced in place.
 
     Parameters
@@ -94,8 +95,8 @@ def rk4_run(model, per_body, t0, y, h, n_steps, stride, p, pw, locate, out_t, ou
     model : int
         Model index (tethersim.model.registry order); each value compiles
         (once, cached on disk) its own loop.
-    per_body : bool
-        Air density at each body's own altitude (dynamics.model_densities).
+    air : ndarray
+        The air vector (tethersim.model.air.vector; dynamics.derivative).
     t0, y, h : float, ndarray, float
         Start time, state (advanced in place), step.
     n_steps, stride : int
@@ -120,5 +121,5 @@ def rk4_run(model, per_body, t0, y, h, n_steps, stride, p, pw, locate, out_t, ou
     work = np.empty((5, n))
     y_new = np.empty(n)
     g = np.empty((3, 2))  # tether margins at both ends of a step, and a trial
-    return _rk4_loop(model, per_body, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y,
+    return _rk4_loop(model, air, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y,
                      row0, work, y_new, g)

@@ -40,13 +40,13 @@ RK4_C = (0.0, 0.5, 0.5, 1.0)  # nodes of classical RK4 (stage s uses k_{s-1} wit
 
 
 @njit(cache=True)
-def rk4_step(model, per_body, t, y, h, p, pw, work, y_new):
+def rk4_step(model, air, t, y, h, p, pw, work, y_new):
     """One RK4 step of size h from (t, y) into y_new (Eqs 4.1-4.5).
 
     Parameters
     ----------
-    model, per_body
-        Model index literal and density mode (dynamics.derivative).
+    model, air
+        Model index literal and air vector (dynamics.derivative).
     t, y, h : float, ndarray, float
         Start time, start state, step.
     p, pw : ndarray
@@ -68,7 +68,7 @@ def rk4_step(model, per_body, t, y, h, p, pw, work, y_new):
             a = RK4_C[s] * h
             for i in range(n):
                 ys[i] = y[i] + a * work[s - 1, i]
-        derivative(model, per_body, ts, ys, p, pw, work[s])
+        derivative(model, air, ts, ys, p, pw, work[s])
     for i in range(n):
         y_new[i] = y[i] + h / 6.0 * (work[0, i] + 2.0 * work[1, i] + 2.0 * work[2, i]
                                      + work[3, i])
@@ -125,7 +125,7 @@ def _stage_state(s, y, h, K, ys):
 
 
 @njit(cache=True)
-def dop853_step(model, per_body, t, y, f, h, p, pw, K, ys, y_new):
+def dop853_step(model, air, t, y, f, h, p, pw, K, ys, y_new):
     """One DOP853 step from (t, y) with f = f(t, y).
 
     y_new receives the state at t + h; K[0..12] the stages, K[12] = f(t + h,
@@ -137,7 +137,7 @@ def dop853_step(model, per_body, t, y, f, h, p, pw, K, ys, y_new):
         _stage_state(s, y, h, K, ys)
         if s == N_STAGES:
             copy_into(y_new, ys)
-        derivative(model, per_body, t + C[s] * h, ys, p, pw, K[s])
+        derivative(model, air, t + C[s] * h, ys, p, pw, K[s])
 
 
 @njit(cache=True)
@@ -159,12 +159,12 @@ def dop853_error_norm(K, h, y, y_new, rtol, atol):
 
 
 @njit(cache=True)
-def dop853_dense(model, per_body, t, y, y_new, h, p, pw, K, ys, F):
+def dop853_dense(model, air, t, y, y_new, h, p, pw, K, ys, F):
     """Coefficients F (7, n) of the 7th-order interpolant on [t, t + h]."""
     n = y.shape[0]
     for s in range(N_STAGES + 1, N_K):
         _stage_state(s, y, h, K, ys)
-        derivative(model, per_body, t + C[s] * h, ys, p, pw, K[s])
+        derivative(model, air, t + C[s] * h, ys, p, pw, K[s])
     for i in range(n):
         dy = y_new[i] - y[i]
         F[0, i] = dy

@@ -29,22 +29,22 @@ def crossed(g0, g1):
 
 
 @njit(cache=True)
-def _trial(method, model, per_body, t, y, f, tau, p, pw, work, y_new, g):
+def _trial(method, model, air, t, y, f, tau, p, pw, work, y_new, g):
     if method == 0:
-        rk4_step(model, per_body, t, y, tau, p, pw, work, y_new)
+        rk4_step(model, air, t, y, tau, p, pw, work, y_new)
     else:
-        dop853_step(model, per_body, t, y, f, tau, p, pw, work[:16], work[16], y_new)
+        dop853_step(model, air, t, y, f, tau, p, pw, work[:16], work[16], y_new)
     model_tether_margins(model, y_new, p, g)
 
 
 # Out of line on purpose: switches are rare, and keeping this search (with its
 # own copies of the step functions) out of the time loops keeps them small.
 @njit(cache=True)
-def locate(method, model, per_body, t, y, f, h, p, pw, work, y_new, g0, g1, g):
+def locate(method, model, air, t, y, f, h, p, pw, work, y_new, g0, g1, g):
     """Step size τ in (0, h] landing just past the earliest switch.
 
     method 0: RK4 (work is (5, n)); method 1: DOP853 (work is (17, n): stages
-    then a stage state; f = f(t, y)).  model, per_body: dynamics.derivative.
+    then a stage state; f = f(t, y)).  model, air: dynamics.derivative.
     g is a scratch vector like g1.  On return y_new holds step(y, τ).
     """
     tau_best = h
@@ -54,7 +54,7 @@ def locate(method, model, per_body, t, y, f, h, p, pw, work, y_new, g0, g1, g):
             continue
         lo, hi = 0.0, tau_best
         f_lo = g0[j]
-        _trial(method, model, per_body, t, y, f, hi, p, pw, work, y_new, g)
+        _trial(method, model, air, t, y, f, hi, p, pw, work, y_new, g)
         f_hi = g[j]
         if (f_hi > 0.0) == (f_lo > 0.0):
             continue  # no switch of this tether before an earlier one
@@ -65,7 +65,7 @@ def locate(method, model, per_body, t, y, f, h, p, pw, work, y_new, g0, g1, g):
             mid = (lo * f_hi - hi * f_lo) / (f_hi - f_lo)
             if not (lo < mid < hi):
                 mid = 0.5 * (lo + hi)
-            _trial(method, model, per_body, t, y, f, mid, p, pw, work, y_new, g)
+            _trial(method, model, air, t, y, f, mid, p, pw, work, y_new, g)
             f_mid = g[j]
             if (f_mid > 0.0) == (f_lo > 0.0):
                 lo, f_lo = mid, f_mid
@@ -78,5 +78,5 @@ def locate(method, model, per_body, t, y, f, h, p, pw, work, y_new, g0, g1, g):
                     f_lo *= 0.5
                 side = 1
         tau_best = hi
-    _trial(method, model, per_body, t, y, f, tau_best, p, pw, work, y_new, g1)
+    _trial(method, model, air, t, y, f, tau_best, p, pw, work, y_new, g1)
     return tau_best

@@ -20,7 +20,7 @@ from tethersim.model.air.model import (
     SOLAR_CYCLE_LOCAL_TIME_H,
     AirModel,
     msis_direct,
-    msis_grid,
+    msis_table,
     solar_cycle_densities,
 )
 
@@ -40,10 +40,10 @@ PUBLISHED_200KM = {"min": 2.0e-10, "mean": 3.2e-10, "max": 4.6e-10}
 
 
 @njit(cache=True)
-def _msis_many(h, lon, t, grid, axes):
+def _msis_many(h, lon, t, table):
     out = np.empty(h.size)
     for i in range(h.size):
-        out[i] = _grid.msis_density_kernel(h[i], lon[i], t[i], grid, axes)
+        out[i] = _grid.msis_density_kernel(h[i], lon[i], t[i], table, 0)
     return out
 
 
@@ -67,8 +67,8 @@ def interpolation_error(air: AirModel, days: float, n: int = 20000, seed: int = 
     h = rng.uniform(_grid.H_MIN, _grid.H_MAX, n)
     lon = rng.uniform(-math.pi, math.pi, n)
     t = np.round(rng.uniform(0.0, days * 86400.0, n), 3)
-    grid, axes = msis_grid(air, days * 86400.0)
-    return h, np.abs(_msis_many(h, lon, t, grid, axes) / msis_direct(air, h, t, lon) - 1.0)
+    table = msis_table(air, days * 86400.0)
+    return h, np.abs(_msis_many(h, lon, t, table) / msis_direct(air, h, t, lon) - 1.0)
 
 
 def solar_cycle_table(altitude_m: float = 200e3) -> str:
@@ -106,16 +106,16 @@ def _grid_text() -> str:
 
 def _speed_text() -> str:
     air = ERROR_CASES[1][1]
-    grid, axes = msis_grid(air, 86400.0)
+    table = msis_table(air, 86400.0)
     n = 200000
     rng = np.random.default_rng(0)
     h = rng.uniform(150e3, 900e3, n)
     lon = rng.uniform(-math.pi, math.pi, n)
     t = rng.uniform(0.0, 86000.0, n)
-    _msis_many(h[:10], lon[:10], t[:10], grid, axes)
+    _msis_many(h[:10], lon[:10], t[:10], table)
     _vallado_many(h[:10], atmosphere.TABLE)
     best = {}
-    for name, call in (("msis", lambda: _msis_many(h, lon, t, grid, axes)),
+    for name, call in (("msis", lambda: _msis_many(h, lon, t, table)),
                        ("vallado", lambda: _vallado_many(h, atmosphere.TABLE))):
         times = []
         for _ in range(5):

@@ -22,9 +22,11 @@ therefore laid out in
   nodes, evaluated with its own date and indices, so the steps at midnight are
   reproduced exactly as pymsis makes them.
 
-The grid's shape is ``(n_days, n_t, n_lst, n_h)``; its axes travel in a
-float array ``axes`` (see :data:`AXES_FIELDS`).  Catmull-Rom is C¹, so an
-adaptive integrator sees no kinks in ρ.
+The grid's shape is ``(n_days, n_t, n_lst, n_h)``.  The kernel reads one flat
+float array, the *table*: the axes (:data:`AXES_FIELDS`) and then the grid in C
+order (:func:`pack`), so that a compiled loop carries the whole atmosphere in
+one borrowed array, at any offset.  Catmull-Rom is C¹, so an adaptive
+integrator sees no kinks in ρ.
 """
 from __future__ import annotations
 
@@ -46,6 +48,7 @@ N_LST = 24
 N_T = 8
 #: order of the entries of ``axes``
 AXES_FIELDS = ("x0", "dx", "n_h", "n_lst", "ut0", "dt", "n_t", "n_days", "h_min", "h_max", "hc")
+N_AXES = len(AXES_FIELDS)
 
 
 @njit(cache=True)
@@ -60,21 +63,21 @@ def _catmull_rom(u):
 
 
 @njit(cache=True)
-def _plane(grid, d, k, j, wl0, wl1, wl2, wl3, i, wh0, wh1, wh2, wh3, n_lst):
-    """Bicubic (local time x altitude) log density on time node (d, k)."""
+def _plane(table, base, j, wl0, wl1, wl2, wl3, i, wh0, wh1, wh2, wh3, n_lst, n_h):
+    """Bicubic (local time x altitude) log density on one time node (its first entry at base)."""
     acc = 0.0
     for a in range(4):
         jj = (j - 1 + a) % n_lst
         wl = wl0 if a == 0 else (wl1 if a == 1 else (wl2 if a == 2 else wl3))
-        row = (wh0 * grid[d, k, jj, i - 1] + wh1 * grid[d, k, jj, i]
-               + wh2 * grid[d, k, jj, i + 1] + wh3 * grid[d, k, jj, i + 2])
+        r = base + jj * n_h + i
+        row = (wh0 * table[r - 1] + wh1 * table[r] + wh2 * table[r + 1] + wh3 * table[r + 2])
         acc += wl * row
     return acc
 
 
 @njit(cache=True)
-def msis_density_kernel(h, lon, t, grid, axes):
-    """NRLMSISE-00 mass density [kg/m^3] interpolated from a grid.
+def msis_density_kernel(h, lon, t, table, o):
+    """NRLMSISE-00 mass density [kg/m^3] interpolated from a packed grid.
 
     Parameters
     ----------
@@ -84,25 +87,27 @@ def msis_density_kernel(h, lon, t, grid, axes):
         East longitude [rad], any branch.
     t : float
         Time since the grid's epoch [s].
-    grid : numpy.ndarray
-        ``log(rho)`` on the nodes, shape (n_days, n_t, n_lst, n_h).
-    axes : numpy.ndarray
-        The grid's axes, in the order of :data:`AXES_FIELDS`.
+    table : numpy.ndarray
+        Flat float array holding the packed grid (:func:`pack`) from index ``o``.
+    o : int
+        Offset of the packed grid in ``table``.
 
     Returns
     -------
     float
         Density [kg/m^3]; NaN outside the altitude range or the grid's days.
     """
-    x0 = axes[0]
-    dx = axes[1]
-    hc = axes[10]
-    n_lst = int(axes[3])
-    ut0 = axes[4]
-    dt = axes[5]
-    n_t = int(axes[6])
-    n_days = int(axes[7])
-    if not (h >= axes[8] and h <= axes[9]) or not (math.isfinite(lon) and math.isfinite(t)):
+    x0 = table[o]
+    dx = table[o + 1]
+    n_h = int(table[o + 2])
+    n_lst = int(table[o + 3])
+    ut0 = table[o + 4]
+    dt = table[o + 5]
+    n_t = int(table[o + 6])
+    n_days = int(table[o + 7])
+    hc = table[o + 10]
+    if not (h >= table[o + 8] and h <= table[o + 9]) or not (math.isfinite(lon)
+                                                             and math.isfinite(t)):
         return np.nan
     s = ut0 + t  # seconds since 00:00 UTC of the epoch's day
     d = int(math.floor(s / DAY))
@@ -121,13 +126,43 @@ def msis_density_kernel(h, lon, t, grid, axes):
     if j >= n_lst:  # lst rounded up to 24.0
         j -= n_lst
     wt0, wt1, wt2, wt3 = _catmull_rom(ft)
+    plane = n_lst * n_h
+    first = o + N_AXES + d * n_t * plane
     out = 0.0
     for a in range(4):
         w_t = wt0 if a == 0 else (wt1 if a == 1 else (wt2 if a == 2 else wt3))
         kk = (k - 1 + a) % n_t  # periodic in UT within the day
-        out += w_t * _plane(grid, d, kk, j, wl0, wl1, wl2, wl3,
-                            i, wh0, wh1, wh2, wh3, n_lst)
+        out += w_t * _plane(table, first + kk * plane, j, wl0, wl1, wl2, wl3,
+                            i, wh0, wh1, wh2, wh3, n_lst, n_h)
     return math.exp(out)
+
+
+def pack(grid: np.ndarray, axes: np.ndarray) -> np.ndarray:
+    """The flat table :func:`msis_density_kernel` reads: ``axes``, then ``grid`` in C order."""
+    grid = np.asarray(grid, float)
+    if axes.size != N_AXES or grid.shape != tuple(int(axes[i]) for i in (7, 6, 3, 2)):
+        raise ValueError(f"grid shape {grid.shape} does not match its axes")
+    return np.concatenate([np.asarray(axes, float), grid.ravel()])
+
+
+@njit(cache=True)
+def longitude_of(angle, t, theta0, omega_earth):
+    """East longitude [rad, -pi..pi) of an equatorial point at inertial polar angle ``angle``.
+
+    Parameters
+    ----------
+    angle : float
+        Polar angle of the point in the inertial equatorial plane [rad], from the
+        x axis (the vernal equinox: the direction of Greenwich at sidereal angle 0).
+    t : float
+        Time since the epoch [s].
+    theta0 : float
+        Greenwich sidereal angle at the epoch [rad] (:func:`gmst`).
+    omega_earth : float
+        Earth's rotation rate [rad/s].
+    """
+    lam = angle - theta0 - omega_earth * t
+    return (lam + math.pi) % (2.0 * math.pi) - math.pi
 
 
 @njit(cache=True)
@@ -137,17 +172,11 @@ def longitude_kernel(x, y, t, theta0, omega_earth):
     Parameters
     ----------
     x, y : float
-        Inertial position in the equatorial plane [m]; x points to the vernal
-        equinox (the direction of Greenwich at sidereal angle 0).
-    t : float
-        Time since the epoch [s].
-    theta0 : float
-        Greenwich sidereal angle at the epoch [rad] (:func:`gmst`).
-    omega_earth : float
-        Earth's rotation rate [rad/s].
+        Inertial position in the equatorial plane [m] (axes of :func:`longitude_of`).
+    t, theta0, omega_earth : float
+        As :func:`longitude_of`.
     """
-    lam = math.atan2(y, x) - theta0 - omega_earth * t
-    return (lam + math.pi) % (2.0 * math.pi) - math.pi
+    return longitude_of(math.atan2(y, x), t, theta0, omega_earth)
 
 
 def gmst(epoch) -> float:
@@ -185,7 +214,8 @@ def build_grid(epoch, n_days, daily_indices, dx=DX, n_lst=N_LST, n_t=N_T, hc=HC)
     Returns
     -------
     grid, axes : numpy.ndarray
-        As :func:`msis_density_kernel` takes them.
+        ``log(rho)`` on the nodes, shape (n_days, n_t, n_lst, n_h), and the
+        axes in the order of :data:`AXES_FIELDS` (:func:`pack` joins them).
     """
     import pymsis
 

@@ -217,22 +217,21 @@ def air_density(air: AirModel, altitude_m: float, t: float = 0.0,
 
 
 @functools.lru_cache(maxsize=8)
-def _cached_grid(air: AirModel, n_days: int):
-    grid, axes = _grid.build_grid(air.epoch, n_days, air.daily_indices)
-    grid.setflags(write=False)
-    axes.setflags(write=False)
-    return grid, axes
+def _cached_table(air: AirModel, n_days: int) -> np.ndarray:
+    table = _grid.pack(*_grid.build_grid(air.epoch, n_days, air.daily_indices))
+    table.setflags(write=False)
+    return table
 
 
 def _ut0(air: AirModel) -> float:
     return float((air.epoch - air.epoch.astype("datetime64[D]")) / np.timedelta64(1, "s"))
 
 
-def msis_grid(air: AirModel, duration_s: float) -> tuple[np.ndarray, np.ndarray]:
-    """The MSIS grid for a run of ``duration_s`` seconds from ``air.epoch``.
+def msis_table(air: AirModel, duration_s: float) -> np.ndarray:
+    """The packed MSIS grid for a run of ``duration_s`` seconds from ``air.epoch``.
 
-    Built once per (air, number of UTC days) and cached; read-only arrays for
-    :func:`tethersim.model.air.grid.msis_density_kernel`.
+    Built once per (air, number of UTC days) and cached; a read-only flat array
+    for :func:`tethersim.model.air.grid.msis_density_kernel` (offset 0).
 
     Raises
     ------
@@ -250,7 +249,7 @@ def msis_grid(air: AirModel, duration_s: float) -> tuple[np.ndarray, np.ndarray]
         if last > last_ok:
             raise ValueError(f"duration = {duration_s:g} s reaches {last}, past the bundled "
                              f"space-weather table ({first_ok}..{last_ok} daily)")
-    return _cached_grid(air, n_days)
+    return _cached_table(air, n_days)
 
 
 def solar_cycle_densities(altitude_m: float, epoch=SOLAR_CYCLE_EPOCH,
