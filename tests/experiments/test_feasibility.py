@@ -64,6 +64,10 @@ def test_atlas_runs_resumes_and_writes_the_csv(tmp_path, capsys):
     # 200 km: the free run ends before the 3 h cap; 300 km outlives it (capped)
     assert rows[0]["lifetime_capped"] == "false" and float(rows[0]["lifetime_h"]) < 3
     assert rows[1]["lifetime_capped"] == "true" and float(rows[1]["lifetime_h"]) == 3.0
+    # the solar-cycle lifetimes are free runs in MSIS air: denser air, shorter life
+    life = {c: float(rows[0][f"lifetime_{c}_h"]) for c in ("min", "mean", "max")}
+    assert life["max"] < life["mean"] < life["min"] <= 3.0
+    assert rows[0]["lifetime_max_capped"] == "false"
     assert (out / "feasibility.png").stat().st_size > 10_000
     # resumable: a finished store is not rerun (its lines are kept byte for byte)
     store = out / "store" / "points.jsonl"

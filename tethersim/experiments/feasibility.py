@@ -13,12 +13,12 @@ Per point (altitude h, balloon area A3), from the satellite with those two set:
   each solar case (min, mean, max of tethersim.model.air.SOLAR_CYCLE; MSIS averaged
   over 24 local times on the equator at the March equinox).
 
-Lifetimes in solar-minimum or -maximum air are not run: in the near-circular
-decay law da/dt ∝ ρ a scale factor k on the density divides the lifetime by k
-(``lifetime_<case>_h`` columns, stated as such).
+* **lifetime across the solar cycle** -- the same free orbit in NRLMSISE-00 air per
+  body (altitude, longitude and time of each body, in the compiled loop) with each
+  solar case's indices, from the same epoch (``lifetime_<case>_h`` columns).
 
-Why not the sweep store: a point here is five runs of three kinds (free, nominal,
-three scaled), not one run of one kind, and its row mixes their results.  A
+Why not the sweep store: a point here is up to eight runs of three kinds (free,
+nominal, scaled), not one run of one kind, and its row mixes their results.  A
 small resumable store of its own (one JSON line per finished point, a lock as
 the sweep stores take, the spec beside it) keeps finished points across an
 interruption; points run on threads (the compiled loops release the GIL).
@@ -37,6 +37,7 @@ from tethersim.engine.simulate import simulate
 from tethersim.experiments.sweep.lock import StoreLock
 from tethersim.model import atmosphere
 from tethersim.model.air import solar_cycle_densities
+from tethersim.model.air.model import SOLAR_CYCLE, SOLAR_CYCLE_EPOCH
 from tethersim.model.satellite import Satellite
 
 SOLAR_CASES = ("min", "mean", "max")
@@ -86,7 +87,8 @@ class FeasibilitySpec:
         for h in self.altitudes_km:  # every point a valid satellite, before any run
             for a3 in self.areas:
                 self.circular(h, a3)
-                self.free(h, a3)
+                for case in (None, *self.solar):
+                    self.free(h, a3, case)
 
     def points(self) -> list:
         """(altitude_km, A3) of every point, altitude fastest."""
@@ -98,11 +100,17 @@ class FeasibilitySpec:
                                       eccentricity=0.0, density_mode="uniform",
                                       atmosphere="vallado", density_scale=scale)
 
-    def free(self, h_km: float, a3: float) -> Satellite:
-        """The free-orbit satellite of a point (per-body Vallado air)."""
-        return self.satellite.replace(altitude=h_km * 1e3, A3=a3, orbit="free",
-                                      density_mode="per-body", atmosphere="vallado",
-                                      density_scale=1.0)
+    def free(self, h_km: float, a3: float, case: str | None = None) -> Satellite:
+        """The free-orbit satellite of a point: per-body Vallado air, or NRLMSISE-00 with
+        the indices of solar ``case`` (:data:`~tethersim.model.air.model.SOLAR_CYCLE`)."""
+        sat = self.satellite.replace(altitude=h_km * 1e3, A3=a3, orbit="free",
+                                     density_mode="per-body", atmosphere="vallado",
+                                     density_scale=1.0, f107=None, f107a=None, ap=None)
+        if case is None:
+            return sat
+        f107, f107a, ap = SOLAR_CYCLE[case]
+        return sat.replace(atmosphere="nrlmsise00", epoch=SOLAR_CYCLE_EPOCH, f107=f107,
+                           f107a=f107a, ap=ap)
 
     def to_json(self) -> str:
         d = asdict(self)
@@ -118,23 +126,27 @@ def solar_scales(h_km: float, cases=SOLAR_CASES) -> dict:
     return {c: rho[c] / nominal for c in cases}
 
 
+def _lifetime(spec: FeasibilitySpec, sat: Satellite) -> tuple:
+    """(lifetime [s] or inf when capped, how the free run ended, the run)."""
+    free = simulate(sat, periods=spec.max_lifetime_h * 3600 / sat.period, model=spec.model,
+                    progress=False)
+    if free.status == "ok":
+        return math.inf, "capped", free
+    return (free.reentry_time if free.reentry_time is not None else float(free.t[-1]),
+            free.status, free)
+
+
 def run_point(spec: FeasibilitySpec, h_km: float, a3: float) -> dict:
     """Every run of one point and its row (keys name their units)."""
     kw = dict(model=spec.model, progress=False)
-    sat_f = spec.free(h_km, a3)
-    free = simulate(sat_f, periods=spec.max_lifetime_h * 3600 / sat_f.period, **kw)
-    if free.status == "ok":
-        life, end = math.inf, "capped"
-    else:
-        life, end = (free.reentry_time if free.reentry_time is not None
-                     else float(free.t[-1])), free.status
+    life, end, free = _lifetime(spec, spec.free(h_km, a3))
     nominal = outcome(simulate(spec.circular(h_km, a3), periods=spec.periods, **kw),
                       forces=False)
     scales = solar_scales(h_km, spec.solar)
     trims = {c: outcome(simulate(spec.circular(h_km, a3, k), periods=spec.periods, **kw),
                         forces=False) for c, k in scales.items()}
-    shown = life if math.isfinite(life) else spec.max_lifetime_h * 3600
-    row = {"altitude_km": h_km, "A3_m2": a3, "lifetime_h": shown / 3600,
+    cap = spec.max_lifetime_h * 3600
+    row = {"altitude_km": h_km, "A3_m2": a3, "lifetime_h": min(life, cap) / 3600,
            "lifetime_capped": not math.isfinite(life), "free_end": end,
            "end_altitude_km": float(free.altitude[-1] / 1e3),
            "settling_h": settling_time(nominal) / 3600, "nominal_class": nominal.class_name,
@@ -143,7 +155,9 @@ def run_point(spec: FeasibilitySpec, h_km: float, a3: float) -> dict:
         row[f"scale_{c}"] = k
         row[f"theta_ss_{c}_rad"] = _theta_ss(trims[c])
         row[f"class_{c}"] = trims[c].class_name
-        row[f"lifetime_{c}_h"] = row["lifetime_h"] / k
+        life_c, _, _ = _lifetime(spec, spec.free(h_km, a3, c))
+        row[f"lifetime_{c}_h"] = min(life_c, cap) / 3600
+        row[f"lifetime_{c}_capped"] = not math.isfinite(life_c)
     row["verdict"] = verdict(life, nominal, trims.values())
     return row
 
