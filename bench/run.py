@@ -686,8 +686,9 @@ def main(argv=None) -> int:
     ap.add_argument("--json", default=str(HERE / "results.json"), help="where to write results")
     ap.add_argument("--skip-slow", action="store_true",
                     help="skip the subprocess figures (make derive, CLI, report)")
-    ap.add_argument("--only", choices=("sweep", "report"), default=None,
-                    help="run one section only (sweep throughput, or the report's wall time)")
+    ap.add_argument("--only", choices=("sweep", "report", "3d"), default=None,
+                    help="run one section only (sweep throughput, the report's wall time, or "
+                         "the 3-D model against its C port)")
     args = ap.parse_args(argv)
     q = dict(fast_repeats=15, dop_repeats=9, slow_repeats=5, rhs_calls=200_000,
              lambdify_calls=1000, pydy_calls=4000, pycall_calls=20_000,
@@ -711,6 +712,9 @@ def main(argv=None) -> int:
     if args.only:
         if args.only == "sweep":
             sweep_bench.bench_sweep(rep, q)
+        elif args.only == "3d":
+            import bench3d
+            bench3d.bench_3d(rep, q, log)
         else:
             sweep_bench.bench_report(rep, q, REPO)
         print_table(rep, clock() - t_start, "(not written with --only)")
@@ -736,6 +740,8 @@ def main(argv=None) -> int:
     import engine_bench
     engine_bench.bench_simulate(rep, S, q, log)
     bench_dop853(rep, S, q)
+    import bench3d
+    bench3d.bench_3d(rep, q, log)
     bench_tools(rep, S, q, lamb, pydy_f, pydy_gen)
     sweep_bench.bench_sweep(rep, q)
     import csweep
