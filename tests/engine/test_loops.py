@@ -126,3 +126,33 @@ def test_reference_count_operations_do_not_grow_with_the_step_count(tmp_path):
     small, large = _nrt_ops(300, env), _nrt_ops(600, env)
     assert small == large
     assert small < 100  # a few per run (allocations, arguments), none per step
+
+
+def test_a_warm_run_and_its_analysis_never_go_through_numba_type_inference(sat, monkeypatch):
+    """Every literal-model kernel is called from Python through its compiled entry
+    (integrators/select.py: specialised, call); numba's dispatcher slow path (type
+    inference, ~10 ms a call for a series kernel) must not run once a run is warm."""
+    import tethersim as ts
+    from numba.core.dispatcher import Dispatcher
+
+    per_body = sat.replace(density_mode="per-body")
+
+    def work():
+        for s in (sat, per_body):
+            for method in ("rk4", "adaptive"):
+                res = simulate(s, periods=0.2, method=method, progress=False)
+                ts.outcome(res)
+                res.forces, res.tether_tensions(), res.energy_budget()
+        ts.accelerations(per_body, sat.initial, t=10.0)
+        ts.generalized_forces(per_body, sat.initial)
+
+    work()  # compile or load everything once
+    slow = []
+    real = Dispatcher._compile_for_args
+
+    def spy(self, *args, **kws):
+        slow.append(self.py_func.__qualname__)
+        return real(self, *args, **kws)
+    monkeypatch.setattr(Dispatcher, "_compile_for_args", spy)
+    work()
+    assert slow == []

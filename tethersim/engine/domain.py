@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from tethersim.engine.evaluate import tether_margin_series
+from tethersim.engine.integrators.select import call
 
 REENTRY_ALTITUDE = 120e3  # m: default re-entry threshold (issue 12; Vallado's table holds to 0)
 # λ / l0: the thesis's own presets trail the balloon ~28 m on 6 m tethers (λ/l0 ≈ 5,
@@ -112,8 +113,8 @@ def first_violation(res, altitude=None) -> Violation | None:
                                     f"{reach(sat):.4g} m, {BALLOON_REACH:g} x the longest "
                                     f"tether path)"))
     if last:
-        g = tether_margin_series(lay.index, np.ascontiguousarray(res.states[:last]),
-                                 res.parameters)
+        g = call(tether_margin_series, lay.index, np.ascontiguousarray(res.states[:last]),
+                 res.parameters)
         strain = np.column_stack([g[:, 0] / sat.l10, g[:, 1] / sat.l20]) + 1.0
         over = np.nonzero(np.any(strain > MAX_STRETCH, axis=1))[0]
         if over.size:

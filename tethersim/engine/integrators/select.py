@@ -110,3 +110,13 @@ def _type_key(a):
         f = a.flags
         return a.dtype.str, a.ndim, f.c_contiguous, f.f_contiguous, f.writeable, f.aligned
     return type(a)
+
+
+def call(dispatcher, model: int, *args):
+    """``dispatcher(model, *args)`` from Python through its compiled entry for a literal model.
+
+    What every Python caller of a literal-model kernel uses (the series of
+    tethersim.engine.evaluate, dynamics.parameters_at): a plain call would go
+    through numba's type inference on every call (~10 ms for a series kernel).
+    """
+    return specialised(dispatcher, model, args)(model, *args)
