@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 from dataclasses import asdict, dataclass, field, fields, replace
 
-from tethersim.model import atmosphere, options
+from tethersim.model import atmosphere, inertia, options
 from tethersim.model.constants import CD_DEFAULT, MU_EARTH, OMEGA_EARTH, R_EARTH
 
 # fields that must be > 0 and >= 0 (units in UNITS)
@@ -21,7 +21,7 @@ DENSITY_MODES = ("uniform", "per-body")
 INITIAL_3D = {"delta_z": "m", "phi": "rad", "psi": "rad", "delta_z_dot": "m/s",
               "phi_dot": "rad/s", "psi_dot": "rad/s"}
 _OPTIONAL = ("allow_implausible", "orbit", "j2", "eccentricity", "reentry_altitude", "atmosphere",
-             "epoch", "f107", "f107a", "ap", "density_scale")
+             "epoch", "f107", "f107a", "ap", "density_scale", "inertia", "I1", "I2")
 UNITS = {"m1": "kg", "m2": "kg", "m3": "kg", "A1": "m^2", "A2": "m^2", "A3": "m^2",
          "a": "m", "b": "m", "l10": "m", "l20": "m", "E1": "N", "E2": "N",
          "c1": "N s/m", "c2": "N s/m", "CD": "1", "altitude": "m"}
@@ -72,6 +72,13 @@ class Satellite:
         Orbit and air options (tethersim.model.options): circular or free orbit, J2,
         eccentricity (altitude at perigee), re-entry altitude [m], air model,
         epoch, solar and geomagnetic indices, density scale.
+    inertia : str
+        End-body moments of the 3-D models (tethersim.model.inertia): ``"boxes"``
+        (thesis Eq 4.4, I = m · 2A / 12 about every axis) or ``"points"`` (zero).
+    I1, I2 : tuple or None
+        (roll, pitch, yaw) principal moments [kg m²] of the tip-mass and the bus,
+        overriding ``inertia`` for that body; each >= 0 and <= the sum of the
+        other two.  The planar models ignore ``inertia``, ``I1``, ``I2``.
     """
 
     name: str
@@ -107,6 +114,10 @@ class Satellite:
     f107a: float | None = None  # sfu
     ap: float | None = None
     density_scale: float = 1.0
+    # end-body inertias of the 3-D models (tethersim.model.inertia), kg m^2
+    inertia: str = "boxes"
+    I1: tuple | None = None
+    I2: tuple | None = None
 
     def __post_init__(self):
         for f in fields(self):
@@ -163,6 +174,7 @@ class Satellite:
                     f"'per-body': allowed range {lo / 1e3:.3f}-{hi / 1e3:.3f} km, so that every "
                     f"body (within {reach:.4g} m of the COM) stays inside 0-1000 km")
         options.check(self)
+        inertia.check(self)
         if not isinstance(self.allow_implausible, bool):
             raise SatelliteError(f"{self._where()}allow_implausible = {self.allow_implausible!r}: "
                                  f"must be true or false")
