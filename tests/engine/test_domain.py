@@ -1,10 +1,12 @@
 """Runs that leave the model's domain end with a status that says so (engine/domain.py)."""
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 import tethersim as ts
-from tethersim.engine.domain import BALLOON_REACH, REENTRY_ALTITUDE, reach
+from tethersim.engine.domain import BALLOON_REACH, REENTRY_ALTITUDE, ROLL_LIMIT, reach
+from tethersim.model.satellite import ROLL_LIMIT_DEG
 
 
 @pytest.fixture(scope="module")
@@ -40,3 +42,38 @@ def test_a_balloon_blown_away_leaves_the_domain(sat):
     assert f"allowed <= {reach(low):.4g} m" in res.message
     d = (res.x[-1] ** 2 + res.y[-1] ** 2) ** 0.5
     assert d > reach(low) == BALLOON_REACH * max(low.l10 + low.b, low.l20 + low.a)
+
+
+def _crossing(sat, periods):
+    """When |φ| first passes the roll limit, from a run sampled every 0.05 s."""
+    dense = ts.simulate(sat, periods=periods, model="3d", progress=False,
+                        samples=int(periods * sat.period / 0.05))
+    assert dense.status == "left-domain"
+    return dense.t[-1], dense.t[1] - dense.t[0]
+
+
+@pytest.mark.slow  # compiles the 3-D loop
+@pytest.mark.parametrize("rate_in_n", [3.0, 10.0, 30.0, 100.0])
+def test_a_tumbling_roll_leaves_the_domain_within_a_sample_of_passing_the_limit(sat, rate_in_n):
+    """Rolled over by a roll rate of 3-100 n: from 10 n on the roll passes 80° between two
+    of the (200 per orbit) samples, so the intervals are checked as well as the samples."""
+    tumbling = sat.replace(initial_3d={"phi_dot": rate_in_n * sat.omega})
+    res = ts.simulate(tumbling, periods=0.5, model="3d", progress=False)
+    assert res.status == "left-domain"
+    assert "roll" in res.message and f"{ROLL_LIMIT_DEG:g} deg" in res.message
+    assert "\n" not in res.message
+    t_cross, fine = _crossing(tumbling, 0.5)
+    step = res.t[1] - res.t[0]
+    assert abs(res.t[-1] - t_cross) <= step + fine  # the first sample (or interval) outside
+    phi = np.abs(res.series("phi"))
+    assert np.all(phi[:-1] <= ROLL_LIMIT) and np.all(np.isfinite(res.states))
+    assert ts.outcome(res).class_name == "failed"
+
+
+@pytest.mark.slow  # compiles the 3-D loop
+def test_a_librating_roll_stays_in_the_domain(sat):
+    """The thesis's start with a 5° roll: roll grows to some 50° and comes back (docs/roll.md)."""
+    res = ts.simulate(sat.replace(initial_3d={"phi": np.radians(5.0)}), periods=5, model="3d",
+                      progress=False)
+    assert res.status == "ok"
+    assert np.radians(30.0) < np.max(np.abs(res.series("phi"))) < ROLL_LIMIT

@@ -20,6 +20,9 @@ DENSITY_MODES = ("uniform", "per-body")
 # out-of-plane initial state of the 3-D models (docs/roll.md): name -> unit
 INITIAL_3D = {"delta_z": "m", "phi": "rad", "psi": "rad", "delta_z_dot": "m/s",
               "phi_dot": "rad/s", "psi_dot": "rad/s"}
+# largest |roll| of the 3-D models' domain [deg]: the roll-pitch-yaw angles are singular at
+# 90 deg; why 80 (the kinematic matrix's conditioning): tethersim.engine.domain
+ROLL_LIMIT_DEG = 80.0
 _OPTIONAL = ("allow_implausible", "orbit", "j2", "eccentricity", "reentry_altitude", "atmosphere",
              "epoch", "f107", "f107a", "ap", "density_scale", "inertia", "I1", "I2")
 UNITS = {"m1": "kg", "m2": "kg", "m3": "kg", "A1": "m^2", "A2": "m^2", "A3": "m^2",
@@ -66,8 +69,8 @@ class Satellite:
         "per-body" (each body at its own altitude).
     initial_3d : dict
         The out-of-plane start of the 3-D models, {name: value} with names in
-        ``INITIAL_3D`` (δz [m], roll φ [rad], yaw ψ [rad] and their rates);
-        missing names are zero, and the planar models ignore it.
+        ``INITIAL_3D`` (δz [m], roll φ [rad], |φ| <= ``ROLL_LIMIT_DEG``, yaw ψ [rad]
+        and their rates); missing names are zero, and the planar models ignore it.
     orbit, j2, eccentricity, reentry_altitude, atmosphere, epoch, f107, f107a, ap, density_scale
         Orbit and air options (tethersim.model.options): circular or free orbit, J2,
         eccentricity (altitude at perigee), re-entry altitude [m], air model,
@@ -198,10 +201,11 @@ class Satellite:
             if not math.isfinite(v):
                 raise SatelliteError(f"{self._where()}initial_3d[{k!r}] = {given[k]!r}: must "
                                      f"be a finite number ({INITIAL_3D[k]})")
-            if k == "phi" and not abs(v) < math.pi / 2:
+            if k == "phi" and not abs(v) <= math.radians(ROLL_LIMIT_DEG):
                 raise SatelliteError(f"{self._where()}phi0 = {math.degrees(v):g} deg: allowed "
-                                     f"range -90 to 90 deg, exclusive (the roll-pitch-yaw "
-                                     f"angles are singular at |phi| = 90 deg)")
+                                     f"range -{ROLL_LIMIT_DEG:g} to {ROLL_LIMIT_DEG:g} deg (the "
+                                     f"3-D models' domain: the roll-pitch-yaw angles are "
+                                     f"singular at |phi| = 90 deg, docs/limits.md)")
             if k == "psi" and not -math.pi <= v <= math.pi:
                 raise SatelliteError(f"{self._where()}psi0 = {math.degrees(v):g} deg: allowed "
                                      f"range -180 to 180 deg")
