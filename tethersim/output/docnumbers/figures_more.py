@@ -166,3 +166,4 @@ FIGURES += [
     Figure(THREE_D, ("a boom rolled that far is within ",), "roll_limit_band"),
     Figure(THREE_D, ("|φ| is guarded at ",), "roll_limit"),
 ]
+FIGURES += [Figure(README, ("a 3-D run\nalso when its roll passes ",), "roll_limit")]
