@@ -187,7 +187,9 @@ def _roll_violation(res, last: int) -> list:
         w = res.satellite.omega
         # the turn rate's change per second, each interval's and its neighbours' (or the
         # gravity-gradient 3n² where larger), as the acceleration within the interval
-        acc = np.maximum(np.abs(np.diff(speed)) / dt, 3 * w * w)
+        with np.errstate(divide="ignore", invalid="ignore"):  # a repeated time: no interval
+            rate = np.where(dt > 0, np.abs(np.diff(speed)) / dt, 0.0)
+        acc = np.maximum(rate, 3 * w * w)
         acc = np.maximum(acc, np.maximum(np.append(acc[1:], 0.0), np.insert(acc[:-1], 0, 0.0)))
         path = dt * (np.maximum(speed[:-1], speed[1:]) + ROLL_PATH_MARGIN * acc * dt / 2)
         reach_pole = np.minimum(np.pi - phi[:-1] - phi[1:], np.pi + phi[:-1] + phi[1:])
