@@ -154,6 +154,10 @@ SET_CASES = [
     (["--set", "nosuch=1"], ["'nosuch'", "allowed: m1, m2"]),
     (["--set", "E1"], ["--set 'E1'", "NAME=VALUE"]),
     (["--set", "b=20"], ["m1*b = 200 kg m", "must equal m2*a"]),
+    (["--set", "I1=1,1,5"], ["I1 = (1.0, 1.0, 5.0)", "yaw 5 > roll + pitch 2 kg m^2"]),
+    (["--set", "I2=-1,1,1"], ["I2 = (-1.0, 1.0, 1.0)", "each finite and >= 0"]),
+    (["--set", "I1=1,2"], ["--set I1=1,2", "roll,pitch,yaw in kg m^2 (three numbers)"]),
+    (["--set", "inertia=rods"], ["--set inertia=rods", "allowed values boxes, points"]),
     (["--scale", "altitude=0.1"], ["altitude = 20 km", "120..1000 km"]),
     (["--scale", "m3=1e9"], ["m3 = 1e+09 kg", "0.001..100000 kg"]),
     (["--scale", "E1=x"], ["--scale E1=x", "not a number"]),
@@ -235,7 +239,8 @@ _VALUES = st.one_of(
     st.integers(-10**30, 10**30), st.booleans(), st.text(max_size=6),
     st.lists(st.floats(), max_size=2), st.dictionaries(st.text(max_size=3), st.integers(), max_size=1))
 _KEYS = [(t, k) for t, keys in SCHEMA.items() for k in keys] + [
-    ("environment", "CD"), ("environment", "density"), ("model", "allow_implausible")]
+    ("environment", "CD"), ("environment", "density"), ("model", "allow_implausible"),
+    ("satellite", "inertia"), ("satellite", "I1"), ("satellite", "I2")]
 # keys whose bad value may first break the COM-on-the-boom rule (m1 b = m2 a)
 _COM = {"m1", "m2", "a", "b"}
 
@@ -251,7 +256,7 @@ def test_any_preset_value_loads_or_is_one_line_naming_the_key(key, value, drop):
     doc = _doc()
     sub = doc.setdefault(table, {})
     if drop and table in SCHEMA:
-        del sub[name]
+        sub.pop(name, None)
     else:
         sub[name] = value
     try:
@@ -282,7 +287,10 @@ def test_any_preset_text_loads_or_is_one_line(text, tmp_path_factory):
     alphabet=st.characters(blacklist_categories=("Cs",)), max_size=12))
 def test_mutated_preset_text_loads_or_is_one_line(key, text, tmp_path_factory):
     table, name = key
-    base = TEXT if table in SCHEMA else TEXT + f"\n[{table}]\n{name} = 1\n"
+    if table in SCHEMA and name not in SCHEMA[table]:  # an optional key: add it to mutate
+        base = TEXT.replace(f"[{table}]\n", f"[{table}]\n{name} = 1\n", 1)
+    else:
+        base = TEXT if table in SCHEMA else TEXT + f"\n[{table}]\n{name} = 1\n"
     path = tmp_path_factory.getbasetemp() / "mutated.toml"
     path.write_text(re.sub(rf"^{name}\s*=[^#\n]*", lambda m: f"{name} = {text}", base,
                            count=1, flags=re.M))

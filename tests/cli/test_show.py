@@ -75,3 +75,18 @@ def test_show_accepts_a_user_toml_path(tmp_path, cli):
     code, out, _ = cli(["show", str(path)])
     assert code == 0
     assert out.startswith("Mine")
+
+
+def test_show_prints_the_3d_moments_and_they_read_back_through_set(cli):
+    code, out, _ = cli(["show", "satI", "--set", "inertia=points", "--set", "I2=10,12,3"])
+    assert code == 0
+    lines = {ln.split()[0]: ln.split() for ln in out.splitlines() if ln.split()[:1] in (["I1"],
+                                                                                       ["I2"])}
+    assert "inertia points" in out
+    assert lines["I1"][1] == "0,0,0" and lines["I1"][-2:] == ["(point", "mass)"]
+    assert lines["I2"][1] == "10,12,3" and lines["I2"][-1] == "(set)"
+    box = cli(["show", "satI"])[1]
+    i2 = next(ln.split() for ln in box.splitlines() if ln.split()[:1] == ["I2"])
+    assert "box, thesis Eq 4.4" in box
+    sat = params.apply_overrides(load_preset("satI"), [f"I2={i2[1]}"])
+    assert sat.I2 == (105 * 2 * 1.05 / 12,) * 3  # exactly the box, fed back

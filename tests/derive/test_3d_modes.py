@@ -5,7 +5,8 @@ tethers off.  References (shared/physics-references.md):
 
 * rigid dumbbell (point masses on a rod): in-plane libration √3·n, out-of-plane
   2·n (Cosmo & Lorenzini, Tethers in Space Handbook, 1997);
-* rigid body, principal inertias on roll (x, along-track), pitch (z, orbit
+* rigid body (also through the public Satellite fields I1, I2 and
+  ``inertia = "points"``), principal inertias on roll (x, along-track), pitch (z, orbit
   normal), yaw (y, radial): pitch ω² = 3n²(I_roll − I_yaw)/I_pitch and the
   roll–yaw quartic s⁴ + s²n²(1 + 3k1 + k1k3) + 4n⁴k1k3 = 0 with
   k1 = (I_pitch − I_yaw)/I_roll, k3 = (I_pitch − I_roll)/I_yaw (Hughes,
@@ -60,11 +61,11 @@ def eigs(J, coords):
     return np.linalg.eigvals(J[np.ix_(idx, idx)])
 
 
-def assert_same_roots(got, want):
+def assert_same_roots(got, want, n=N):
     got, want = np.asarray(got, complex), np.asarray(want, complex)
     for w in want:  # nearest-match, each closed-form root found once
         k = int(np.argmin(np.abs(got - w)))
-        assert abs(got[k] - w) <= TOL * N, (got, want)
+        assert abs(got[k] - w) <= TOL * n, (got, want)
         got = np.delete(got, k)
 
 
@@ -92,12 +93,12 @@ def totals(m, half_length, box):
     return points + 2 * box[0], points + 2 * box[1], 2 * box[2]
 
 
-def closed_form(Ir, Ip, Iy):
+def closed_form(Ir, Ip, Iy, n=N):
     """Pitch eigenvalues ±√(−ω²) and the roll–yaw quartic's roots (Hughes)."""
-    w2 = 3 * N**2 * (Ir - Iy) / Ip
+    w2 = 3 * n**2 * (Ir - Iy) / Ip
     pitch = [np.sqrt(complex(-w2)), -np.sqrt(complex(-w2))]
     k1, k3 = (Ip - Iy) / Ir, (Ip - Ir) / Iy
-    quartic = np.roots([1.0, 0.0, N**2 * (1 + 3 * k1 + k1 * k3), 0.0, 4 * N**4 * k1 * k3])
+    quartic = np.roots([1.0, 0.0, n**2 * (1 + 3 * k1 + k1 * k3), 0.0, 4 * n**4 * k1 * k3])
     return pitch, quartic
 
 
@@ -127,6 +128,62 @@ def test_rigid_body_pitch_and_roll_yaw_quartic(model, case):
         assert growth <= TOL * N  # all neutral
     else:
         assert growth > 0.05 * N  # a genuine growth rate, not rounding
+
+
+# The same through the public Satellite fields I1, I2 (tethersim.model.inertia): each end
+# body's moments a rigid body's (the triangle inequality, which the kernel-level boxes
+# above need not obey), the totals in the same four regions.
+PHYSICAL_CASES = {
+    "Lagrange region": (300.0, 500.0, 400.0),  # I_p 3500 > I_r 3100 > I_y 800
+    "roll-yaw unstable (I_roll > I_pitch)": (500.0, 300.0, 400.0),
+    "pitch unstable (I_yaw > I_roll)": (100.0, 1500.0, 1500.0),
+    "k1, k3 < 0 outside the DeBra-Delp region": (1500.0, 0.0, 1500.0),  # a thin plate
+}
+
+
+def rigid_satellite(**inertia):
+    """m1 = m2 = 50 kg at a = b = 5 m, tethers and drag off, the moments as given."""
+    from tethersim import Satellite
+
+    return Satellite(name="rigid", m1=50.0, m2=50.0, m3=1.0, A1=1.0, A2=1.0, A3=10.0, a=5.0,
+                     b=5.0, l10=30.0, l20=30.0, E1=0.0, E2=0.0, c1=0.0, c2=0.0,
+                     altitude=200e3, initial=(30.0, 0.0, 0.0, 0.0, 0.0, 0.0), CD=0.0, **inertia)
+
+
+@pytest.mark.parametrize("model", MODELS)
+@pytest.mark.parametrize("case", list(PHYSICAL_CASES))
+def test_satellite_moments_give_the_rigid_body_pitch_and_roll_yaw_quartic(model, case):
+    from tethersim.model.inputs import parameter_vector
+
+    box = PHYSICAL_CASES[case]
+    sat = rigid_satellite(I1=box, I2=list(box))
+    n = sat.omega
+    J = np.full((12, 12), np.nan)
+    generated.MODELS[model].jacobian(0.0, np.zeros(12), parameter_vector(sat, model), J)
+    assert_attitude_decoupled(J)
+    pitch, quartic = closed_form(*totals(50.0, 5.0, box), n=n)
+    got_pitch, got_ry = eigs(J, [THETA]), eigs(J, [PHI, PSI])
+    assert_same_roots(got_pitch, pitch, n)
+    assert_same_roots(got_ry, quartic, n)
+    growth = max(np.max(got_pitch.real), np.max(got_ry.real))
+    Ir, Ip, Iy = totals(50.0, 5.0, box)
+    if Ip > Ir > Iy:
+        assert growth <= TOL * n  # all neutral
+    else:
+        assert growth > 0.05 * n  # a genuine growth rate, not rounding
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_satellite_point_masses_give_the_dumbbell_librations(model):
+    from tethersim.model.inputs import parameter_vector
+
+    sat = rigid_satellite(inertia="points")
+    n = sat.omega
+    J = np.full((12, 12), np.nan)
+    generated.MODELS[model].jacobian(0.0, np.zeros(12), parameter_vector(sat, model), J)
+    assert_same_roots(eigs(J, [THETA]), [1j * math.sqrt(3) * n, -1j * math.sqrt(3) * n], n)
+    assert_same_roots(eigs(J, [PHI]), [2j * n, -2j * n], n)
+    assert np.all(J[RATE[PSI]] == 0.0)  # no axial moment: yaw is no degree of freedom
 
 
 @pytest.mark.parametrize("model", MODELS)

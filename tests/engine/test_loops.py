@@ -132,8 +132,9 @@ def test_a_warm_run_and_its_analysis_never_go_through_numba_type_inference(sat, 
     """Every literal-model kernel is called from Python through its compiled entry
     (integrators/select.py: specialised, call); numba's dispatcher slow path (type
     inference, ~10 ms a call for a series kernel) must not run once a run is warm."""
-    import tethersim as ts
     from numba.core.dispatcher import Dispatcher
+
+    import tethersim as ts
 
     per_body = sat.replace(density_mode="per-body")
 

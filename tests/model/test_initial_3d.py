@@ -38,7 +38,8 @@ def test_planar_models_ignore_the_out_of_plane_start():
 
 
 @pytest.mark.parametrize("key, value, message", [
-    ("phi0_deg", 90.0, "initial.phi0_deg = 90 deg: allowed range -90 to 90 deg"),
+    ("phi0_deg", 90.0, "initial.phi0_deg = 90 deg: allowed range -80 to 80 deg"),
+    ("phi0_deg", -80.5, "initial.phi0_deg = -80.5 deg: allowed range -80 to 80 deg"),
     ("psi0_deg", 200.0, "initial.psi0_deg = 200 deg: allowed range -180 to 180 deg"),
     ("delta_z", "1", "initial.delta_z = '1': must be a number in m"),
     ("roll0_deg", 1.0, "unknown key initial.'roll0_deg'"),
@@ -47,6 +48,13 @@ def test_bad_3d_start_is_a_one_line_error_naming_the_key(key, value, message):
     with pytest.raises(SatelliteError, match=None) as exc:
         from_dict(_doc(**{key: value}), "f.toml")
     assert message in str(exc.value) and "\n" not in str(exc.value)
+
+
+def test_a_start_on_the_roll_limit_is_allowed():
+    from tethersim.model.satellite import ROLL_LIMIT_DEG
+
+    sat = from_dict(_doc(phi0_deg=-ROLL_LIMIT_DEG), "f.toml")
+    assert sat.initial_3d["phi"] == -math.radians(ROLL_LIMIT_DEG)
 
 
 def test_satellite_rejects_unknown_or_non_finite_3d_start():

@@ -20,8 +20,9 @@ def add_parser(sub) -> None:
         "report", help=HELP,
         description="Validation tables, nominal runs, SatI's headline cases faithful and "
                     "converged, force breakdowns, six stability maps (converged, faithful, "
-                    "predicted) and a table of the thesis's statements beside ours.  Sweeps "
-                    "are resumable: run again after an interruption.")
+                    "predicted), the design in a real orbit, roll and yaw in the 3-D models "
+                    "(docs/roll.md) and a table of the thesis's statements beside ours.  "
+                    "Sweeps are resumable: run again after an interruption.")
     p.add_argument("--out", default="results/report", metavar="DIR",
                    help="output folder (default results/report; the report covers every "
                         "preset, so it has no per-satellite folder)")
@@ -32,6 +33,9 @@ def add_parser(sub) -> None:
                                 "run lengths")
     p.add_argument("--workers", type=options.positive_int, default=None, metavar="N",
                    help="threads (default: every core)")
+    p.add_argument("--no-roll", action="store_true",
+                   help="leave out the roll section (the 3-D models; their first compile "
+                        "takes a minute or two)")
     options.add_quiet(p)
     p.set_defaults(func=run, interrupted_hint="the finished sweeps are kept under "
                                               "{out}/sweeps: run the same command again "
@@ -55,6 +59,7 @@ def run(args) -> int:
 
     t0 = time.perf_counter()
     path = build_report(Path(args.out), grid=args.grid, periods=args.periods,
-                        workers=args.workers, progress=options.progress(args))
+                        workers=args.workers, progress=options.progress(args),
+                        roll=not args.no_roll)
     print(f"wrote {path} in {time.perf_counter() - t0:.0f} s")
     return 0

@@ -17,8 +17,8 @@ def add_parser(sub) -> None:
     p = sub.add_parser(
         "show", help=HELP,
         description="Print a satellite's parameters in the units --set and --scale take "
-                    "(E1, E2 in N/mm^2, altitude in km, else SI), then its initial state and "
-                    "derived orbit (SI).")
+                    "(E1, E2 in N/mm^2, altitude in km, else SI), the end-body moments of "
+                    "the 3-D models, then its initial state and derived orbit (SI).")
     options.add_satellite(p)
     options.add_overrides(p)
     p.set_defaults(func=run)
@@ -55,6 +55,15 @@ def run(args) -> int:
     print(f"  options: orbit {sat.orbit}, j2 {str(sat.j2).lower()}, atmosphere "
           f"{sat.atmosphere}, epoch {sat.epoch}"
           + ("" if sat.f107 is not None else " (f107, f107a, ap unset: the bundled table)"))
+    from tethersim.model.inertia import AXES, body_inertias
+    moments = body_inertias(sat)
+    print(f"  end-body moments of the 3-D models (--set inertia=boxes|points, "
+          f"--set I1=roll,pitch,yaw or none): inertia {sat.inertia}")
+    for k in (1, 2):
+        src = ("set" if getattr(sat, f"I{k}") is not None else
+               "point mass" if sat.inertia == "points" else "box, thesis Eq 4.4")
+        print(f"  I{k:<11} {','.join(exact(moments[f'I{k}_{a}']) for a in AXES):<22} "
+              f"kg m^2 [roll,pitch,yaw] ({src})")
     print("  initial state (SI):")
     names = ("delta_x [m]", "delta_y [m]", "theta [rad]", "delta_x_dot [m/s]",
              "delta_y_dot [m/s]", "theta_dot [rad/s]")

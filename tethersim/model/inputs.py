@@ -6,8 +6,9 @@ name, so a model with another layout (3-D, free orbit) needs no code here
 beyond the values it adds:
 
 * ``I1_roll``, ``I1_pitch``, ``I1_yaw``, ``I2_*`` [kg m²]: principal moments of the
-  tip-mass (1) and bus (2) boxes, thesis Eq 4.4 (I = m · 2A / 12 about every
-  axis) unless the satellite sets ``inertia = "points"`` (all zero);
+  tip-mass (1) and bus (2), tethersim.model.inertia: thesis Eq 4.4 boxes
+  (I = m · 2A / 12 about every axis), zero with ``inertia = "points"``, or the
+  satellite's ``I1``, ``I2`` overrides;
 * ``J2`` (0 unless the satellite asks for it) and ``R_E`` [m];
 * the out-of-plane initial state (δz, roll φ, yaw ψ and rates), zero unless set;
 * for a free orbit, the perigee at t = 0: r = r_p = R_E + altitude, ν = 0, ṙ = 0
@@ -23,18 +24,19 @@ import numpy as np
 
 from tethersim.model.air.vector import air_vector as _air_vector
 from tethersim.model.constants import J2_EARTH, MU_EARTH, R_EARTH
+from tethersim.model.inertia import body_inertias
 from tethersim.model.options import air_model
 from tethersim.model.registry import get_model
 from tethersim.model.satellite import Satellite, parameters
 
 
 def box_inertias(sat: Satellite) -> dict:
-    """Principal moments [kg m²] of the tip-mass and bus boxes (thesis Eq 4.4)."""
-    if getattr(sat, "inertia", "boxes") == "points":
-        return {f"I{k}_{axis}": 0.0 for k in (1, 2) for axis in ("roll", "pitch", "yaw")}
-    i1, i2 = sat.m1 * 2 * sat.A1 / 12, sat.m2 * 2 * sat.A2 / 12
-    return {f"I{k}_{axis}": v for k, v in ((1, i1), (2, i2))
-            for axis in ("roll", "pitch", "yaw")}
+    """Principal moments [kg m²] of the tip-mass and bus (tethersim.model.inertia).
+
+    Thesis Eq 4.4 boxes by default; zero with ``inertia = "points"``; a body's
+    ``I1`` / ``I2`` override wins.  Keys ``I1_roll`` ... ``I2_yaw``.
+    """
+    return body_inertias(sat)
 
 
 def model_values(sat: Satellite) -> dict:

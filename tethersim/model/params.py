@@ -65,8 +65,10 @@ PARAMETERS = {
                 "quiet to a severe storm"),
 }
 # options that are not numbers: name -> (file key, allowed values or kind, meaning); --set
-# takes them as text (orbit=free, j2=true, atmosphere=nrlmsise00, epoch=2017-06-23T00:00:00)
+# takes them as text (orbit=free, j2=true, atmosphere=nrlmsise00, epoch=2017-06-23T00:00:00,
+# inertia=points, I1=1,2,3 or I1=none: three moments roll,pitch,yaw, or back to `inertia`)
 Option = namedtuple("Option", "key allowed meaning")
+_MOMENTS = "roll,pitch,yaw in kg m^2 (three numbers), or none"
 OPTIONS = {
     "orbit": Option("orbit.orbit", ("circular", "free"), "orbit mode"),
     "j2": Option("orbit.j2", ("true", "false"), "Earth's J2 in the free orbit"),
@@ -74,6 +76,10 @@ OPTIONS = {
     "epoch": Option("atmosphere.epoch", "ISO UTC date-time", "instant of t = 0 (MSIS)"),
     "density": Option("environment.density", ("uniform", "per-body"),
                       "one density, or each body's own altitude"),
+    "inertia": Option("satellite.inertia", ("boxes", "points"),
+                      "end-body moments of the 3-D models: Eq 4.4 boxes or point masses"),
+    "I1": Option("satellite.I1", _MOMENTS, "tip-mass principal moments (3-D models)"),
+    "I2": Option("satellite.I2", _MOMENTS, "bus principal moments (3-D models)"),
 }
 _OPTION_FIELDS = {"density": "density_mode"}  # option name -> Satellite field, where they differ
 # name -> (unit at the edge, SI value per edge unit): the table's conversion columns
@@ -101,9 +107,25 @@ def option_value(name: str, text: str):
     """The value of option ``name`` (OPTIONS) from its text; one-line error if not allowed."""
     o = OPTIONS[name]
     value = text.strip()
-    if isinstance(o.allowed, tuple) and value.lower() not in o.allowed:
-        raise ValueError(f"--set {name}={_shown(text)}: allowed values {', '.join(o.allowed)}")
-    return value.lower() == "true" if name == "j2" else value
+    if o.allowed is _MOMENTS:
+        return _moments(name, text)
+    if isinstance(o.allowed, tuple):
+        if value.lower() not in o.allowed:
+            raise ValueError(f"--set {name}={_shown(text)}: allowed values "
+                             f"{', '.join(o.allowed)}")
+        value = value.lower()
+    return value == "true" if name == "j2" else value
+
+
+def _moments(name: str, text: str):
+    """'1,2,3' -> (1.0, 2.0, 3.0); 'none' -> None (the satellite's ``inertia`` again)."""
+    if text.strip().lower() == "none":
+        return None
+    parts = text.split(",")
+    what = f"--set {name}={_shown(text)}"
+    if len(parts) != 3:
+        raise ValueError(f"{what}: expected {_MOMENTS}, e.g. {name}=10,12,3")
+    return tuple(_float(part.strip(), what) for part in parts)
 
 
 def unit(name: str) -> str:

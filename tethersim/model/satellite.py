@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 from dataclasses import asdict, dataclass, field, fields, replace
 
-from tethersim.model import atmosphere, options
+from tethersim.model import atmosphere, inertia, options
 from tethersim.model.constants import CD_DEFAULT, MU_EARTH, OMEGA_EARTH, R_EARTH
 
 # fields that must be > 0 and >= 0 (units in UNITS)
@@ -20,8 +20,11 @@ DENSITY_MODES = ("uniform", "per-body")
 # out-of-plane initial state of the 3-D models (docs/roll.md): name -> unit
 INITIAL_3D = {"delta_z": "m", "phi": "rad", "psi": "rad", "delta_z_dot": "m/s",
               "phi_dot": "rad/s", "psi_dot": "rad/s"}
+# largest |roll| of the 3-D models' domain [deg]: the roll-pitch-yaw angles are singular at
+# 90 deg; why 80 (the kinematic matrix's conditioning): tethersim.engine.domain
+ROLL_LIMIT_DEG = 80.0
 _OPTIONAL = ("allow_implausible", "orbit", "j2", "eccentricity", "reentry_altitude", "atmosphere",
-             "epoch", "f107", "f107a", "ap", "density_scale")
+             "epoch", "f107", "f107a", "ap", "density_scale", "inertia", "I1", "I2")
 UNITS = {"m1": "kg", "m2": "kg", "m3": "kg", "A1": "m^2", "A2": "m^2", "A3": "m^2",
          "a": "m", "b": "m", "l10": "m", "l20": "m", "E1": "N", "E2": "N",
          "c1": "N s/m", "c2": "N s/m", "CD": "1", "altitude": "m"}
@@ -66,12 +69,19 @@ class Satellite:
         "per-body" (each body at its own altitude).
     initial_3d : dict
         The out-of-plane start of the 3-D models, {name: value} with names in
-        ``INITIAL_3D`` (δz [m], roll φ [rad], yaw ψ [rad] and their rates);
-        missing names are zero, and the planar models ignore it.
+        ``INITIAL_3D`` (δz [m], roll φ [rad], |φ| <= ``ROLL_LIMIT_DEG``, yaw ψ [rad]
+        and their rates); missing names are zero, and the planar models ignore it.
     orbit, j2, eccentricity, reentry_altitude, atmosphere, epoch, f107, f107a, ap, density_scale
         Orbit and air options (tethersim.model.options): circular or free orbit, J2,
         eccentricity (altitude at perigee), re-entry altitude [m], air model,
         epoch, solar and geomagnetic indices, density scale.
+    inertia : str
+        End-body moments of the 3-D models (tethersim.model.inertia): ``"boxes"``
+        (thesis Eq 4.4, I = m · 2A / 12 about every axis) or ``"points"`` (zero).
+    I1, I2 : tuple or None
+        (roll, pitch, yaw) principal moments [kg m²] of the tip-mass and the bus,
+        overriding ``inertia`` for that body; each >= 0 and <= the sum of the
+        other two.  The planar models ignore ``inertia``, ``I1``, ``I2``.
     """
 
     name: str
@@ -107,6 +117,10 @@ class Satellite:
     f107a: float | None = None  # sfu
     ap: float | None = None
     density_scale: float = 1.0
+    # end-body inertias of the 3-D models (tethersim.model.inertia), kg m^2
+    inertia: str = "boxes"
+    I1: tuple | None = None
+    I2: tuple | None = None
 
     def __post_init__(self):
         for f in fields(self):
@@ -166,6 +180,7 @@ class Satellite:
                     f"body (within {reach:.4g} m of the COM) stays inside "
                     f"{h_min / 1e3:g}-{h_max / 1e3:g} km ({self.atmosphere})")
         options.check(self)
+        inertia.check(self)
         if not isinstance(self.allow_implausible, bool):
             raise SatelliteError(f"{self._where()}allow_implausible = {self.allow_implausible!r}: "
                                  f"must be true or false")
@@ -189,10 +204,11 @@ class Satellite:
             if not math.isfinite(v):
                 raise SatelliteError(f"{self._where()}initial_3d[{k!r}] = {given[k]!r}: must "
                                      f"be a finite number ({INITIAL_3D[k]})")
-            if k == "phi" and not abs(v) < math.pi / 2:
+            if k == "phi" and not abs(v) <= math.radians(ROLL_LIMIT_DEG):
                 raise SatelliteError(f"{self._where()}phi0 = {math.degrees(v):g} deg: allowed "
-                                     f"range -90 to 90 deg, exclusive (the roll-pitch-yaw "
-                                     f"angles are singular at |phi| = 90 deg)")
+                                     f"range -{ROLL_LIMIT_DEG:g} to {ROLL_LIMIT_DEG:g} deg (the "
+                                     f"3-D models' domain: the roll-pitch-yaw angles are "
+                                     f"singular at |phi| = 90 deg, docs/limits.md)")
             if k == "psi" and not -math.pi <= v <= math.pi:
                 raise SatelliteError(f"{self._where()}psi0 = {math.degrees(v):g} deg: allowed "
                                      f"range -180 to 180 deg")

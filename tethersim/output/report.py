@@ -6,8 +6,11 @@ converged; force breakdowns (Figs 5.7-5.20); six stability maps (Figs 5.13,
 5.21-5.23, 5.27-5.28), each converged, faithful and predicted from the
 eigenvalues, with their agreement; the torque balance E2/E1 vs b/a; and a
 table that sets each surviving statement of the thesis (shared/thesis/facts.md)
-beside what this project computes; and whether the design works in a real orbit
-(free-orbit lifetime, settling, trim across the solar cycle: docs/feasibility.md).
+beside what this project computes; whether the design works in a real orbit
+(free-orbit lifetime, settling, trim across the solar cycle: docs/feasibility.md);
+and whether the balloon makes the satellite resist rolling (the 3-D models:
+linear roll and yaw modes against the boom alone, two disturbed runs;
+docs/roll.md).
 
 The sweeps are written to resumable stores under OUT/sweeps, so an
 interrupted report continues where it stopped when run again.
@@ -30,6 +33,7 @@ from tethersim.output.feasibility_section import section_feasibility
 from tethersim.output.page import Page, write_html
 from tethersim.output.page import pre as _pre
 from tethersim.output.page import table as _table
+from tethersim.output.roll_section import section_roll
 
 SATS = ("satI", "satII", "dumbsat")
 
@@ -329,8 +333,33 @@ def section_facts(page: Page) -> None:
 
 
 def build_report(out, grid: int = 41, periods: float = 50.0, workers=None,
-                 progress: bool | None = None, log=print) -> Path:
-    """Run every section and write OUT/index.html; return its path."""
+                 progress: bool | None = None, log=print, roll: bool = True) -> Path:
+    """Run every section and write OUT/index.html; return its path.
+
+    Parameters
+    ----------
+    out : path-like
+        Output folder (index.html, img/, sweeps/, feasibility/).
+    grid : int, optional
+        Points per stability-map axis, 2..201.
+    periods : float, optional
+        Orbits per run of the nominal runs, forces, maps and (at most 40) the
+        roll runs.
+    workers : int, optional
+        Threads of the sweeps.
+    progress : bool, optional
+        Progress bars of the sweeps (None: when the terminal shows them).
+    log : callable, optional
+        Called with one line as each section starts.
+    roll : bool, optional
+        Include the roll section (the 3-D models; their first compile takes a
+        minute or two on a cold cache).
+
+    Returns
+    -------
+    Path
+        OUT/index.html.
+    """
     if isinstance(grid, bool) or not isinstance(grid, int) or not 2 <= grid <= 201:
         raise ValueError(f"grid = {grid!r}: must be an integer in 2..201 (points per axis)")
     out = Path(out)
@@ -342,6 +371,8 @@ def build_report(out, grid: int = 41, periods: float = 50.0, workers=None,
              ("force breakdowns", lambda: section_forces(page, periods)),
              ("moduli only", lambda: section_moduli_only(page)),
              ("feasibility in a real orbit", lambda: section_feasibility(page, periods, workers))]
+    if roll:
+        steps.append(("roll and yaw (3-D)", lambda: section_roll(page, periods)))
     maps = []
     for title, fn in steps:
         t0 = time.perf_counter()

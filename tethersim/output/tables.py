@@ -140,6 +140,8 @@ def to_xarray(res: SimResult, attrs: dict | None = None):
     for k, v in res.satellite.to_dict().items():
         if isinstance(v, (int, float, str)):
             meta[f"sat_{k}"] = v
+        elif k in ("I1", "I2"):  # end-body moments [roll, pitch, yaw] kg m^2, where set
+            meta[f"sat_{k}"] = np.asarray(v, dtype=float)
     meta.update(attrs or {})
     return xr.Dataset(data, coords={"t": ("t", res.t, {"units": "s"})}, attrs=meta)
 

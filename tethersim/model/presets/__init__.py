@@ -3,7 +3,9 @@
 File layout (units in the key name where they are not SI)::
 
     name = "SatI"
-    [satellite]    m1 m2 m3 [kg]  A1 A2 A3 [m^2]  a b [m]
+    [satellite]    m1 m2 m3 [kg]  A1 A2 A3 [m^2]  a b [m]; optional, for the 3-D models:
+                   inertia = "boxes" | "points" (thesis Eq 4.4 boxes, or point masses),
+                   I1 = [roll, pitch, yaw], I2 = [...] [kg m^2] (tip-mass, bus overrides)
     [tethers]      l10 l20 [m]  E1_N_per_mm2 E2_N_per_mm2 [N/mm^2]  c1 c2 [N s/m]
     [orbit]        altitude_km [km]; optional: orbit = "circular" | "free", j2 = true | false,
                    eccentricity [-] (altitude_km is then the perigee), reentry_altitude_km [km]
@@ -52,9 +54,11 @@ INITIAL_3D_KEYS = {"delta_z": ("m", "delta_z", 1.0), "phi0_deg": ("deg", "phi", 
                    "phi_dot": ("rad/s", "phi_dot", 1.0), "psi_dot": ("rad/s", "psi_dot", 1.0)}
 # optional keys of required tables
 OPTIONAL_KEYS = {"orbit": {"orbit": "circular | free", "j2": "true | false",
-                           "eccentricity": "1", "reentry_altitude_km": "km"}}
+                           "eccentricity": "1", "reentry_altitude_km": "km"},
+                 "satellite": {"inertia": "boxes | points", "I1": "kg m^2", "I2": "kg m^2"}}
 _TEXT = {"density": str, "orbit": str, "atmosphere": str, "epoch": str, "j2": bool,
-         "allow_implausible": bool}
+         "allow_implausible": bool, "inertia": str}
+_ARRAYS = ("I1", "I2")  # [roll, pitch, yaw]: checked by the Satellite (tethersim.model.inertia)
 PRESET_NAMES = {"sati": "satI.toml", "satii": "satII.toml", "dumbsat": "dumbsat.toml"}
 N_PER_MM2_TO_N = 1e6 * TETHER_AREA  # (N/mm^2 -> N/m^2) x 1 mm^2 = 1
 
@@ -104,7 +108,9 @@ def from_dict(doc: dict, where: str = "<dict>", allow_implausible: bool = False)
                 if table in OPTIONAL or key in extra:
                     continue
                 raise SatelliteError(f"{where}: missing key {table}.{key} ({unit})")
-            if key in _TEXT:
+            if key in _ARRAYS:
+                vals[key] = sub[key]
+            elif key in _TEXT:
                 if not isinstance(sub[key], _TEXT[key]):
                     kind = "true or false" if _TEXT[key] is bool else f"a string ({unit})"
                     raise SatelliteError(f"{where}: {table}.{key} = {sub[key]!r}: must be {kind}")
@@ -137,11 +143,12 @@ def from_dict(doc: dict, where: str = "<dict>", allow_implausible: bool = False)
 
 
 def _options(vals: dict) -> dict:
-    """The orbit and air options a document set (SI; absent keys keep the defaults)."""
+    """The orbit, air and inertia options a document set (SI; absent keys keep the defaults)."""
     out = {k: vals[k] for k in ("orbit", "j2", "eccentricity", "atmosphere", "epoch", "f107",
                                 "f107a", "ap", "density_scale") if k in vals}
     if "reentry_altitude_km" in vals:
         out["reentry_altitude"] = vals["reentry_altitude_km"] * 1e3
+    out.update({k: vals[k] for k in ("inertia", *_ARRAYS) if k in vals})
     return out
 
 

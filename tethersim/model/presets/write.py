@@ -29,6 +29,7 @@ def dumps(sat: Satellite, notes: dict | None = None, header: str = "") -> str:
     tables["orbit"].update({k: changed[k] for k in ("orbit", "j2", "eccentricity") if k in changed})
     if "reentry_altitude" in changed:
         tables["orbit"]["reentry_altitude_km"] = sat.reentry_altitude / 1e3
+    tables["satellite"].update({k: changed[k] for k in ("inertia", "I1", "I2") if k in changed})
     air = {k: changed[k] for k in ("atmosphere", "epoch", "f107", "f107a", "ap", "density_scale")
            if k in changed}
     if air:
@@ -41,6 +42,8 @@ def dumps(sat: Satellite, notes: dict | None = None, header: str = "") -> str:
             # 15 significant digits: 30.0, not the 29.999999999999996 of degrees(pi/6)
             if isinstance(v, bool):
                 text = "true" if v else "false"
+            elif isinstance(v, (tuple, list)):  # I1, I2: [roll, pitch, yaw]
+                text = "[" + ", ".join(repr(float(x)) for x in v) + "]"
             else:
                 text = f'"{v}"' if isinstance(v, str) else repr(float(f"{float(v):.15g}"))
             note = notes.get(key) or notes.get(key.split("_N_per")[0])

@@ -1,5 +1,8 @@
-"""Figures of docs/torque-balance.md, the README and the slow (simulated) headline figures."""
+"""Figures of docs/torque-balance.md, the README, the slow (simulated) headline figures and
+the 3-D roll limit (docs/limits.md, docs/three-d.md)."""
 from __future__ import annotations
+
+import math
 
 from tethersim.output.docnumbers import quantities as q
 from tethersim.output.docnumbers.check import Figure
@@ -128,3 +131,39 @@ FIGURES += [Figure(README, ("±0.05 rad after ",), "run_settling_orbits", slow=T
                    slow=True)]
 FIGURES += [Figure(H, (_MOD, "| mean pitch [rad] |") + (" | ",) * i, f"hl_mean_{c}", slow=True)
             for i, c in enumerate(("E1-10%", "E1+10%", "E2-10%", "E2+10%"))]
+
+# --- the 3-D models' roll limit (tethersim.engine.domain; docs/limits.md, docs/three-d.md) --
+LIMITS, THREE_D = "docs/limits.md", "docs/three-d.md"
+
+
+def _roll_conditioning(deg: float) -> float:
+    """2-norm condition number (1 + sin|φ|)/cos φ of the 3-1-2 kinematic matrix."""
+    phi = math.radians(deg)
+    return (1 + math.sin(abs(phi))) / math.cos(phi)
+
+
+def _roll_limit() -> float:
+    from tethersim.model.satellite import ROLL_LIMIT_DEG
+
+    return ROLL_LIMIT_DEG
+
+
+QUANTITIES.update({
+    "roll_limit": _roll_limit,
+    "roll_limit_band": lambda: 90.0 - _roll_limit(),
+    "roll_cond_limit": lambda: _roll_conditioning(_roll_limit()),
+    "roll_cond_89": lambda: _roll_conditioning(89.0),
+})
+FIGURES += [
+    Figure(LIMITS, ("a 3-D model's roll passes ",), "roll_limit"),
+    Figure(LIMITS, ("a 3-D model's roll passes ", "could have come within "),
+           "roll_limit_band"),
+    Figure(LIMITS, ("(1 + sin\\|φ\\|)/cos φ is ",), "roll_cond_limit"),
+    Figure(LIMITS, ("(1 + sin\\|φ\\|)/cos φ is ", "at 80° and "), "roll_cond_89"),
+    Figure(LIMITS, ("a boom within ",), "roll_limit_band"),
+    Figure(THREE_D, ("a run whose roll passes ",), "roll_limit"),
+    Figure(THREE_D, ("(1 + sin|φ|)/cos φ is ",), "roll_cond_limit"),
+    Figure(THREE_D, ("a boom rolled that far is within ",), "roll_limit_band"),
+    Figure(THREE_D, ("|φ| is guarded at ",), "roll_limit"),
+]
+FIGURES += [Figure(README, ("a 3-D run\nalso when its roll passes ",), "roll_limit")]

@@ -174,33 +174,48 @@ MAP_POINTS = ((0.004, 10.7), (0.01, 10.7), (0.004, 5.0), (0.004, 20.0), (0.01, 2
 OUT_OF_PLANE_START = {"phi": math.radians(5.0), "psi": math.radians(5.0), "delta_z": 1.0}
 
 
+# runs that leave the 3-D domain (|φ| > 80°, tethersim.engine.domain) before 50 orbits: the
+# doc prints the orbit where they left in the θ column and "—" as φ end
+LEFT_DOMAIN = {((0.01, 20.0), "3d"), ((0.01, 20.0), "3d-objective-damper")}
+
+
 @cache
 def _map_run(E1: float, ratio: float, model: str) -> tuple:
     """(pitch half-range, largest |φ| of the run, largest |φ| in the last 5 orbits) [rad]
-    of 50 orbits from the preset's start (θ0 = 30°), out of the plane for a 3-D model."""
+    of 50 orbits from the preset's start (θ0 = 30°), out of the plane for a 3-D model; a
+    run that left the domain gives (orbit where it left, largest |φ|, NaN)."""
     s = with_values(_sat(), {"E1": E1, "E2": E1 * ratio})
     s = s.replace(initial_3d=OUT_OF_PLANE_START if model.startswith("3d") else {})
     res = simulate(s, periods=50, model=model, progress=False)
+    left = ((E1, ratio), model) in LEFT_DOMAIN
+    if left != (res.status == "left-domain"):  # the doc's table says otherwise: fail there
+        return math.nan, math.nan, math.nan
     late = res.t > res.t[-1] - 5 * s.period
     th = res.theta[late]
     if not model.startswith("3d"):
         return float((th.max() - th.min()) / 2), 0.0, 0.0
     phi = np.abs(res.series("phi"))
+    if left:
+        return float(res.t[-1] / s.period), float(phi.max()), math.nan
     return float((th.max() - th.min()) / 2), float(phi.max()), float(phi[late].max())
 
 
 _M = "| E1 [N/mm²], E2/E1 | planar θ | `3d` θ | `3d` φ end |"  # start of the header
-MAP_COLUMNS = (
-    lambda e, r: _map_run(e, r, "derived")[0],
-    lambda e, r: _map_run(e, r, "3d")[0],
-    lambda e, r: _map_run(e, r, "3d")[2],
-    lambda e, r: _map_run(e, r, "objective-damper")[0],
-    lambda e, r: _map_run(e, r, "3d-objective-damper")[0],
-    lambda e, r: _map_run(e, r, "3d-objective-damper")[1],
-    lambda e, r: _map_run(e, r, "3d-objective-damper")[2],
+MAP_COLUMNS = (  # (model, item of _map_run)
+    ("derived", 0), ("3d", 0), ("3d", 2), ("objective-damper", 0),
+    ("3d-objective-damper", 0), ("3d-objective-damper", 1), ("3d-objective-damper", 2),
 )
 for _i, (_e, _r) in enumerate(MAP_POINTS):
-    for _j, _col in enumerate(MAP_COLUMNS):
+    for _j, (_model, _item) in enumerate(MAP_COLUMNS):
+        if _item == 2 and ((_e, _r), _model) in LEFT_DOMAIN:
+            continue  # printed "—"
         _key = f"roll_map_{_i}_{_j}"
-        QUANTITIES[_key] = (lambda col, e, r: lambda: col(e, r))(_col, _e, _r)
-        FIGURES.append(Figure(R, (_M, f"| {_e:g}, {_r:g} | ") + (" | ",) * _j, _key))
+        QUANTITIES[_key] = (lambda e, r, m, k: lambda: _map_run(e, r, m)[k])(_e, _r, _model,
+                                                                             _item)
+        _left = ("left in orbit ",) if ((_e, _r), _model) in LEFT_DOMAIN and _item == 0 else ()
+        FIGURES.append(Figure(R, (_M, f"| {_e:g}, {_r:g} | ") + (" | ",) * _j + _left, _key))
+FIGURES += [
+    Figure(R, ("past 80° in orbit ",), "roll_map_4_4"),
+    Figure(R, ("past 80° in orbit ", "objective damper; "), "roll_map_4_5"),
+    Figure(R, ("first sample beyond) and orbit ",), "roll_map_4_1"),
+]
