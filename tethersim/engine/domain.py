@@ -28,7 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from tethersim.engine.evaluate import tether_margin_series
+from tethersim.engine.evaluate import domain_scan
 from tethersim.engine.integrators.select import call
 from tethersim.model.satellite import ROLL_LIMIT_DEG
 
@@ -98,8 +98,13 @@ def first_violation(res, altitude=None) -> Violation | None:
     n = res.t.size
     if n == 0:
         return None
-    finite = np.all(np.isfinite(res.states), axis=1)
-    last = int(np.argmin(finite)) if not finite.all() else n  # before the first NaN sample
+    names = lay.state
+    # one compiled pass: the first non-finite sample, balloon too far, tether over-stretched
+    last, i_far, d_far, i_over, j_over, s_over = call(
+        domain_scan, lay.index, np.ascontiguousarray(res.states), res.parameters,
+        names.index("delta_x"), names.index("delta_y"),
+        names.index("delta_z") if "delta_z" in names else -1, sat.l10, sat.l20,
+        reach(sat) ** 2, MAX_STRETCH)
     candidates = []
     h_min = getattr(sat, "reentry_altitude", REENTRY_ALTITUDE)
     # a circular orbit is held at its altitude (checked at load time): only a free orbit falls
@@ -117,32 +122,21 @@ def first_violation(res, altitude=None) -> Violation | None:
         candidates.append(Violation(i, t, "re-entered",
                                     f"re-entered: altitude {h[i] / 1e3:.1f} km fell below "
                                     f"{h_min / 1e3:g} km at t = {t:.6g} s ({t / 3600:.3g} h)"))
-    names = lay.state
-    dist2 = res.x[:last] ** 2 + res.y[:last] ** 2
-    if "delta_z" in names:
-        dist2 = dist2 + res.series("delta_z")[:last] ** 2
-    far = np.nonzero(dist2 > reach(sat) ** 2)[0]
-    if far.size:
-        i = int(far[0])
+    if i_far >= 0:
+        i = i_far
         candidates.append(Violation(i, float(res.t[i]), "left-domain",
-                                    f"left the model's domain: balloon {np.sqrt(dist2[i]):.4g} m "
+                                    f"left the model's domain: balloon {np.sqrt(d_far):.4g} m "
                                     f"from the COM at t = {res.t[i]:.6g} s (allowed <= "
                                     f"{reach(sat):.4g} m, {BALLOON_REACH:g} x the longest "
                                     f"tether path)"))
     if "phi" in names:
         candidates += _roll_violation(res, last)
-    if last:
-        g = call(tether_margin_series, lay.index, np.ascontiguousarray(res.states[:last]),
-                 res.parameters)
-        strain = np.column_stack([g[:, 0] / sat.l10, g[:, 1] / sat.l20]) + 1.0
-        over = np.nonzero(np.any(strain > MAX_STRETCH, axis=1))[0]
-        if over.size:
-            i = int(over[0])
-            j = int(np.argmax(strain[i]))
-            candidates.append(Violation(i, float(res.t[i]), "left-domain",
-                                        f"left the model's domain: tether {j + 1} stretched to "
-                                        f"{strain[i, j]:.3g} x its rest length at t = "
-                                        f"{res.t[i]:.6g} s (allowed <= {MAX_STRETCH:g} x)"))
+    if i_over >= 0:
+        i = i_over
+        candidates.append(Violation(i, float(res.t[i]), "left-domain",
+                                    f"left the model's domain: tether {j_over + 1} stretched to "
+                                    f"{s_over:.3g} x its rest length at t = "
+                                    f"{res.t[i]:.6g} s (allowed <= {MAX_STRETCH:g} x)"))
     return min(candidates, key=lambda v: v.index) if candidates else None
 
 

@@ -7,6 +7,8 @@ coordinates, families) comes from its generated module.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numba import literally, njit
 from numba.extending import overload
@@ -131,3 +133,45 @@ def tether_margin_series(model, Y, p):
     for i in range(n):
         model_tether_margins(model, Y[i], p, out[i])
     return out
+
+
+@njit(cache=True, nogil=True)
+def domain_scan(model, Y, p, ix, iy, iz, l10, l20, reach2, max_stretch):
+    """One pass over the samples for engine/domain.py (the same arithmetic as numpy's).
+
+    Returns
+    -------
+    tuple
+        (last: samples before the first non-finite one; first sample with the
+        balloon's squared distance δx² + δy² (+ δz² when iz >= 0) > reach2, or -1,
+        and that distance²; first sample with a tether's λ_j / l_j0 > max_stretch,
+        or -1, the tether (0 or 1, the more stretched) and its λ / l0).
+    """
+    literally(model)
+    n, m = Y.shape
+    last = n
+    for i in range(n):
+        for k in range(m):
+            if not math.isfinite(Y[i, k]):
+                last = i
+                break
+        if last < n:
+            break
+    i_far, d_far = -1, 0.0
+    for i in range(last):
+        d = Y[i, ix] ** 2 + Y[i, iy] ** 2
+        if iz >= 0:
+            d = d + Y[i, iz] ** 2
+        if d > reach2:
+            i_far, d_far = i, d
+            break
+    g = np.empty(2)
+    i_over, j_over, s_over = -1, 0, 0.0
+    for i in range(last):
+        model_tether_margins(model, Y[i], p, g)
+        s0 = g[0] / l10 + 1.0
+        s1 = g[1] / l20 + 1.0
+        if s0 > max_stretch or s1 > max_stretch:
+            i_over, j_over, s_over = i, (0 if s0 >= s1 else 1), max(s0, s1)
+            break
+    return last, i_far, d_far, i_over, j_over, s_over
