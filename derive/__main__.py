@@ -10,7 +10,8 @@ from .kinematics import planar_kinematics
 from .models import DEFINITIONS, FAMILY_ORDER
 from .pipeline import derive
 from .symbols import state_substitution
-from .three_d import codegen3d
+from .three_d import codegen3d, free3d_codegen
+from .three_d.free3d import FREE3D_DEFINITIONS
 from .three_d.models3d import DEFINITIONS_3D
 from .three_d.pipeline3d import derive3d
 
@@ -43,9 +44,13 @@ def main(argv=None) -> int:
     free = orbit_codegen.write_free_models(out)  # free orbit (issue 12), own layout
     for fname in free:
         print(f"  {fname[:-3].replace('_', '-'):<17} -> {out.name}/{fname}")
+    free3d = free3d_codegen.write_free3d_models(out)  # 3-D on a free orbit, own layout
+    for fname, defn in zip(free3d, FREE3D_DEFINITIONS):
+        print(f"  {defn.name:<24} -> {out.name}/{fname}")
     from .orbit import FREE_DEFINITIONS
-    # one registry of every model, in one order: the thesis variants, 3-D, free orbit
-    every = tuple(DEFINITIONS) + tuple(DEFINITIONS_3D) + tuple(FREE_DEFINITIONS)
+    # one registry of every model, in one order: the thesis variants, 3-D, free orbit, 3-D free
+    every = (tuple(DEFINITIONS) + tuple(DEFINITIONS_3D) + tuple(FREE_DEFINITIONS)
+             + tuple(FREE3D_DEFINITIONS))
     modules = [codegen.module_filename(d.name)[:-3] for d in every]
     init = ['"""GENERATED FILE - DO NOT EDIT.  Numba kernels of every model, by name.',
             "",
@@ -58,7 +63,7 @@ def main(argv=None) -> int:
             "MODELS = {", *(f"    {d.name!r}: {n}," for d, n in zip(every, modules)), "}", ""]
     (out / "__init__.py").write_text("\n".join(init))
     (out / "dispatch.py").write_text(codegen.dispatch_source(every))
-    print(f"derive: {len(names) + len(names3d) + len(free)} models in "
+    print(f"derive: {len(names) + len(names3d) + len(free) + len(free3d)} models in "
           f"{time.perf_counter() - t0:.1f} s")
     return 0
 

@@ -1,26 +1,33 @@
 """Print a FreeDerivedModel as a numba module (the free-orbit kernels).
 
 Same kernel signatures as the planar modules (derive/codegen.py), on the
-10-float free state (derive/orbit.py FREE_STATE_NAMES):
+free state of the model's layout (:class:`FreeLayout`): 10 floats for the
+planar free models (derive/orbit.py FREE_STATE_NAMES), 16 for the 3-D ones
+(derive/three_d/free3d.py, layout in derive/three_d/free3d_codegen.py):
 
-``rhs(t, y, p, dydt)``         state derivative (q̇, q̈), q = (δx, δy, θ, r, ν)
+``rhs(t, y, p, dydt)``         state derivative (q̇, q̈), q = (offsets, angles, r, ν)
 ``family_forces(y, p, out)``   out[f, k]: generalized force of family f on q_k
 ``jacobi(y, p)``               total energy T + V + taut-tether spring energy [J]
-``jacobian(t, y, p, J)``       ∂(dy/dt)/∂y, 10x10
+``jacobian(t, y, p, J)``       ∂(dy/dt)/∂y
 
-The 5x5 mass matrix couples the orbit (r, ν) with the offsets, so q̈ is not
+The mass matrix couples the orbit (r, ν) with the offsets, so q̈ is not
 printed in closed form: the kernel evaluates M (symmetric positive definite,
 it is the kinetic energy's Hessian) and the right-hand side Q − f, and solves
 with an unrolled LDLᵀ elimination without pivoting (stable for SPD matrices
 and invariant to the very different scales of the ν and δ rows).  The
 Jacobian uses the same factors: with R(y, q̈) = M q̈ + f − Q,
-∂q̈/∂y = −M⁻¹ ∂R/∂y at the current q̈.
+∂q̈/∂y = −M⁻¹ ∂R/∂y at the current q̈.  A layout with an ``axial`` coordinate
+(3-D: ψ) replaces its row and column by the identity when the axial inertia
+is zero (ψ is then no degree of freedom: ψ̈ = 0, docs/three-d.md).
 """
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import dataclass
+
 import sympy as sp
 
-from .codegen import INDENT, _block, _gate, _tether_length_line
+from .codegen import INDENT, NumbaPrinter, _block, _gate, _prepare
 from .orbit import (
     FREE_ACCELERATION_SYMBOLS,
     FREE_PARAMETERS,
@@ -31,116 +38,187 @@ from .orbit import (
     FreeDerivedModel,
     printable,
 )
-
-N_Q = 5
-N_Y = 10
-_X = tuple(sp.Symbol(f"X{k}", real=True) for k in range(N_Q))  # q̈ inside the kernels
+from .symbols import TETHER_LENGTHS
 
 
-def _unpack(indent) -> list:
-    lines = [f"{indent}{n} = y[{i}]" for i, n in enumerate(FREE_STATE_NAMES)]
-    lines += [f"{indent}{p.name} = p[{i}]" for i, p in enumerate(FREE_PARAMETERS)]
-    lines += [f"{indent}sin_theta = math.sin(theta)", f"{indent}cos_theta = math.cos(theta)"]
+@dataclass(frozen=True)
+class FreeLayout:
+    """What the printer needs to know of a free model's state and printing.
+
+    Attributes
+    ----------
+    state_names, state_units, state_symbols : tuple
+        The state y (coordinates, then rates).
+    acceleration_symbols, q_symbols : tuple
+        q̈ and the summed generalized forces Q, one per coordinate.
+    parameters : tuple of Parameter
+        The parameter vector p.
+    block : callable
+        ``block(targets, exprs, prefix, indent, op)``: cse'd assignment lines.
+    prepare : callable
+        Code names for parameters and named sin/cos of the angles.
+    angles : tuple of str
+        Angles whose sine and cosine are unpacked as ``sin_<a>``, ``cos_<a>``.
+    geometry : str
+        The module's ``GEOMETRY`` line.
+    sources : tuple of str
+        Header lines naming the derivation's modules.
+    axial : tuple or None
+        (index of ψ in q, condition on p that the axial inertia is zero).
+    """
+
+    state_names: tuple
+    state_units: tuple
+    state_symbols: tuple
+    acceleration_symbols: tuple
+    q_symbols: tuple
+    parameters: tuple
+    block: Callable
+    prepare: Callable
+    angles: tuple
+    geometry: str
+    sources: tuple
+    axial: tuple | None = None
+
+    @property
+    def n_q(self) -> int:
+        return len(self.acceleration_symbols)
+
+
+PLANAR = FreeLayout(FREE_STATE_NAMES, FREE_STATE_UNITS, FREE_STATE_SYMBOLS,
+                    FREE_ACCELERATION_SYMBOLS, FREE_Q_SYMBOLS, FREE_PARAMETERS, _block, _prepare,
+                    ("theta",), 'GEOMETRY = "planar"  # (δx, δy, θ) in the orbit plane',
+                    ("Produced by `make derive` (python -m derive) from derive/orbit.py and",
+                     "derive/orbit_codegen.py; regenerate instead of editing."))
+def _x(lay):
+    return tuple(sp.Symbol(f"X{k}", real=True) for k in range(lay.n_q))  # q̈ inside the kernels
+
+
+def _unpack(lay, indent) -> list:
+    lines = [f"{indent}{n} = y[{i}]" for i, n in enumerate(lay.state_names)]
+    lines += [f"{indent}{p.name} = p[{i}]" for i, p in enumerate(lay.parameters)]
+    for a in lay.angles:
+        lines += [f"{indent}sin_{a} = math.sin({a})", f"{indent}cos_{a} = math.cos({a})"]
     return lines
 
 
-def _pblock(targets, exprs, prefix, indent, op="="):
-    return _block(targets, [printable(e) for e in exprs], prefix, indent, op)
+def _pblock(lay, targets, exprs, prefix, indent, op="="):
+    return lay.block(targets, [printable(e) for e in exprs], prefix, indent, op)
 
 
-def _sum_families(model: FreeDerivedModel, tether):
+def _tether_length_line(lay, j: int, indent: str, defs) -> str:
+    lam = TETHER_LENGTHS[j]
+    return f"{indent}{lam} = {NumbaPrinter().doprint(lay.prepare(defs[lam]))}"
+
+
+def _sum_families(lay, model: FreeDerivedModel, tether):
     fams = [f for f in model.families if f.tether == tether]
-    return tuple(sum(f.Q[k] for f in fams) for k in range(N_Q)), fams
+    return tuple(sum(f.Q[k] for f in fams) for k in range(lay.n_q)), fams
 
 
-def _forces_lines(model, length_defs, targets, prefix, rows=None) -> list:
+def _forces_lines(lay, model, length_defs, targets, prefix, rows=None) -> list:
     """Summed forces (drag ungated, each tether's families inside its taut gate).
 
-    ``rows`` maps a tuple of 5 expressions to the list actually printed
+    ``rows`` maps a tuple of n_q expressions to the list actually printed
     (identity for Q itself, ∂Q/∂y rows for the Jacobian).
     """
     rows = rows or (lambda q: list(q))
     i1, i2 = INDENT, INDENT * 2
-    drag, fams = _sum_families(model, None)
+    drag, fams = _sum_families(lay, model, None)
     out = [f"{i1}# air drag on the three bodies ({fams[0].equation}, co-rotating air)"]
-    out += _pblock(targets, rows(drag), f"{prefix}d", i1)
+    out += _pblock(lay, targets, rows(drag), f"{prefix}d", i1)
     for j in range(2):
-        tq, fams = _sum_families(model, j + 1)
-        out.append(_tether_length_line(j, i1, length_defs))
+        tq, fams = _sum_families(lay, model, j + 1)
+        out.append(_tether_length_line(lay, j, i1, length_defs))
         out.append(f"{i1}if {_gate(j)}:  # tether {j + 1} taut: {', '.join(f.name for f in fams)}")
-        out += _pblock(targets, rows(tq), f"{prefix}t{j + 1}_", i2, op="+=")
+        out += _pblock(lay, targets, rows(tq), f"{prefix}t{j + 1}_", i2, op="+=")
     return out
 
 
-def _mass_matrix_lines(model, indent) -> list:
+def _mass_matrix_lines(lay, model, indent) -> list:
     """M{i}_{j} (upper triangle) of the Lagrange equations (3.26)."""
-    ij = [(i, j) for i in range(N_Q) for j in range(i, N_Q)]
-    return _pblock([f"M{i}_{j}" for i, j in ij], [model.mass_matrix[i, j] for i, j in ij],
+    n = lay.n_q
+    ij = [(i, j) for i in range(n) for j in range(i, n)]
+    return _pblock(lay, [f"M{i}_{j}" for i, j in ij], [model.mass_matrix[i, j] for i, j in ij],
                    "mm", indent)
 
 
-def _factor_lines(indent) -> list:
-    """In-place LDLᵀ of the upper triangle: L{i}_{k} multipliers, M{i}_{j} → U."""
-    out = []
-    for k in range(N_Q):
-        for i in range(k + 1, N_Q):
-            out.append(f"{indent}L{i}_{k} = M{k}_{i} / M{k}_{k}")
-            out += [f"{indent}M{i}_{j} -= L{i}_{k} * M{k}_{j}" for j in range(i, N_Q)]
+def _axial_lines(lay, indent, rows) -> list:
+    """Zero axial inertia: ψ's row and column of M → identity, its right-hand sides ``rows`` → 0."""
+    if lay.axial is None:
+        return []
+    k, condition = lay.axial
+    i2 = indent + INDENT
+    out = [f"{indent}if {condition}:  # no inertia about the boom: psi'' = 0 (docs/three-d.md)"]
+    out += [f"{i2}M{min(i, k)}_{max(i, k)} = 0.0" for i in range(lay.n_q) if i != k]
+    out += [f"{i2}M{k}_{k} = 1.0"] + [f"{i2}{r} = 0.0" for r in rows]
     return out
 
 
-def _solve_lines(b, x, indent) -> list:
+def _factor_lines(lay, indent) -> list:
+    """In-place LDLᵀ of the upper triangle: L{i}_{k} multipliers, M{i}_{j} → U."""
+    n, out = lay.n_q, []
+    for k in range(n):
+        for i in range(k + 1, n):
+            out.append(f"{indent}L{i}_{k} = M{k}_{i} / M{k}_{k}")
+            out += [f"{indent}M{i}_{j} -= L{i}_{k} * M{k}_{j}" for j in range(i, n)]
+    return out
+
+
+def _solve_lines(lay, b, x, indent) -> list:
     """Forward elimination of the names ``b`` (in place), back substitution into ``x``."""
-    out = [f"{indent}{b[i]} -= L{i}_{k} * {b[k]}" for k in range(N_Q) for i in range(k + 1, N_Q)]
-    for i in reversed(range(N_Q)):
-        tail = "".join(f" - M{i}_{j} * {x[j]}" for j in range(i + 1, N_Q))
+    n = lay.n_q
+    out = [f"{indent}{b[i]} -= L{i}_{k} * {b[k]}" for k in range(n) for i in range(k + 1, n)]
+    for i in reversed(range(n)):
+        tail = "".join(f" - M{i}_{j} * {x[j]}" for j in range(i + 1, n))
         out.append(f"{indent}{x[i]} = ({b[i]}{tail}) / M{i}_{i}")
     return out
 
 
-def _accelerations(model, length_defs) -> list:
-    """Lines leaving q̈ in X0..X4: forces, M, factorisation, solve of M q̈ = Q − f."""
-    i1 = INDENT
-    qn = [str(q) for q in FREE_Q_SYMBOLS]
-    out = _forces_lines(model, length_defs, qn, "")
+def _accelerations(lay, model, length_defs) -> list:
+    """Lines leaving q̈ in X0..X{n-1}: forces, M, factorisation, solve of M q̈ = Q − f."""
+    i1, n = INDENT, lay.n_q
+    qn = [str(q) for q in lay.q_symbols]
+    out = _forces_lines(lay, model, length_defs, qn, "")
     out.append(f"{i1}# M q'' = Q - f (Lagrange, Eq 3.26 with r, nu as coordinates)")
-    out += _pblock([f"B{k}" for k in range(N_Q)],
-                   [FREE_Q_SYMBOLS[k] - model.f[k] for k in range(N_Q)], "fb", i1)
-    out += _mass_matrix_lines(model, i1)
-    out += _factor_lines(i1)
-    out += _solve_lines([f"B{k}" for k in range(N_Q)], [str(x) for x in _X], i1)
+    out += _pblock(lay, [f"B{k}" for k in range(n)],
+                   [lay.q_symbols[k] - model.f[k] for k in range(n)], "fb", i1)
+    out += _mass_matrix_lines(lay, model, i1)
+    out += _axial_lines(lay, i1, [f"B{lay.axial[0]}"] if lay.axial else [])
+    out += _factor_lines(lay, i1)
+    out += _solve_lines(lay, [f"B{k}" for k in range(n)], [str(x) for x in _x(lay)], i1)
     return out
 
 
-def rhs_source(model: FreeDerivedModel, length_defs) -> list:
-    i1 = INDENT
+def rhs_source(lay, model: FreeDerivedModel, length_defs) -> list:
+    i1, n = INDENT, lay.n_q
     out = ["@njit(cache=True)", "def rhs(t, y, p, dydt):",
            f'{i1}"""State derivative dy/dt of model {model.name!r} (SI; y and p as in STATE, PARAMETERS)."""']
-    out += _unpack(i1) + _accelerations(model, length_defs)
-    out += [f"{i1}dydt[{k}] = {FREE_STATE_NAMES[k + N_Q]}" for k in range(N_Q)]
-    out += [f"{i1}dydt[{k + N_Q}] = X{k}" for k in range(N_Q)]
+    out += _unpack(lay, i1) + _accelerations(lay, model, length_defs)
+    out += [f"{i1}dydt[{k}] = {lay.state_names[k + n]}" for k in range(n)]
+    out += [f"{i1}dydt[{k + n}] = X{k}" for k in range(n)]
     return out
 
 
-def family_forces_source(model: FreeDerivedModel, length_defs) -> list:
+def family_forces_source(lay, model: FreeDerivedModel, length_defs) -> list:
     i1, i2 = INDENT, INDENT * 2
     out = ["@njit(cache=True)", "def family_forces(y, p, out):",
            f'{i1}"""out[f, k] = generalized force of family FAMILIES[f] on q_k (N, N, N m, N, N m)."""']
-    out += _unpack(i1)
-    out += [_tether_length_line(j, i1, length_defs) for j in range(2)]
+    out += _unpack(lay, i1)
+    out += [_tether_length_line(lay, j, i1, length_defs) for j in range(2)]
     out.append(f"{i1}out[:, :] = 0.0")
     for f_idx, fam in enumerate(model.families):
-        targets = [f"out[{f_idx}, {k}]" for k in range(N_Q)]
+        targets = [f"out[{f_idx}, {k}]" for k in range(lay.n_q)]
         out.append(f"{i1}# {fam.name}: {fam.meaning} ({fam.equation})")
         if fam.tether is None:
-            out += _pblock(targets, fam.Q, f"f{f_idx}_", i1)
+            out += _pblock(lay, targets, fam.Q, f"f{f_idx}_", i1)
         else:
             out.append(f"{i1}if {_gate(fam.tether - 1)}:")
-            out += _pblock(targets, fam.Q, f"f{f_idx}_", i2)
+            out += _pblock(lay, targets, fam.Q, f"f{f_idx}_", i2)
     return out
 
 
-def jacobi_source(model: FreeDerivedModel, length_defs) -> list:
+def jacobi_source(lay, model: FreeDerivedModel, length_defs) -> list:
     i1, i2 = INDENT, INDENT * 2
     out = ["@njit(cache=True)", "def jacobi(y, p):",
            f'{i1}"""Total energy T + V (orbit and attitude) plus taut-tether spring energy [J].',
@@ -148,109 +226,113 @@ def jacobi_source(model: FreeDerivedModel, length_defs) -> list:
            f"{i1}L = T − V has no explicit t, so this is the Jacobi integral: constant with drag",
            f"{i1}and dampers off, otherwise dE/dt = Σ_k (Q_drag + Q_damper)_k q̇_k.",
            f'{i1}"""']
-    out += _unpack(i1)
-    out += _pblock(["h"], [model.energy], "e", i1)
+    out += _unpack(lay, i1)
+    out += _pblock(lay, ["h"], [model.energy], "e", i1)
     for j in range(2):
         pots = [f.potential for f in model.families if f.tether == j + 1 and f.potential is not None]
         if pots:
-            out.append(_tether_length_line(j, i1, length_defs))
+            out.append(_tether_length_line(lay, j, i1, length_defs))
             out.append(f"{i1}if {_gate(j)}:")
-            out += _pblock(["h"], [sum(pots)], f"u{j + 1}_", i2, op="+=")
+            out += _pblock(lay, ["h"], [sum(pots)], f"u{j + 1}_", i2, op="+=")
     out.append(f"{i1}return h")
     return out
 
 
-def _d_dy(exprs, length_defs):
-    """Rows ∂expr/∂y (10 columns), λ_j differentiated through Eqs 3.41-3.42."""
+def _d_dy(lay, exprs, length_defs):
+    """Rows ∂expr/∂y (one column per state), λ_j differentiated through Eqs 3.41-3.42."""
     back = {v: k for k, v in length_defs.items()}
     rows = []
     for e in exprs:
         full = sp.sympify(e).xreplace(length_defs)
-        rows.append([sp.sympify(full.diff(s)).xreplace(back) for s in FREE_STATE_SYMBOLS])
+        rows.append([sp.sympify(full.diff(s)).xreplace(back) for s in lay.state_symbols])
     return rows
 
 
-def jacobian_source(model: FreeDerivedModel, length_defs) -> list:
-    """J = ∂(dy/dt)/∂y (10x10): ∂q̈/∂y = −M⁻¹ (∂(M q̈ + f)/∂y − ∂Q/∂y) at the current q̈."""
-    i1 = INDENT
+def jacobian_source(lay, model: FreeDerivedModel, length_defs) -> list:
+    """J = ∂(dy/dt)/∂y: ∂q̈/∂y = −M⁻¹ (∂(M q̈ + f)/∂y − ∂Q/∂y) at the current q̈."""
+    i1, n, ny = INDENT, lay.n_q, 2 * lay.n_q
     out = ["@njit(cache=True)", "def jacobian(t, y, p, J):",
            f'{i1}"""J[i, j] = ∂(dy_i/dt)/∂y_j of model {model.name!r} (units of y_i/s per y_j)."""']
-    out += _unpack(i1) + _accelerations(model, length_defs)
-    dq = [f"dQ{k}_{c}" for k in range(N_Q) for c in range(N_Y)]
+    out += _unpack(lay, i1) + _accelerations(lay, model, length_defs)
+    dq = [f"dQ{k}_{c}" for k in range(n) for c in range(ny)]
 
     def flat(q):
-        rows = _d_dy(q, length_defs)
-        return [rows[k][c] for k in range(N_Q) for c in range(N_Y)]
+        rows = _d_dy(lay, q, length_defs)
+        return [rows[k][c] for k in range(n) for c in range(ny)]
 
-    out += _forces_lines(model, length_defs, dq, "j", rows=flat)
-    acc = dict(zip(FREE_ACCELERATION_SYMBOLS, _X))
-    lhs_rows = _d_dy([e.xreplace(acc) for e in model.lhs], length_defs)
+    out += _forces_lines(lay, model, length_defs, dq, "j", rows=flat)
+    acc = dict(zip(lay.acceleration_symbols, _x(lay)))
+    lhs_rows = _d_dy(lay, [e.xreplace(acc) for e in model.lhs], length_defs)
     dq_syms = sp.symbols(" ".join(dq), real=True)
-    dR = [lhs_rows[k][c] - dq_syms[N_Y * k + c] for k in range(N_Q) for c in range(N_Y)]
-    out += _pblock([f"R{c}_{k}" for k in range(N_Q) for c in range(N_Y)], dR, "jr", i1)
+    dR = [lhs_rows[k][c] - dq_syms[ny * k + c] for k in range(n) for c in range(ny)]
+    out += _pblock(lay, [f"R{c}_{k}" for k in range(n) for c in range(ny)], dR, "jr", i1)
+    out += _axial_lines(lay, i1, [f"R{c}_{lay.axial[0]}" for c in range(ny)] if lay.axial else [])
     out.append(f"{i1}J[:, :] = 0.0")
-    out += [f"{i1}J[{k}, {k + N_Q}] = 1.0" for k in range(N_Q)]
-    for c in range(N_Y):
-        b = [f"R{c}_{k}" for k in range(N_Q)]
-        x = [f"Z{c}_{k}" for k in range(N_Q)]
-        out += _solve_lines(b, x, i1)
-        out += [f"{i1}J[{k + N_Q}, {c}] = -Z{c}_{k}" for k in range(N_Q)]
+    out += [f"{i1}J[{k}, {k + n}] = 1.0" for k in range(n)]
+    for c in range(ny):
+        b = [f"R{c}_{k}" for k in range(n)]
+        x = [f"Z{c}_{k}" for k in range(n)]
+        out += _solve_lines(lay, b, x, i1)
+        out += [f"{i1}J[{k + n}, {c}] = -Z{c}_{k}" for k in range(n)]
     return out
 
 
-def _index_tables() -> list:
-    w = max(len(n) for n in FREE_STATE_NAMES + tuple(p.name for p in FREE_PARAMETERS))
+def _index_tables(lay) -> list:
+    w = max(len(n) for n in lay.state_names + tuple(p.name for p in lay.parameters))
     lines = ["State vector y (index, name, unit):"]
     lines += [f"  {i:2d}  {n:<{w}}  {u}"
-              for i, (n, u) in enumerate(zip(FREE_STATE_NAMES, FREE_STATE_UNITS))]
+              for i, (n, u) in enumerate(zip(lay.state_names, lay.state_units))]
     lines += ["", "Parameter vector p (index, name, unit, meaning):"]
     lines += [f"  {i:2d}  {p.name:<{w}}  {p.unit:<8}  {p.meaning}"
-              for i, p in enumerate(FREE_PARAMETERS)]
+              for i, p in enumerate(lay.parameters)]
     return lines
 
 
-def _layout_constants() -> list:
-    return [f"STATE = {FREE_STATE_NAMES!r}", f"STATE_UNITS = {FREE_STATE_UNITS!r}",
-            f"PARAMETERS = {tuple(p.name for p in FREE_PARAMETERS)!r}",
-            f"PARAMETER_UNITS = {tuple(p.unit for p in FREE_PARAMETERS)!r}", "",
-            *(f"Y_{n.upper()} = {i}" for i, n in enumerate(FREE_STATE_NAMES)), "",
-            *(f"P_{p.name.upper()} = {i}" for i, p in enumerate(FREE_PARAMETERS))]
+def _layout_constants(lay) -> list:
+    return [f"STATE = {lay.state_names!r}", f"STATE_UNITS = {lay.state_units!r}",
+            f"PARAMETERS = {tuple(p.name for p in lay.parameters)!r}",
+            f"PARAMETER_UNITS = {tuple(p.unit for p in lay.parameters)!r}", "",
+            *(f"Y_{n.upper()} = {i}" for i, n in enumerate(lay.state_names)), "",
+            *(f"P_{p.name.upper()} = {i}" for i, p in enumerate(lay.parameters))]
 
 
-def module_source(model: FreeDerivedModel, length_defs, geometry=()) -> str:
+def module_source(model: FreeDerivedModel, length_defs, geometry=(), lay: FreeLayout = PLANAR) -> str:
+    """Source text of one free-orbit module (kernels, layout, ``CIRCULAR_TWIN``)."""
+    twin = model.definition.circular
     lines = ['"""GENERATED FILE - DO NOT EDIT.', "",
              f"Model {model.name!r}: {model.definition.description}.",
-             "Produced by `make derive` (python -m derive) from derive/orbit.py and",
-             f"derive/orbit_codegen.py; regenerate instead of editing.  sympy {sp.__version__}.",
-             f"Reduces to the planar model {model.definition.circular!r} on a circular orbit.", "",
-             *_index_tables(), '"""', "import math", "", "from numba import njit", "",
+             *lay.sources[:-1], f"{lay.sources[-1]}  sympy {sp.__version__}.",
+             f"Reduces to the model {twin!r} on a circular orbit.", "",
+             *_index_tables(lay), '"""', "import math", "", "from numba import njit", "",
              f"MODEL = {model.name!r}",
              f"DESCRIPTION = {model.definition.description!r}",
-             'GEOMETRY = "planar"  # (δx, δy, θ) in the orbit plane',
+             lay.geometry,
              'ORBIT = "free"  # r and ν are coordinates: gravity, J2 and drag move the orbit',
+             f"CIRCULAR_TWIN = {twin!r}  # the model this one reduces to on a circular orbit",
              f"FAMILIES = {tuple(f.name for f in model.families)!r}",
-             *_layout_constants()]
+             *_layout_constants(lay)]
     for part in (rhs_source, family_forces_source, jacobi_source, jacobian_source):
-        lines += ["", ""] + part(model, length_defs)
+        lines += ["", ""] + part(lay, model, length_defs)
     if geometry:
         lines += ["", ""] + list(geometry)
     return "\n".join(lines) + "\n"
 
 
-def geometry_lines(kin, sub) -> list:
+def geometry_lines(kin, sub, lay: FreeLayout = PLANAR, axes=None, note=None) -> list:
     """tether_margins and body_radii on the free state (positions about r, Eqs 3.10-3.12)."""
-    from .codegen import _CODE_NAMES, NumbaPrinter, _prepare
+    from .codegen import _CODE_NAMES
     from .geometry import geometry_source
     from .symbols import TETHER_REST
 
     printer = NumbaPrinter()
+    axes = (kin.L.x, kin.L.y) if axes is None else axes
 
     def comps(vec):
-        return [printer.doprint(_prepare(vec.dot(axis).subs(sub))) for axis in (kin.L.x, kin.L.y)]
+        return [printer.doprint(lay.prepare(vec.dot(axis).subs(sub))) for axis in axes]
 
-    return geometry_source(_unpack(INDENT), [comps(v) for v in kin.tether_vectors],
+    return geometry_source(_unpack(lay, INDENT), [comps(v) for v in kin.tether_vectors],
                            [_CODE_NAMES[r].name for r in TETHER_REST], [comps(r) for r in kin.positions],
-                           " (Eqs 3.10-3.12 about the orbit radius r)")
+                           note or " (Eqs 3.10-3.12 about the orbit radius r)")
 
 
 def dispatch_source(definitions) -> str:

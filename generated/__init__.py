@@ -15,6 +15,8 @@ from . import three_d_objective_damper
 from . import free
 from . import free_exact_gravity
 from . import free_objective_damper
+from . import three_d_free
+from . import three_d_free_objective_damper
 
 MODELS = {
     'derived': derived,
@@ -27,4 +29,6 @@ MODELS = {
     'free': free,
     'free-exact-gravity': free_exact_gravity,
     'free-objective-damper': free_objective_damper,
+    '3d-free': three_d_free,
+    '3d-free-objective-damper': three_d_free_objective_damper,
 }

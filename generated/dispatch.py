@@ -11,8 +11,10 @@ from . import three_d_objective_damper
 from . import free
 from . import free_exact_gravity
 from . import free_objective_damper
+from . import three_d_free
+from . import three_d_free_objective_damper
 
-MODEL_NAMES = ('derived', 'printed', 'exact-gravity', 'objective-damper', '3d', '3d-exact-gravity', '3d-objective-damper', 'free', 'free-exact-gravity', 'free-objective-damper')
+MODEL_NAMES = ('derived', 'printed', 'exact-gravity', 'objective-damper', '3d', '3d-exact-gravity', '3d-objective-damper', 'free', 'free-exact-gravity', 'free-objective-damper', '3d-free', '3d-free-objective-damper')
 
 
 @njit(cache=True)
@@ -38,6 +40,10 @@ def rhs(model, t, y, p, dydt):
         free_exact_gravity.rhs(t, y, p, dydt)
     elif model == 9:
         free_objective_damper.rhs(t, y, p, dydt)
+    elif model == 10:
+        three_d_free.rhs(t, y, p, dydt)
+    elif model == 11:
+        three_d_free_objective_damper.rhs(t, y, p, dydt)
 
 @njit(cache=True)
 def family_forces(model, y, p, out):
@@ -62,6 +68,10 @@ def family_forces(model, y, p, out):
         free_exact_gravity.family_forces(y, p, out)
     elif model == 9:
         free_objective_damper.family_forces(y, p, out)
+    elif model == 10:
+        three_d_free.family_forces(y, p, out)
+    elif model == 11:
+        three_d_free_objective_damper.family_forces(y, p, out)
 
 @njit(cache=True)
 def jacobi(model, y, p):
@@ -86,6 +96,10 @@ def jacobi(model, y, p):
         return free_exact_gravity.jacobi(y, p)
     elif model == 9:
         return free_objective_damper.jacobi(y, p)
+    elif model == 10:
+        return three_d_free.jacobi(y, p)
+    elif model == 11:
+        return three_d_free_objective_damper.jacobi(y, p)
     return 0.0
 
 @njit(cache=True)
@@ -111,3 +125,7 @@ def jacobian(model, t, y, p, J):
         free_exact_gravity.jacobian(t, y, p, J)
     elif model == 9:
         free_objective_damper.jacobian(t, y, p, J)
+    elif model == 10:
+        three_d_free.jacobian(t, y, p, J)
+    elif model == 11:
+        three_d_free_objective_damper.jacobian(t, y, p, J)

@@ -3,7 +3,7 @@
 Model 'free-objective-damper': free orbit (r, nu as coordinates), truncated binomial gravity, Kelvin-Voigt tether dampers.
 Produced by `make derive` (python -m derive) from derive/orbit.py and
 derive/orbit_codegen.py; regenerate instead of editing.  sympy 1.14.0.
-Reduces to the planar model 'objective-damper' on a circular orbit.
+Reduces to the model 'objective-damper' on a circular orbit.
 
 State vector y (index, name, unit):
    0  delta_x      m
@@ -49,6 +49,7 @@ MODEL = 'free-objective-damper'
 DESCRIPTION = 'free orbit (r, nu as coordinates), truncated binomial gravity, Kelvin-Voigt tether dampers'
 GEOMETRY = "planar"  # (δx, δy, θ) in the orbit plane
 ORBIT = "free"  # r and ν are coordinates: gravity, J2 and drag move the orbit
+CIRCULAR_TWIN = 'objective-damper'  # the model this one reduces to on a circular orbit
 FAMILIES = ('drag1', 'drag2', 'drag3', 'spring1', 'spring2', 'damper1', 'damper2')
 STATE = ('delta_x', 'delta_y', 'theta', 'r', 'nu', 'delta_x_dot', 'delta_y_dot', 'theta_dot', 'r_dot', 'nu_dot')
 STATE_UNITS = ('m', 'm', 'rad', 'm', 'rad', 'm/s', 'm/s', 'rad/s', 'm/s', 'rad/s')

@@ -23,10 +23,23 @@ def kinetic_energy(kin: Kinematics3D) -> sp.Expr:
 
 
 def _beta(kin: Kinematics3D, i: int):
-    """β = |r_i|² − r0² = 2 r0 y + x² + y² + z² from the COM point (Eq 3.22)."""
+    """β = |r_i|² − r0² = 2 r0 y + x² + y² + z² from the COM point (Eq 3.22).
+
+    r0 is ``kin.radius`` (r(t) on a free orbit).
+    """
     x, y, z = kin.components(kin.positions[i])
-    y = y - P["r0"]
-    return 2 * P["r0"] * y + x**2 + y**2 + z**2
+    y = y - kin.radius
+    return 2 * kin.radius * y + x**2 + y**2 + z**2
+
+
+def series_power(kin: Kinematics3D, i: int, n, order: int) -> sp.Expr:
+    """|r_i|^(2n) = (α + β)^n to the β^order term, α = |G|² (Eq 3.20 for order 2).
+
+    Σ_{k ≤ order} C(n, k) α^(n−k) β^k: ``order`` 2 is the thesis's three binomial
+    terms, 3 the Taylor series derive/orbit.py keeps for the J2 term.
+    """
+    r0, beta = kin.radius, _beta(kin, i)  # α^m written r0^(2m): r(t) is real, not positive
+    return sum(sp.binomial(n, k) * r0 ** (2 * (n - k)) * beta**k for k in range(order + 1))
 
 
 def binomial_power(kin: Kinematics3D, i: int, n) -> sp.Expr:
@@ -46,9 +59,7 @@ def binomial_power(kin: Kinematics3D, i: int, n) -> sp.Expr:
     sympy.Expr
         The truncated series [m^(2n)].
     """
-    alpha, beta = P["r0"] ** 2, _beta(kin, i)
-    return (alpha**n + n * alpha ** (n - 1) * beta
-            + sp.Rational(1, 2) * n * (n - 1) * alpha ** (n - 2) * beta**2)
+    return series_power(kin, i, n, 2)
 
 
 def exact_power(kin: Kinematics3D, i: int, n) -> sp.Expr:
@@ -57,8 +68,8 @@ def exact_power(kin: Kinematics3D, i: int, n) -> sp.Expr:
     Parameters and returns as :func:`binomial_power`; (1 + u)^(−5/2) is written
     (1 + G(u))/(1 + u) so that only the printable H and G appear.
     """
-    u = _beta(kin, i) / P["r0"] ** 2
-    r0 = P["r0"]
+    r0 = kin.radius
+    u = _beta(kin, i) / r0**2
     if n == sp.Rational(-1, 2):
         return InverseSqrt(u) / r0
     if n == sp.Rational(-3, 2):
@@ -68,23 +79,29 @@ def exact_power(kin: Kinematics3D, i: int, n) -> sp.Expr:
     raise ValueError(n)
 
 
-def point_potential(kin: Kinematics3D, power) -> sp.Expr:
+def _mu(mu):
+    """μ = ω² r0³ (Eq 3.14) unless given (the free orbit's parameter μ)."""
+    return P["omega"] ** 2 * P["r0"] ** 3 if mu is None else mu
+
+
+def point_potential(kin: Kinematics3D, power, mu=None) -> sp.Expr:
     """V_points = −Σ_i μ m_i |r_i|⁻¹ over the three bodies (Eq 3.19) [J].
 
-    μ = ω² r0³ (Eq 3.14), as in derive/energy.py.  ``power(kin, i, n)`` gives
-    |r_i|^(2n) (binomial or exact).
+    μ = ω² r0³ (Eq 3.14), as in derive/energy.py, unless ``mu`` is given.
+    ``power(kin, i, n)`` gives |r_i|^(2n) (binomial or exact).
     """
-    mu = P["omega"] ** 2 * P["r0"] ** 3
+    mu = _mu(mu)
     masses = (P["m1"], P["m2"], P["m3"])
     return -sum(mu * m * power(kin, i, sp.Rational(-1, 2)) for i, m in enumerate(masses))
 
 
-def box_potential(kin: Kinematics3D, power) -> sp.Expr:
+def box_potential(kin: Kinematics3D, power, mu=None) -> sp.Expr:
     """V_boxes = −Σ_i μ/2 (tr I_i |r_i|⁻³ − 3 r_i·I_i·r_i |r_i|⁻⁵), i = tip-mass, bus [J].
 
     MacCullagh's formula at each end body's centre; the balloon has no box term.
+    μ as in :func:`point_potential`.
     """
-    mu = P["omega"] ** 2 * P["r0"] ** 3
+    mu = _mu(mu)
     h = sp.Rational(1, 2)
     V = sp.S.Zero
     for i, box in enumerate(kin.box_inertias):

@@ -13,13 +13,13 @@ from sympy.physics.mechanics import partial_velocity
 
 from ..forces import ForceFamily
 from .kinematics3d import Kinematics3D
-from .symbols3d import N_Q, SPEEDS, TETHER_LENGTHS, TETHER_REST, P
+from .symbols3d import TETHER_LENGTHS, TETHER_REST, P
 
 FAMILY_ORDER = ("drag1", "drag2", "drag3", "spring1", "spring2", "damper1", "damper2")
 
 
 def generalized_forces(kin: Kinematics3D, loads) -> tuple:
-    """Eq 3.31 for (point index, force vector) pairs, over the six speeds.
+    """Eq 3.31 for (point index, force vector) pairs, over the model's speeds.
 
     Parameters
     ----------
@@ -31,11 +31,12 @@ def generalized_forces(kin: Kinematics3D, loads) -> tuple:
     Returns
     -------
     tuple
-        Q_k for q = (δx, δy, δz, φ, θ, ψ) [N, N, N, N m, N m, N m].
+        Q_k for q = (δx, δy, δz, φ, θ, ψ) [N, N, N, N m, N m, N m] (then r, ν
+        [N, N m] on a free orbit).
     """
-    Q = [sp.S.Zero] * N_Q
+    Q = [sp.S.Zero] * len(kin.speeds)
     for i, F in loads:
-        pv = partial_velocity([kin.velocities[i]], SPEEDS, kin.N)[0]
+        pv = partial_velocity([kin.velocities[i]], kin.speeds, kin.N)[0]
         for k, dv in enumerate(pv):
             Q[k] += F.dot(dv)
     return tuple(Q)

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.physics.mechanics import Particle, Point, ReferenceFrame, inertia
 
-from .symbols3d import COORDINATES, TETHER_LENGTHS, P, t
+from .symbols3d import COORDINATES, SPEEDS, TETHER_LENGTHS, P, t
 
 BODY_NAMES = ("tip-mass", "bus", "balloon")
 
@@ -43,6 +43,10 @@ class Kinematics3D:
         Balloon → far end of tether j+1 (τ_j λ_j, Eqs 3.37-3.38 in 3-D).
     tether_length_defs : dict
         λ1, λ2 → their definitions (Eqs 3.41-3.42 with the z component).
+    radius : sympy.Expr
+        Distance of the COM point G from Earth's centre: r0, or r(t) on a free orbit.
+    speeds : tuple
+        Generalized speeds of Eq 3.31 (the free orbit adds ṙ, ν̇).
     """
 
     N: ReferenceFrame
@@ -54,14 +58,26 @@ class Kinematics3D:
     box_inertias: tuple
     tether_vectors: tuple
     tether_length_defs: dict
+    radius: object = P["r0"]
+    speeds: tuple = SPEEDS
 
     def components(self, vec) -> tuple:
         """(x, y, z) components of a vector in the local frame L."""
         return tuple(vec.dot(e) for e in (self.L.x, self.L.y, self.L.z))
 
 
-def kinematics_3d() -> Kinematics3D:
+def kinematics_3d(radius=None, angle=None, speeds=SPEEDS) -> Kinematics3D:
     """Build the 3-D geometry (positions, velocities, box inertias, tethers).
+
+    Parameters
+    ----------
+    radius : sympy.Expr, optional
+        |G|, the COM point's distance from Earth's centre: r0 (default, Eq 3.14)
+        or r(t) on a free orbit (derive/three_d/free3d.py).
+    angle : sympy.Expr, optional
+        Angle of L from N about z: ωt (default, Eq 3.13) or ν(t).
+    speeds : tuple, optional
+        Generalized speeds the force families are projected on (Eq 3.31).
 
     Returns
     -------
@@ -70,9 +86,10 @@ def kinematics_3d() -> Kinematics3D:
         the box inertia dyadics; the tether vectors and length definitions.
     """
     dx, dy, dz, phi, theta, psi = COORDINATES
-    a, b, r0, omega = P["a"], P["b"], P["r0"], P["omega"]
+    a, b = P["a"], P["b"]
+    r0 = P["r0"] if radius is None else radius
     N = ReferenceFrame("N")
-    L = N.orientnew("L", "Axis", [omega * t, N.z])  # Eq 3.13
+    L = N.orientnew("L", "Axis", [P["omega"] * t if angle is None else angle, N.z])  # Eq 3.13
     A = L.orientnew("A", "Axis", [-theta, L.z])  # pitch, clockwise about +z (Eq 3.10)
     C = A.orientnew("C", "Axis", [phi, A.x])  # roll
     B = C.orientnew("B", "Axis", [psi, C.y])  # yaw about the boom
@@ -97,4 +114,4 @@ def kinematics_3d() -> Kinematics3D:
         x, y, z = (vec.dot(e) for e in (L.x, L.y, L.z))
         defs[lam] = sp.sqrt(x**2 + y**2 + z**2)
     return Kinematics3D(N, L, B, tuple(particles), r, tuple(vels), boxes,
-                        tether_vectors, defs)
+                        tether_vectors, defs, r0, tuple(speeds))

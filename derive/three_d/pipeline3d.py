@@ -100,7 +100,7 @@ def _speed_symbols():
     return STATE_SYMBOLS[N_Q:]
 
 
-def lagrange_terms(T, V, V_unexpanded=0) -> tuple:
+def lagrange_terms(T, V, V_unexpanded=0, state=STATE_SYMBOLS) -> tuple:
     """(M, f) of M q̈ + f for T, V in the plain state symbols.
 
     Parameters
@@ -109,11 +109,14 @@ def lagrange_terms(T, V, V_unexpanded=0) -> tuple:
         Kinetic energy and the potential to expand with it [J].
     V_unexpanded : sympy.Expr, optional
         Potential terms differentiated but not expanded [J].
+    state : tuple of sympy.Symbol, optional
+        Coordinates then their rates (default the 3-D state; the free orbit's
+        adds r, ν).
 
     Returns
     -------
     (sympy.Matrix, tuple)
-        The 6×6 mass matrix and the six f_k [N or N m].
+        The n×n mass matrix and the n f_k [N or N m], n = len(state)/2.
 
     Notes
     -----
@@ -121,12 +124,13 @@ def lagrange_terms(T, V, V_unexpanded=0) -> tuple:
     and gravity terms cancel symbolically; ``V_unexpanded`` (exact-gravity box
     terms, O(ω² I) with no such cancellation) is differentiated but not expanded.
     """
-    q, qd = STATE_SYMBOLS[:N_Q], _speed_symbols()
+    n = len(state) // 2
+    q, qd = state[:n], state[n:]
     p = [sp.diff(T, s) for s in qd]
-    M = sp.Matrix(N_Q, N_Q, lambda k, m: sp.diff(p[k], qd[m]))
+    M = sp.Matrix(n, n, lambda k, m: sp.diff(p[k], qd[m]))
     f = []
-    for k in range(N_Q):
-        e = sum(sp.diff(p[k], q[m]) * qd[m] for m in range(N_Q)) - sp.diff(T, q[k])
+    for k in range(n):
+        e = sum(sp.diff(p[k], q[m]) * qd[m] for m in range(n)) - sp.diff(T, q[k])
         f.append(sp.expand(e + sp.diff(V, q[k])) + sp.diff(V_unexpanded, q[k]))
     return M, tuple(f)
 

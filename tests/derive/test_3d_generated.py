@@ -22,7 +22,8 @@ from derive.three_d.models3d import DEFINITIONS_3D
 from derive.three_d.reference import Reference3D, derived_3d
 from tethersim.generated import dispatch3d, layout3d
 
-MODELS = tuple(n for n, m in generated.MODELS.items() if m.GEOMETRY == "3d")
+MODELS = tuple(n for n, m in generated.MODELS.items()
+               if m.GEOMETRY == "3d" and m.ORBIT == "circular")
 SEED = 20051303
 N_POINTS = 16
 R0 = 6.578e6

@@ -29,7 +29,8 @@ from tethersim.generated import layout3d
 # compiles the 3-D kernels (jacobian ~15 s cold): the slow tier (make test-slow, CI)
 pytestmark = pytest.mark.slow
 
-MODELS = tuple(n for n, m in generated.MODELS.items() if m.GEOMETRY == "3d")
+MODELS = tuple(n for n, m in generated.MODELS.items()
+               if m.GEOMETRY == "3d" and m.ORBIT == "circular")
 R0 = 6.578e6
 MU = 3.986004418e14
 N = math.sqrt(MU / R0**3)

@@ -12,7 +12,11 @@ Geometry and orbit kinds:
 * ``planar`` / ``circular``: the thesis's models (derived, printed,
   exact-gravity, objective-damper), the COM held on a circular orbit;
 * ``3d`` / ``circular``: roll, pitch, yaw and an out-of-plane balloon (docs/three-d.md);
-* ``planar`` / ``free``: the orbit radius r and anomaly ν as coordinates (docs/orbit.md).
+* ``planar`` / ``free``: the orbit radius r and anomaly ν as coordinates (docs/orbit.md);
+* ``3d`` / ``free``: both (docs/three-d.md, docs/orbit.md).
+
+A free model's module names the circular model it reduces to (``CIRCULAR_TWIN``):
+:func:`model_for_orbit` maps a circular model to its free twin from that.
 """
 from __future__ import annotations
 
@@ -132,9 +136,9 @@ def model_index(name: str, supported=None, what: str = "") -> int:
     return get_model(name, supported, what).index
 
 
-#: the free-orbit twin of each thesis model (``orbit = "free"``); ``printed`` has none
-FREE_VARIANTS = {"derived": "free", "exact-gravity": "free-exact-gravity",
-                 "objective-damper": "free-objective-damper"}
+#: the free-orbit twin of each circular model (``orbit = "free"``), from each free
+#: module's generated ``CIRCULAR_TWIN``; ``printed`` has none (nor ``3d-exact-gravity``)
+FREE_VARIANTS = {m.module.CIRCULAR_TWIN: m.name for m in MODELS if m.orbit == "free"}
 
 
 def model_for_orbit(name: str, orbit: str = "circular") -> str:
@@ -156,7 +160,7 @@ def model_for_orbit(name: str, orbit: str = "circular") -> str:
     Raises
     ------
     ValueError
-        One line: a model with no free twin (``printed``, the 3-D models).
+        One line: a model with no free twin (``printed``, ``3d-exact-gravity``).
     """
     m = get_model(name)
     if orbit != "free" or m.orbit == "free":
