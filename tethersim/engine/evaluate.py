@@ -1,9 +1,15 @@
 """Jitted loops that evaluate a model's generated kernels along a trajectory.
 
 Each takes the model index as a literal (one specialised loop per model, like
-the integrators), the per-body density flag, the samples Y (n, integrated
-state) and the parameter vector; the model's own layout (number of
-coordinates, families) comes from its generated module.
+the integrators), the air vector, the samples Y (n, integrated state) and the
+parameter vector; the model's own layout (number of coordinates, families)
+comes from its generated module.
+
+The public functions are called from Python with a plain int model index: they
+pick the compiled loop of that literal once (integrators.select.specialised)
+and call it directly.  Called through numba's dispatcher instead, a literal
+argument sends every call down its type-inference slow path (~1-20 ms a call,
+more than a 5-orbit run; it made every sweep point's outcome cost that).
 """
 from __future__ import annotations
 
@@ -12,6 +18,7 @@ from numba import literally, njit
 from numba.extending import overload
 
 from tethersim.engine.dynamics import KERNELS, literal_index, model_densities, model_tether_margins
+from tethersim.engine.integrators.select import specialised
 from tethersim.model.air.vector import UNIFORM
 from tethersim.model.registry import MODELS
 
@@ -65,7 +72,7 @@ def _model_shape(model):
 
 
 @njit(cache=True, nogil=True)  # nogil: sweeps evaluate forces on threads
-def family_forces_series(model, air, T, Y, p):
+def _family_forces_series(model, air, T, Y, p):
     """Q[i, f, k]: generalized force of family f on coordinate k at sample (T[i], Y[i]) (SI).
 
     ``air`` is the run's air vector (dynamics.derivative).
@@ -85,7 +92,7 @@ def family_forces_series(model, air, T, Y, p):
 
 
 @njit(cache=True)
-def jacobi_series(model, Y, p):
+def _jacobi_series(model, Y, p):
     """Jacobi integral (+ spring energy) [J] at each sample."""
     literally(model)
     n = Y.shape[0]
@@ -96,7 +103,7 @@ def jacobi_series(model, Y, p):
 
 
 @njit(cache=True, nogil=True)
-def family_force_peaks(model, air, T, Y, p):
+def _family_force_peaks(model, air, T, Y, p):
     """Largest |Q| of any single family on each coordinate over the samples.
 
     What a sweep keeps of the force breakdown, without the (n, families,
@@ -123,7 +130,7 @@ def family_force_peaks(model, air, T, Y, p):
 
 
 @njit(cache=True)
-def tether_margin_series(model, Y, p):
+def _tether_margin_series(model, Y, p):
     """g[i, j] = λ_j − l_j0 [m] of tether j at sample i (taut when positive)."""
     literally(model)
     n = Y.shape[0]
@@ -131,3 +138,31 @@ def tether_margin_series(model, Y, p):
     for i in range(n):
         model_tether_margins(model, Y[i], p, out[i])
     return out
+
+
+def _call(kernel, model, *args):
+    return specialised(kernel, model, args)(model, *args)
+
+
+def family_forces_series(model: int, air, T, Y, p) -> np.ndarray:
+    """Q[i, f, k]: generalized force of family f on coordinate k at sample (T[i], Y[i]) (SI).
+
+    ``model``: the model index; ``air``: the run's air vector (dynamics.derivative).
+    """
+    return _call(_family_forces_series, model, air, T, Y, p)
+
+
+def jacobi_series(model: int, Y, p) -> np.ndarray:
+    """Jacobi integral (+ spring energy) [J] at each sample (model index ``model``)."""
+    return _call(_jacobi_series, model, Y, p)
+
+
+def family_force_peaks(model: int, air, T, Y, p) -> np.ndarray:
+    """Largest |Q| of any single family on each coordinate over the samples (model index
+    ``model``, air vector ``air``); the loop releases the GIL."""
+    return _call(_family_force_peaks, model, air, T, Y, p)
+
+
+def tether_margin_series(model: int, Y, p) -> np.ndarray:
+    """g[i, j] = λ_j − l_j0 [m] of tether j at sample i (taut when positive; model index ``model``)."""
+    return _call(_tether_margin_series, model, Y, p)
