@@ -87,3 +87,12 @@ def test_points_the_block_cannot_serve_run_the_per_point_path(monkeypatch):
 def test_a_numpy_whose_sums_differ_sends_every_point_to_the_per_point_path(monkeypatch):
     monkeypatch.setattr(batch, "sums_match_numpy", lambda: False)
     assert not servable(SweepSpec(SAT, (("E2", [0.0427]),), periods=1.0), SAT)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("method", ["adaptive", "faithful"])
+def test_a_3d_model_runs_in_blocks_with_the_per_point_records(method):
+    spec = SweepSpec(SAT, (("E2", [0.0427, 0.06]),), periods=0.5, model="3d", method=method)
+    assert servable(spec, SAT)
+    recs = run_block(spec, [0, 1])
+    assert [_bits(r) for _, r in recs] == [_bits(run_point(spec, k)) for k in (0, 1)]
