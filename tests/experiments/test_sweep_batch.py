@@ -84,6 +84,16 @@ def test_points_the_block_cannot_serve_run_the_per_point_path(monkeypatch):
     assert [_bits(r) for _, r in recs] == [_bits(run_point(spec, k)) for k in (1, 0)]
 
 
+@pytest.mark.parametrize("method", ["adaptive", "faithful"])
+def test_a_block_refuses_an_output_too_large_as_a_point_does(monkeypatch, method):
+    from tethersim.engine.guards import SizeLimitError
+    spec = SweepSpec(SAT, (("E2", [0.0427]),), periods=2.0, method=method)
+    monkeypatch.setenv("TETHERSIM_MAX_OUTPUT_BYTES", "1000")
+    for run in (lambda: run_point(spec, 0), lambda: run_block(spec, [0])):
+        with pytest.raises(SizeLimitError, match="TETHERSIM_MAX_OUTPUT_BYTES"):
+            run()
+
+
 def test_a_numpy_whose_sums_differ_sends_every_point_to_the_per_point_path(monkeypatch):
     monkeypatch.setattr(batch, "sums_match_numpy", lambda: False)
     assert not servable(SweepSpec(SAT, (("E2", [0.0427]),), periods=1.0), SAT)
@@ -96,3 +106,8 @@ def test_a_3d_model_runs_in_blocks_with_the_per_point_records(method):
     assert servable(spec, SAT)
     recs = run_block(spec, [0, 1])
     assert [_bits(r) for _, r in recs] == [_bits(run_point(spec, k)) for k in (0, 1)]
+
+
+def test_the_block_kernel_releases_the_gil():
+    from tethersim.experiments.sweep.kernel import sweep_block
+    assert sweep_block.targetoptions["nogil"]

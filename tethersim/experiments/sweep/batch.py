@@ -25,6 +25,7 @@ from tethersim.analysis.metrics import SS_FRACTION, PitchMetrics
 from tethersim.analysis.metrics_kernel import sums_match_numpy
 from tethersim.engine.domain import MAX_STRETCH, reach
 from tethersim.engine.dynamics import has_com_orbit, initial_state
+from tethersim.engine.guards import check_simulation
 from tethersim.engine.integrators.select import specialised
 from tethersim.engine.linearise import rk4_amplifications
 from tethersim.engine.simulate import (
@@ -91,11 +92,14 @@ def _compiled(sats: list, spec: SweepSpec) -> list:
     Y0 = np.stack([initial_state(m, initial_model_state(s, spec.model), s.r0, s.r0 * s.omega)
                    for s in sats])
     n_steps = max(1, round(spec.steps_per_period * spec.periods))
+    n_out = max(2, round(spec.samples_per_period * spec.periods))
+    # the output-size guard simulate() applies to each point (engine/guards.py)
+    check_simulation(periods, n_steps if faithful else None, "rk4" if faithful else "adaptive",
+                     None if faithful else n_out, False)
     if faithful:  # simulate._run_rk4: every step is a sample
         span = np.array([periods * s.period / n_steps for s in sats])
         T = np.empty((1, n_steps + 1))  # the RK4 loop writes its own times
     else:  # simulate._run_adaptive: the metrics grid, refined from the output grid
-        n_out = max(2, round(spec.samples_per_period * spec.periods))
         refine = max(1, math.ceil(METRIC_SAMPLES_PER_PERIOD * periods / n_out))
         span = np.array([periods * s.period for s in sats])
         grids = {}
