@@ -4,9 +4,12 @@ The C side is the DOP853 port of bench/cref.py (same derivation, tableau, step
 control, switch location and dense output) driven by one ``#pragma omp
 parallel for`` over the grid points: integration only, the floor a sweep can
 reach.  The tethersim side is ``run_sweep`` as users call it (integration plus
-the per-point metrics, force peaks, classification and the Zarr store).  Both
-sweep SatI's E1 x E2 grid of bench/sweep_bench.py at the sweep's defaults
-(rtol 1e-9, atol 1e-11, 100 output samples per orbit, switches located).
+the metrics, force peaks, classification and the Zarr store), whose tasks are
+compiled blocks of points (tethersim.experiments.sweep.batch); for comparison,
+the same sweep through the per-point path (point.run_point: simulate() and
+outcome() in Python per point) on 2 threads.  All sweep SatI's E1 x E2 grid of
+bench/sweep_bench.py at the sweep's defaults (rtol 1e-9, atol 1e-11, 100
+output samples per orbit, switches located), timed interleaved.
 """
 from __future__ import annotations
 
@@ -15,6 +18,7 @@ import os
 import shutil
 import sys
 import tempfile
+from contextlib import contextmanager
 from pathlib import Path
 
 import cref
@@ -72,6 +76,39 @@ def build(S):
     return lib, ""
 
 
+def _cpu() -> str:
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return "an unnamed CPU"
+
+
+def sweep_inputs():
+    """What bench_csweep needs of run.setup() (the derived model for the C port), alone."""
+    from derive.kinematics import planar_kinematics
+    from derive.models import BY_NAME
+    from derive.pipeline import derive, to_state_symbols
+    length_defs = {lam: to_state_symbols(d)
+                   for lam, d in planar_kinematics().tether_length_defs.items()}
+    return {"model": derive(BY_NAME["derived"]), "length_defs": length_defs}
+
+
+@contextmanager
+def per_point_path():
+    """run_sweep with every point through point.run_point (the path before the blocks)."""
+    from tethersim.experiments.sweep import runner
+    from tethersim.experiments.sweep.point import _spec, run_point
+    saved = runner.run_points
+    runner.run_points = lambda spec_json, ks: [(k, run_point(_spec(spec_json), k)) for k in ks]
+    try:
+        yield
+    finally:
+        runner.run_points = saved
+
+
 def _points(spec):
     from tethersim.engine.dynamics import initial_state
     from tethersim.model.inputs import parameter_vector
@@ -104,8 +141,9 @@ def bench_csweep(rep, S, q, log):
             n_out = max(2, round(spec.samples_per_period * periods))
             fin = np.empty_like(Y0)
             acc = np.zeros(spec.size, dtype=np.int64)
-            log(f"  sweep {spec.size} points x {periods:g} orbits: C+OpenMP vs run_sweep, "
-                f"1 and {cores} threads")
+            log(f"  sweep {spec.size} points x {periods:g} orbits on {_cpu()}: C+OpenMP vs "
+                f"run_sweep, 1 and {cores} threads, and the per-point path; load average "
+                f"{os.getloadavg()[0]:.2f}")
 
             def c_timer(threads):
                 def t():
@@ -117,35 +155,50 @@ def bench_csweep(rep, S, q, log):
                     return clock() - t0
                 return t
 
-            def ts_timer(threads):
+            def ts_timer(threads, per_point=False):
                 def t():
+                    out = tmp / f"p{periods:g}w{threads}{'pp' if per_point else ''}.zarr"
+                    shutil.rmtree(out, ignore_errors=True)  # a fresh store, as a first run writes
                     t0 = clock()
-                    run_sweep(spec, tmp / f"p{periods:g}w{threads}.zarr", workers=threads,
-                              restart=True, progress=False)
+                    if per_point:
+                        with per_point_path():
+                            run_sweep(spec, out, workers=threads, progress=False)
+                    else:
+                        run_sweep(spec, out, workers=threads, progress=False)
                     return clock() - t0
                 return t
 
+            load = os.getloadavg()[0]
             res = interleave({"c1": c_timer(1), f"c{cores}": c_timer(cores),
-                              "ts1": ts_timer(1), f"ts{cores}": ts_timer(cores)},
+                              "ts1": ts_timer(1), f"ts{cores}": ts_timer(cores),
+                              f"pp{cores}": ts_timer(cores, per_point=True)},
                              q["sweep_repeats"], warmup=1)
+            load = (load + os.getloadavg()[0]) / 2
             tp = {k: spec.size / median(v) for k, v in res.items()}
             tag = f"{periods:g}"
             for k, label in (("c1", "C+OpenMP, 1 thread"), (f"c{cores}", f"C+OpenMP, {cores} threads"),
                              ("ts1", "tethersim run_sweep, 1 thread"),
-                             (f"ts{cores}", f"tethersim run_sweep, {cores} threads")):
+                             (f"ts{cores}", f"tethersim run_sweep, {cores} threads"),
+                             (f"pp{cores}", f"  per-point path (run_point), {cores} threads")):
                 rep.fig(f"csweep.{tag}.{k}", f"{periods:g} orbits: {label}", tp[k], "run/s",
                         [spec.size / x for x in res[k]])
             ratio = tp[f"ts{cores}"] / tp[f"c{cores}"]
             rep.fig(f"csweep.{tag}.ratio", f"{periods:g} orbits: tethersim / C+OpenMP "
                     f"({cores} threads)", ratio, "x")
+            rep.fig(f"csweep.{tag}.ratio1", f"{periods:g} orbits: tethersim / C (1 thread)",
+                    tp["ts1"] / tp["c1"], "x")
+            rep.fig(f"csweep.{tag}.blocks", f"{periods:g} orbits: compiled blocks / per-point "
+                    f"path ({cores} threads)", tp[f"ts{cores}"] / tp[f"pp{cores}"], "x")
             rep.target(f"csweep.{tag}", f"sweep {periods:g} orbits: tethersim >= 0.5x C+OpenMP",
-                       ratio, ">=", 0.5)
+                       ratio, ">=", 0.5, note=f"load average {load:.1f} on {os.cpu_count()} cores")
             for who in ("c", "ts"):
                 sc = tp[f"{who}{cores}"] / tp[f"{who}1"]
                 rep.fig(f"csweep.{tag}.scale_{who}", f"{periods:g} orbits: {who} scaling 1 -> "
                         f"{cores} threads", sc, "x")
             rep.target(f"csweep.{tag}.scale", f"sweep {periods:g} orbits: tethersim 1 -> {cores} "
-                       "threads", tp[f"ts{cores}"] / tp["ts1"], ">=", 1.8 if cores >= 2 else 1.0)
+                       "threads", tp[f"ts{cores}"] / tp["ts1"], ">=", 1.8 if cores >= 2 else 1.0,
+                       note=f"C itself {tp[f'c{cores}'] / tp['c1']:.2f}x; load average "
+                            f"{load:.1f} on {os.cpu_count()} cores")
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     sys.stdout.flush()

@@ -17,7 +17,8 @@ with gcc -O3.  Results go to stdout (table at the end) and bench/results.json.
   5. `python -m derive <tmpdir>` wall time
   6. second `tethersim run satI --periods 50` wall time (numba caches warm)
   7. sweep throughput, 1 thread vs every core (bench/sweep_bench.py); C+OpenMP sweep
-     driver vs run_sweep at 5 and 50 orbits, 1 and 2 threads (bench/csweep.py)
+     driver vs run_sweep at 5 and 50 orbits, 1 and 2 threads, and run_sweep through
+     the per-point path (bench/csweep.py); `--only sweep` runs this section alone
   8. `tethersim report` wall time (not with --quick)
 """
 from __future__ import annotations
@@ -711,7 +712,9 @@ def main(argv=None) -> int:
     import sweep_bench
     if args.only:
         if args.only == "sweep":
+            import csweep
             sweep_bench.bench_sweep(rep, q)
+            csweep.bench_csweep(rep, csweep.sweep_inputs(), q, log)
         elif args.only == "3d":
             import bench3d
             bench3d.bench_3d(rep, q, log)

@@ -13,7 +13,6 @@ from tethersim import _jit  # noqa: F401  (first: numba's cache folder, before a
 from tethersim.analysis.outcome import Outcome, outcome
 from tethersim.analysis.summary import run_summary
 from tethersim.engine.dynamics import parameters_at
-from tethersim.engine.integrators.select import call
 from tethersim.engine.result import SimResult
 from tethersim.engine.simulate import RK4StepWarning, simulate
 from tethersim.generated.layout import FAMILIES, PARAMETERS, STATE
@@ -75,8 +74,7 @@ def _state_and_params(sat: Satellite, state, model: str, t: float = 0.0):
         raise ValueError(f"t = {t!r}: must be a finite time [s]")
     y = np.ascontiguousarray(y)
     # the per-body densities at this state and time (the run's own air vector)
-    p = call(parameters_at, m.index, t, y, parameter_vector(sat, model),
-             air_vector(sat, max(t, 0.0)))
+    p = parameters_at(m.index, t, y, parameter_vector(sat, model), air_vector(sat, max(t, 0.0)))
     return m, y, p
 
 

@@ -188,3 +188,9 @@ def test_two_writers_creating_one_store_at_once(tmp_path, reference):
     for o in outcomes:
         assert o == "ok" or f"being written by another tethersim process (pid {os.getpid()}" in o
     xr.testing.assert_identical(run_sweep(_spec(), out, progress=False).dataset(), reference)
+
+
+def test_a_flush_writes_each_run_of_adjacent_rows_at_once():
+    from tethersim.experiments.sweep.store import _runs
+    assert _runs([]) == []
+    assert _runs([0, 1, 2, 5, 7, 8]) == [(0, 3), (5, 6), (7, 9)]

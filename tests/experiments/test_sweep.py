@@ -166,3 +166,18 @@ def test_bad_grid_specs_are_refused_naming_the_option(spec, message):
 def test_sweep_function_returns_the_store_dataset(tmp_path):
     ds = sweep(SAT, {"c1": [3e-4]}, tmp_path / "s.zarr", periods=1.0, progress=False)
     assert ds.c1.values.tolist() == [3e-4] and bool(ds.done.all())
+
+
+@pytest.mark.parametrize("block", [4, 5])
+def test_the_block_size_does_not_change_the_data(reference, tmp_path, block):
+    ds = run_sweep(_spec(), tmp_path / "b.zarr", workers=2, block=block, progress=False).dataset()
+    xr.testing.assert_identical(ds, reference)
+
+
+def test_blocks_hold_about_forty_orbits_and_keep_every_worker_busy():
+    from tethersim.experiments.sweep.runner import block_size
+    assert block_size(5.0, 10_000, 2) == 8
+    assert block_size(50.0, 10_000, 2) == 1
+    assert block_size(0.1, 10_000, 2) == 64  # capped
+    assert block_size(5.0, 20, 2) == 3  # 20 points on 2 threads: >= 4 tasks each
+    assert block_size(50.0, 100, 2, minimum=4) == 4  # Dask's smallest task

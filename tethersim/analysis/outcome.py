@@ -25,7 +25,6 @@ import numpy as np
 from tethersim.analysis.classify import CLASSES, FAILED, classify
 from tethersim.analysis.metrics import SETTLING_TOL, PitchMetrics, pitch_metrics, steady_state_window
 from tethersim.engine.evaluate import family_force_peaks
-from tethersim.engine.integrators.select import call
 from tethersim.engine.result import SimResult
 
 NAN3 = (math.nan, math.nan, math.nan)
@@ -186,7 +185,7 @@ def outcome(res: SimResult, tol: float = SETTLING_TOL, forces: bool = True) -> O
         trail = (float(np.mean(states[tail, ix])), float(np.mean(states[tail, iy])))
     peak = NAN3
     if forces and n >= 1:
-        q = call(family_force_peaks, res.layout.index, res.air, t, states, res.parameters)
+        q = family_force_peaks(res.layout.index, res.air, t, states, res.parameters)
         peak = tuple(float(q[i]) for i in (ix, iy, ith))  # coordinates lead the state
     from tethersim.analysis.orbit_life import drag_makeup, lifetime
     with np.errstate(all="ignore"):

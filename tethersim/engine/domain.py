@@ -29,7 +29,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from tethersim.engine.evaluate import domain_scan
-from tethersim.engine.integrators.select import call
 from tethersim.model.satellite import ROLL_LIMIT_DEG
 
 REENTRY_ALTITUDE = 120e3  # m: default re-entry threshold (issue 12; Vallado's table holds to 0)
@@ -100,8 +99,8 @@ def first_violation(res, altitude=None) -> Violation | None:
         return None
     names = lay.state
     # one compiled pass: the first non-finite sample, balloon too far, tether over-stretched
-    last, i_far, d_far, i_over, j_over, s_over = call(
-        domain_scan, lay.index, np.ascontiguousarray(res.states), res.parameters,
+    last, i_far, d_far, i_over, j_over, s_over = domain_scan(
+        lay.index, np.ascontiguousarray(res.states), res.parameters,
         names.index("delta_x"), names.index("delta_y"),
         names.index("delta_z") if "delta_z" in names else -1, sat.l10, sat.l20,
         reach(sat) ** 2, MAX_STRETCH)

@@ -25,6 +25,7 @@ import numpy as np
 from numba import literally, njit, types
 from numba.extending import overload
 
+from tethersim.engine.integrators.select import call
 from tethersim.model.air.vector import UNIFORM, body_density
 from tethersim.model.constants import R_EARTH
 from tethersim.model.registry import KERNELS, MODELS
@@ -188,13 +189,17 @@ def derivative(model, air, t, y, p, pw, dydt):
 
 
 @njit(cache=True)
-def parameters_at(model, t, y, p, air):
-    """p with the per-body densities at (t, y) (Python-callable, literal model)."""
+def _parameters_at(model, t, y, p, air):
     literally(model)
     pw = p.copy()
     if air[0] != UNIFORM:
         model_densities(model, t, y, p, pw, air)
     return pw
+
+
+def parameters_at(model: int, t: float, y, p, air) -> np.ndarray:
+    """p with the per-body densities at (t, y) of model index ``model`` (from Python)."""
+    return call(_parameters_at, model, t, y, p, air)
 
 
 def initial_state(model: int, model_state, r0: float, v_circ: float) -> np.ndarray:

@@ -1,9 +1,15 @@
 """Jitted loops that evaluate a model's generated kernels along a trajectory.
 
 Each takes the model index as a literal (one specialised loop per model, like
-the integrators), the per-body density flag, the samples Y (n, integrated
-state) and the parameter vector; the model's own layout (number of
-coordinates, families) comes from its generated module.
+the integrators), the air vector, the samples Y (n, integrated state) and the
+parameter vector; the model's own layout (number of coordinates, families)
+comes from its generated module.
+
+The public functions are called from Python with a plain int model index: they
+pick the compiled loop of that literal once (integrators.select.specialised)
+and call it directly.  Called through numba's dispatcher instead, a literal
+argument sends every call down its type-inference slow path (~1-20 ms a call,
+more than a 5-orbit run; it made every sweep point's outcome cost that).
 """
 from __future__ import annotations
 
@@ -14,6 +20,7 @@ from numba import literally, njit
 from numba.extending import overload
 
 from tethersim.engine.dynamics import KERNELS, literal_index, model_densities, model_tether_margins
+from tethersim.engine.integrators.select import call
 from tethersim.model.air.vector import UNIFORM
 from tethersim.model.registry import MODELS
 
@@ -67,7 +74,7 @@ def _model_shape(model):
 
 
 @njit(cache=True, nogil=True)  # nogil: sweeps evaluate forces on threads
-def family_forces_series(model, air, T, Y, p):
+def _family_forces_series(model, air, T, Y, p):
     """Q[i, f, k]: generalized force of family f on coordinate k at sample (T[i], Y[i]) (SI).
 
     ``air`` is the run's air vector (dynamics.derivative).
@@ -87,7 +94,7 @@ def family_forces_series(model, air, T, Y, p):
 
 
 @njit(cache=True)
-def jacobi_series(model, Y, p):
+def _jacobi_series(model, Y, p):
     """Jacobi integral (+ spring energy) [J] at each sample."""
     literally(model)
     n = Y.shape[0]
@@ -98,7 +105,7 @@ def jacobi_series(model, Y, p):
 
 
 @njit(cache=True, nogil=True)
-def family_force_peaks(model, air, T, Y, p):
+def _family_force_peaks(model, air, T, Y, p):
     """Largest |Q| of any single family on each coordinate over the samples.
 
     What a sweep keeps of the force breakdown, without the (n, families,
@@ -125,7 +132,7 @@ def family_force_peaks(model, air, T, Y, p):
 
 
 @njit(cache=True)
-def tether_margin_series(model, Y, p):
+def _tether_margin_series(model, Y, p):
     """g[i, j] = λ_j − l_j0 [m] of tether j at sample i (taut when positive)."""
     literally(model)
     n = Y.shape[0]
@@ -136,7 +143,7 @@ def tether_margin_series(model, Y, p):
 
 
 @njit(cache=True, nogil=True)
-def domain_scan(model, Y, p, ix, iy, iz, l10, l20, reach2, max_stretch):
+def _domain_scan(model, Y, p, ix, iy, iz, l10, l20, reach2, max_stretch):
     """One pass over the samples for engine/domain.py (the same arithmetic as numpy's).
 
     Returns
@@ -175,3 +182,32 @@ def domain_scan(model, Y, p, ix, iy, iz, l10, l20, reach2, max_stretch):
             i_over, j_over, s_over = i, (0 if s0 >= s1 else 1), max(s0, s1)
             break
     return last, i_far, d_far, i_over, j_over, s_over
+
+
+def family_forces_series(model: int, air, T, Y, p) -> np.ndarray:
+    """Q[i, f, k]: generalized force of family f on coordinate k at sample (T[i], Y[i]) (SI).
+
+    ``model``: the model index; ``air``: the run's air vector (dynamics.derivative).
+    """
+    return call(_family_forces_series, model, air, T, Y, p)
+
+
+def jacobi_series(model: int, Y, p) -> np.ndarray:
+    """Jacobi integral (+ spring energy) [J] at each sample (model index ``model``)."""
+    return call(_jacobi_series, model, Y, p)
+
+
+def family_force_peaks(model: int, air, T, Y, p) -> np.ndarray:
+    """Largest |Q| of any single family on each coordinate over the samples (model index
+    ``model``, air vector ``air``); the loop releases the GIL."""
+    return call(_family_force_peaks, model, air, T, Y, p)
+
+
+def tether_margin_series(model: int, Y, p) -> np.ndarray:
+    """g[i, j] = λ_j − l_j0 [m] of tether j at sample i (taut when positive; model index ``model``)."""
+    return call(_tether_margin_series, model, Y, p)
+
+
+def domain_scan(model: int, Y, p, ix, iy, iz, l10, l20, reach2, max_stretch) -> tuple:
+    """One compiled pass over the samples for engine/domain.py (see :func:`_domain_scan`)."""
+    return call(_domain_scan, model, Y, p, ix, iy, iz, l10, l20, reach2, max_stretch)

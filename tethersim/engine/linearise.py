@@ -70,10 +70,45 @@ def rk4_amplification(sat: Satellite, h: float, model: str = "derived", state=No
     """
     lam = np.concatenate([np.linalg.eigvals(attitude_jacobian(sat, state, model)),
                           taut_tether_modes(sat)])
+    return amplification(lam, h)
+
+
+def amplification(lam: np.ndarray, h: float) -> float:
+    """Largest |R(hλ)| / max(1, |e^{hλ}|) over the eigenvalues ``lam`` (rk4_amplification)."""
     z = h * lam
     R = np.abs(1 + z + z**2 / 2 + z**3 / 6 + z**4 / 24)
     exact = np.maximum(1.0, np.exp(z.real))
     return float(np.max(R / (exact * (1 + EXCESS_RTOL))))
+
+
+def rk4_amplifications(sats, steps, model: str = "derived") -> list:
+    """:func:`rk4_amplification` at the initial state of each satellite, for a block.
+
+    One LAPACK call for the stack of Jacobians (each matrix is still reduced on
+    its own, so each value is the one rk4_amplification gives, bit for bit:
+    tests/engine/test_linearise.py); the growth factors are then taken per
+    satellite on the same 1-D arrays as there, so no value depends on the
+    block it was computed in.
+
+    Parameters
+    ----------
+    sats : sequence of Satellite
+        The satellites.
+    steps : sequence of float
+        The RK4 step [s] of each.
+    model : str, optional
+        Model name.
+
+    Returns
+    -------
+    list of float
+        One amplification per satellite.
+    """
+    if not sats:
+        return []
+    lams = np.linalg.eigvals(np.stack([attitude_jacobian(s, None, model) for s in sats]))
+    return [amplification(np.concatenate([lam, taut_tether_modes(s)]), h)
+            for lam, s, h in zip(lams, sats, steps)]
 
 
 def rk4_max_step(sat: Satellite, model: str = "derived", state=None) -> float:

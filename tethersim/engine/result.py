@@ -15,7 +15,6 @@ import numpy as np
 
 from tethersim.engine.dynamics import has_com_orbit
 from tethersim.engine.evaluate import family_forces_series, jacobi_series, tether_margin_series
-from tethersim.engine.integrators.select import call
 from tethersim.model.constants import R_EARTH
 from tethersim.model.inputs import air_vector, parameter_vector
 from tethersim.model.registry import Model, get_model
@@ -215,13 +214,13 @@ class SimResult:
 
         SI: N on lengths, N m on angles; families in ``layout.families``.
         """
-        return call(family_forces_series, self.layout.index, self.air, self.t, self.states,
-                    self.parameters)
+        return family_forces_series(self.layout.index, self.air, self.t, self.states,
+                                    self.parameters)
 
     def tether_tensions(self) -> np.ndarray:
         """Spring tension of tethers 1 and 2 (n, 2) [N], zero while slack (Eqs 3.35-3.36)."""
         s = self.satellite
-        g = call(tether_margin_series, self.layout.index, self.states, self.parameters)
+        g = tether_margin_series(self.layout.index, self.states, self.parameters)
         return np.column_stack([s.E1 * np.maximum(g[:, 0] / s.l10, 0),
                                 s.E2 * np.maximum(g[:, 1] / s.l20, 0)])
 
@@ -269,7 +268,7 @@ class SimResult:
         samples: sample the run finely, well below the tether period, ~70 s).
         """
         m = self.layout
-        h = call(jacobi_series, m.index, self.states, self.parameters)
+        h = jacobi_series(m.index, self.states, self.parameters)
         Q = self.forces
         idx = [m.families.index(f) for f in DISSIPATIVE]
         rates = self.states[:, m.n_coordinates:m.n_state]

@@ -277,7 +277,7 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
                      wall_time=time.perf_counter() - t0)
 
 
-def _refined_grid(t_end: float, n_out: int, refine: int) -> np.ndarray:
+def refined_grid(t_end: float, n_out: int, refine: int) -> np.ndarray:
     """n_out·refine + 1 times whose every refine-th is exactly linspace(0, t_end, n_out + 1)."""
     coarse = np.linspace(0.0, t_end, n_out + 1)
     if refine == 1:
@@ -293,7 +293,7 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
     p = parameter_vector(sat, model)
     pw = p.copy()
     y = initial_state(m, initial_model_state(sat, model), sat.r0, sat.r0 * sat.omega)
-    out_t = _refined_grid(t_end, n_out, refine)
+    out_t = refined_grid(t_end, n_out, refine)
     out_y = np.full((out_t.size, state_size(m)), np.nan)
     out_y[0] = y
     counters = np.zeros(5, dtype=np.int64)

@@ -37,7 +37,13 @@ STATUS = {"ok": 0, "diverged": 1, "failed": 2}
 
 
 def run_point(spec: SweepSpec, k: int) -> dict:
-    """Simulate flat grid point k of ``spec`` and return its record (SI)."""
+    """Simulate flat grid point k of ``spec`` and return its record (SI).
+
+    The per-point path: simulate() then outcome(), in Python.  A sweep runs
+    its points in compiled blocks (tethersim.experiments.sweep.batch), which
+    give these records bit for bit, and falls back to this for a point the
+    blocks cannot serve (per-body air, a free orbit).
+    """
     sat = spec.satellite_at(k)
     if spec.method == "faithful":
         steps = max(1, round(spec.steps_per_period * spec.periods))
@@ -50,20 +56,27 @@ def run_point(spec: SweepSpec, k: int) -> dict:
     if res.status == "interrupted":  # Ctrl-C in the calling thread: stop, do not record
         raise KeyboardInterrupt
     thesis_step = sat.period / FAITHFUL_STEPS_PER_PERIOD
-    rec = dict.fromkeys(NAMES, math.nan)
-    rec.update(tumbled=0, upside_down=0, status=STATUS.get(res.status, 2), nfev=res.nfev,
-               rk4_amplification=rk4_amplification(sat, thesis_step, spec.model))
     out = outcome(res, tol=spec.tol)
-    rec["stability_class"] = out.stability_class
-    if not out.counts:  # a failed run records its class and status only (one rule: outcome.py)
-        return rec
     m = out.metrics
-    rec.update(
-        mean_pitch=m.mean_pitch, steady_state_pitch=m.steady_state_pitch,
-        settling_time=m.settling_time, tumbled=int(m.tumbled), upside_down=int(m.upside_down),
-        trail_delta_x=out.trail_delta_x, trail_delta_y=out.trail_delta_y,
-        max_force_delta_x=out.max_force[0], max_force_delta_y=out.max_force[1],
-        max_force_theta=out.max_force[2])
+    return record(STATUS.get(res.status, 2), res.nfev,
+                  rk4_amplification(sat, thesis_step, spec.model), out.stability_class,
+                  None if not out.counts else dict(
+                      mean_pitch=m.mean_pitch, steady_state_pitch=m.steady_state_pitch,
+                      settling_time=m.settling_time, tumbled=int(m.tumbled),
+                      upside_down=int(m.upside_down), trail_delta_x=out.trail_delta_x,
+                      trail_delta_y=out.trail_delta_y, max_force_delta_x=out.max_force[0],
+                      max_force_delta_y=out.max_force[1], max_force_theta=out.max_force[2]))
+
+
+def record(status: int, nfev: int, amplification: float, stability_class: int,
+           measured: dict | None) -> dict:
+    """One point's record: a run that does not count (outcome.py) keeps its class, status,
+    nfev and amplification only; ``measured`` holds the rest of a run that counts."""
+    rec = dict.fromkeys(NAMES, math.nan)
+    rec.update(tumbled=0, upside_down=0, status=status, nfev=nfev,
+               rk4_amplification=amplification, stability_class=stability_class)
+    if measured is not None:
+        rec.update(measured)
     return rec
 
 
@@ -73,6 +86,10 @@ def _spec(spec_json: str) -> SweepSpec:
 
 
 def run_points(spec_json: str, ks: list) -> list:
-    """[(k, record)] for flat points ks: the task a thread or Dask worker runs."""
-    spec = _spec(spec_json)
-    return [(k, run_point(spec, k)) for k in ks]
+    """[(k, record)] for flat points ks: the task a thread or Dask worker runs.
+
+    The points run in compiled blocks (batch.run_block); the records do not
+    depend on how the points are grouped.
+    """
+    from tethersim.experiments.sweep.batch import run_block
+    return run_block(_spec(spec_json), list(ks))

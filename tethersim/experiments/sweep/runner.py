@@ -1,13 +1,14 @@
 """Run a sweep's pending points on threads or a Dask cluster, flushing to the store.
 
-Local: a thread pool (the integrators release the GIL, so threads use every
-core with no process start-up).  Distributed: a Dask client's
-concurrent.futures executor — the same task function (point.run_points) and
-the same result loop, so both paths write identical data.
+Local: a thread pool (each task is a block of points run in one compiled,
+nogil call, so threads use every core with no process start-up).  Distributed:
+a Dask client's concurrent.futures executor — the same task function
+(point.run_points) and the same result loop, so both paths write identical data.
 """
 from __future__ import annotations
 
 import concurrent.futures as cf
+import math
 import os
 import time
 from contextlib import contextmanager
@@ -19,6 +20,12 @@ from tethersim.experiments.sweep.spec import SweepSpec
 from tethersim.experiments.sweep.store import SweepStore
 
 FLUSH_SECONDS = 2.0
+# a task integrates about this many orbits (8 points of 5 orbits, 1 of 50): enough to
+# amortise the Python work around a compiled block, short enough (~10-30 ms) that
+# Ctrl-C, the progress bar and the last tasks' balance across threads do not notice
+BLOCK_ORBITS = 40
+BALANCE = 4  # at least this many tasks per worker, so no worker idles at the end
+MAX_BLOCK = 64
 
 
 class SweepInterrupted(Exception):
@@ -33,7 +40,8 @@ class SweepInterrupted(Exception):
 
 @contextmanager
 def executor(workers: int | None = None, scheduler: str | None = None, dask_workers: int | None = None):
-    """(executor, block size): threads by default, Dask with an address or a local cluster."""
+    """(executor, smallest block, workers): threads by default, Dask with an address or a
+    local cluster."""
     if scheduler is not None or dask_workers is not None:
         from distributed import Client, LocalCluster
 
@@ -46,7 +54,7 @@ def executor(workers: int | None = None, scheduler: str | None = None, dask_work
             client = Client(cluster)
         try:
             # blocks of points amortise Dask's per-task cost (~1 ms) over ~0.1 s runs
-            yield client.get_executor(pure=False), 4
+            yield client.get_executor(pure=False), 4, dask_workers or 2
         finally:
             client.close()
             if cluster is not None:
@@ -56,15 +64,28 @@ def executor(workers: int | None = None, scheduler: str | None = None, dask_work
         if n < 1:
             raise ValueError(f"workers = {n}: must be >= 1")
         with cf.ThreadPoolExecutor(max_workers=n, thread_name_prefix="tethersim-sweep") as ex:
-            yield ex, 1
+            yield ex, 1, n
+
+
+def block_size(periods: float, points: int, workers: int, minimum: int = 1) -> int:
+    """Points per task: about BLOCK_ORBITS orbits of integration, at least BALANCE
+    tasks per worker, at least ``minimum``.  Records do not depend on it."""
+    by_work = max(1, round(BLOCK_ORBITS / periods))
+    by_balance = max(1, math.ceil(points / (BALANCE * max(1, workers))))
+    return max(minimum, min(by_work, by_balance, MAX_BLOCK))
+
+
+def _blocks(ks: list, size: int) -> list:
+    return [ks[i:i + size] for i in range(0, len(ks), size)]
 
 
 def map_points(spec: SweepSpec, ks=None, workers: int | None = None) -> list:
     """Records of flat points ks (default: all) of ``spec``, in order, on threads; no store."""
     ks = list(range(spec.size)) if ks is None else list(ks)
     spec_json = spec.to_json()
-    with executor(workers) as (ex, _):
-        futures = [ex.submit(run_points, spec_json, [k]) for k in ks]
+    with executor(workers) as (ex, minimum, n):
+        size = block_size(spec.periods, len(ks), n, minimum)
+        futures = [ex.submit(run_points, spec_json, b) for b in _blocks(ks, size)]
         try:
             return [rec for f in futures for _, rec in f.result()]
         except BaseException:
@@ -101,7 +122,7 @@ def run_sweep(spec: SweepSpec, out, *, workers: int | None = None, scheduler: st
     progress : bool or None, optional
         Progress bar (None: when the sweep takes over a second).
     block : int, optional
-        Points per task.
+        Points per task (default: runner.block_size; the data do not depend on it).
     stop_after : int, optional
         Simulate an interruption after that many points (tests).
 
@@ -132,10 +153,9 @@ def _fill(store, spec, workers, scheduler, dask_workers, progress, block, stop_a
     if not pending:
         return store
     spec_json = spec.to_json()
-    with executor(workers, scheduler, dask_workers) as (ex, default_block):
-        size = block or default_block
-        blocks = [pending[i:i + size] for i in range(0, len(pending), size)]
-        futures = [ex.submit(run_points, spec_json, b) for b in blocks]
+    with executor(workers, scheduler, dask_workers) as (ex, minimum, n):
+        size = block or block_size(spec.periods, len(pending), n, minimum)
+        futures = [ex.submit(run_points, spec_json, b) for b in _blocks(pending, size)]
         bar = tqdm(total=spec.size, initial=spec.size - len(pending), unit="run",
                    desc=f"sweep {spec.satellite.name} {' x '.join(spec.names)}",
                    disable=progress is False, delay=0 if progress else 1.0, smoothing=0.05)

@@ -177,13 +177,13 @@ class SweepStore:
         """Write the rows that gained points: data and checksums first, then the done mask."""
         if not self.dirty:
             return
-        rows = sorted(self.dirty)
+        runs = _runs(sorted(self.dirty))
         for name in _stored():
             arr = self.group[name]
-            for r in rows:
-                block = self.arrays[name][r * self.row:(r + 1) * self.row]
+            for r0, r1 in runs:  # one write per run of adjacent rows: Zarr writes its chunks together
+                block = self.arrays[name][r0 * self.row:r1 * self.row]
                 if arr.ndim == 2:
-                    arr[r, :] = block
+                    arr[r0:r1, :] = block.reshape(r1 - r0, self.row)
                 else:
                     arr[:] = block
         self.dirty.clear()
@@ -191,6 +191,17 @@ class SweepStore:
     def dataset(self) -> xr.Dataset:
         """The whole data set, loaded from disk."""
         return open_dataset(self.path)
+
+
+def _runs(rows: list) -> list:
+    """[(first, end)] of the runs of consecutive integers in the sorted list ``rows``."""
+    runs = []
+    for r in rows:
+        if runs and runs[-1][1] == r:
+            runs[-1][1] = r + 1
+        else:
+            runs.append([r, r + 1])
+    return [tuple(x) for x in runs]
 
 
 def _names():

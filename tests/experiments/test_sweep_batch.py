@@ -1,0 +1,113 @@
+"""Compiled blocks of sweep points give the per-point path's records, bit for bit.
+
+The truth is point.run_point: simulate() then outcome() in Python, one point at
+a time.  The grids below reach every stability class and both failure statuses
+that occur (a diverging RK4 step leaves the domain first), for the adaptive
+and the faithful method.
+"""
+from __future__ import annotations
+
+import math
+from collections import Counter
+
+import numpy as np
+import pytest
+
+from tethersim import load_preset
+from tethersim.analysis.classify import CLASSES
+from tethersim.experiments.sweep import SweepSpec, batch, run_point
+from tethersim.experiments.sweep.batch import run_block, servable
+
+SAT = load_preset("satI")
+GRIDS = {
+    "faithful": (("E1", [0.004, 0.3, 3.0, 30.0]), ("E2", [0.0427, 0.5, 50.0])),
+    "adaptive": (("E1", [0.002, 0.004, 0.006]), ("E2", [0.02, 0.0427, 0.06])),
+    "damping": (("c1", [0.0, 0.01, 1.0]), ("c2", [0.0, 0.01, 1.0])),
+}
+
+
+def _bits(rec):
+    """A record as exact text: repr of each value (NaN equal to NaN, -0.0 not 0.0)."""
+    return {k: repr(float(v)) for k, v in rec.items()}
+
+
+def _specs():
+    for theta0 in (0.0, math.pi / 6, 3.0):  # upright, the preset's start, nearly inverted
+        base = SAT.replace(initial=(SAT.initial[0], SAT.initial[1], theta0, 0.0, 0.0, 0.0))
+        for name, axes in GRIDS.items():
+            method = "faithful" if name == "faithful" else "adaptive"
+            yield SweepSpec(base, axes, periods=2.0, method=method)
+
+
+@pytest.fixture(scope="module")
+def blocks():
+    return [(spec, run_block(spec, list(range(spec.size)))) for spec in _specs()]
+
+
+def test_block_records_equal_the_per_point_records_bit_for_bit(blocks):
+    for spec, recs in blocks:
+        assert [k for k, _ in recs] == list(range(spec.size))
+        for k, rec in recs:
+            assert _bits(rec) == _bits(run_point(spec, k)), (spec.method, spec.values_at(k))
+
+
+def test_the_grids_reach_every_class_and_failure(blocks):
+    seen = Counter((rec["stability_class"], rec["status"]) for _, recs in blocks for _, rec in recs)
+    assert {c for c, _ in seen} == set(range(len(CLASSES)))
+    assert (CLASSES.index("failed"), 2) in seen  # left the domain (an unstable RK4 step)
+
+
+def test_a_record_does_not_depend_on_its_block(blocks):
+    spec, recs = blocks[1]
+    ks = list(range(spec.size))
+    rng = np.random.default_rng(3)
+    for size in (1, 2, 5):
+        order = rng.permutation(ks).tolist()
+        for start in range(0, len(order), size):
+            part = order[start:start + size]
+            assert [_bits(r) for _, r in run_block(spec, part)] == \
+                [_bits(recs[k][1]) for k in part]
+
+
+def test_points_the_block_cannot_serve_run_the_per_point_path(monkeypatch):
+    per_body = SAT.replace(density_mode="per-body")
+    free = SAT.replace(orbit="free")
+    assert servable(SweepSpec(SAT, (("E2", [0.0427]),), periods=1.0), SAT)
+    assert not servable(SweepSpec(per_body, (("E2", [0.0427]),), periods=1.0), per_body)
+    assert not servable(SweepSpec(free, (("E2", [0.0427]),), periods=1.0), free)
+    spec = SweepSpec(per_body, (("E2", [0.04, 0.0427]),), periods=0.5)
+    calls = []
+    monkeypatch.setattr(batch, "run_point", lambda s, k: calls.append(k) or run_point(s, k))
+    monkeypatch.setattr(batch, "_compiled", lambda *a: pytest.fail("per-body air in a block"))
+    recs = run_block(spec, [1, 0])
+    assert calls == [1, 0]
+    assert [_bits(r) for _, r in recs] == [_bits(run_point(spec, k)) for k in (1, 0)]
+
+
+@pytest.mark.parametrize("method", ["adaptive", "faithful"])
+def test_a_block_refuses_an_output_too_large_as_a_point_does(monkeypatch, method):
+    from tethersim.engine.guards import SizeLimitError
+    spec = SweepSpec(SAT, (("E2", [0.0427]),), periods=2.0, method=method)
+    monkeypatch.setenv("TETHERSIM_MAX_OUTPUT_BYTES", "1000")
+    for run in (lambda: run_point(spec, 0), lambda: run_block(spec, [0])):
+        with pytest.raises(SizeLimitError, match="TETHERSIM_MAX_OUTPUT_BYTES"):
+            run()
+
+
+def test_a_numpy_whose_sums_differ_sends_every_point_to_the_per_point_path(monkeypatch):
+    monkeypatch.setattr(batch, "sums_match_numpy", lambda: False)
+    assert not servable(SweepSpec(SAT, (("E2", [0.0427]),), periods=1.0), SAT)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("method", ["adaptive", "faithful"])
+def test_a_3d_model_runs_in_blocks_with_the_per_point_records(method):
+    spec = SweepSpec(SAT, (("E2", [0.0427, 0.06]),), periods=0.5, model="3d", method=method)
+    assert servable(spec, SAT)
+    recs = run_block(spec, [0, 1])
+    assert [_bits(r) for _, r in recs] == [_bits(run_point(spec, k)) for k in (0, 1)]
+
+
+def test_the_block_kernel_releases_the_gil():
+    from tethersim.experiments.sweep.kernel import sweep_block
+    assert sweep_block.targetoptions["nogil"]

@@ -1,0 +1,132 @@
+"""A block of sweep points: Python builds the inputs, one compiled call runs them all.
+
+Per point, Python only builds the satellite, its parameter vector, initial
+state and output grid, and (one LAPACK call for the block) the RK4
+amplification; ``kernel.sweep_block`` then integrates, checks the domain and
+measures every point without the GIL, and Python writes the records.  The
+records are the per-point path's (point.run_point) bit for bit
+(tests/experiments/test_sweep_batch.py) and do not depend on the block a point
+is in, so a resumed or distributed sweep is still identical to an
+uninterrupted one.
+
+A point the block cannot serve runs the per-point path: per-body air (its
+air vector depends on the run), a free orbit (it stops at re-entry between
+chunks), or an installed numpy whose summation the compiled means cannot
+reproduce (metrics_kernel.sums_match_numpy).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from tethersim.analysis.classify import classify
+from tethersim.analysis.metrics import SS_FRACTION, PitchMetrics
+from tethersim.analysis.metrics_kernel import sums_match_numpy
+from tethersim.engine.domain import MAX_STRETCH, reach
+from tethersim.engine.dynamics import has_com_orbit, initial_state
+from tethersim.engine.guards import check_simulation
+from tethersim.engine.integrators.select import specialised
+from tethersim.engine.linearise import rk4_amplifications
+from tethersim.engine.simulate import (
+    FAITHFUL_STEPS_PER_PERIOD,
+    MAX_STEPS_PER_PERIOD,
+    METRIC_SAMPLES_PER_PERIOD,
+    refined_grid,
+)
+from tethersim.experiments.sweep.kernel import COL_FIELDS, F_FIELDS, I_FIELDS, sweep_block
+from tethersim.experiments.sweep.point import record, run_point
+from tethersim.experiments.sweep.spec import ATOL_PER_RTOL, SweepSpec
+from tethersim.model.air.vector import uniform_air
+from tethersim.model.inputs import initial_model_state, parameter_vector
+from tethersim.model.registry import get_model, model_for_orbit, model_index
+
+_AIR = uniform_air()
+_F = {name: i for i, name in enumerate(F_FIELDS)}
+_I = {name: i for i, name in enumerate(I_FIELDS)}
+
+
+def servable(spec: SweepSpec, sat) -> bool:
+    """Whether a point with satellite ``sat`` runs in a compiled block (else run_point)."""
+    model = model_for_orbit(spec.model, sat.orbit)
+    # the 3-D models' roll guard (engine/domain.py) is not in the block kernel: per point
+    return (model == spec.model and has_com_orbit(model_index(model))
+            and get_model(model).geometry == "planar"
+            and sat.density_mode != "per-body" and sums_match_numpy())
+
+
+def run_block(spec: SweepSpec, ks: list) -> list:
+    """[(k, record)] of flat points ks of ``spec``, in the order of ks.
+
+    Parameters
+    ----------
+    spec : SweepSpec
+        The sweep.
+    ks : list of int
+        Flat grid points.
+
+    Returns
+    -------
+    list
+        (k, record) pairs; each record as point.run_point returns it.
+    """
+    sats = [spec.satellite_at(k) for k in ks]
+    block = [i for i, s in enumerate(sats) if servable(spec, s)]
+    records = dict(zip(block, _compiled([sats[i] for i in block], spec))) if block else {}
+    return [(k, records[i] if i in records else run_point(spec, k)) for i, k in enumerate(ks)]
+
+
+def _grid(t_end: float, n_out: int, refine: int, cache: dict) -> np.ndarray:
+    key = (t_end, n_out, refine)
+    if key not in cache:  # one grid for every point of the same orbit
+        cache[key] = refined_grid(t_end, n_out, refine)
+    return cache[key]
+
+
+def _compiled(sats: list, spec: SweepSpec) -> list:
+    """The records of points whose satellites are ``sats`` (all servable), one compiled call."""
+    m = model_index(spec.model)
+    lay = get_model(spec.model)
+    periods = float(spec.periods)  # as simulate() takes it
+    faithful = spec.method == "faithful"
+    n = len(sats)
+    P = np.stack([parameter_vector(s, spec.model) for s in sats])
+    Y0 = np.stack([initial_state(m, initial_model_state(s, spec.model), s.r0, s.r0 * s.omega)
+                   for s in sats])
+    n_steps = max(1, round(spec.steps_per_period * spec.periods))
+    n_out = max(2, round(spec.samples_per_period * spec.periods))
+    # the output-size guard simulate() applies to each point (engine/guards.py)
+    check_simulation(periods, n_steps if faithful else None, "rk4" if faithful else "adaptive",
+                     None if faithful else n_out, False)
+    if faithful:  # simulate._run_rk4: every step is a sample
+        span = np.array([periods * s.period / n_steps for s in sats])
+        T = np.empty((1, n_steps + 1))  # the RK4 loop writes its own times
+    else:  # simulate._run_adaptive: the metrics grid, refined from the output grid
+        refine = max(1, math.ceil(METRIC_SAMPLES_PER_PERIOD * periods / n_out))
+        span = np.array([periods * s.period for s in sats])
+        grids = {}
+        T = np.stack([_grid(t_end, n_out, refine, grids) for t_end in span])
+    geom = np.array([[reach(s) ** 2, s.l10, s.l20, MAX_STRETCH] for s in sats])
+    cols = np.array([lay.state.index(c) if c in lay.state else -1 for c in COL_FIELDS],
+                    dtype=np.int64)
+    rec_f = np.empty((n, len(F_FIELDS)))
+    rec_i = np.empty((n, len(I_FIELDS)), dtype=np.int64)
+    args = (_AIR, faithful, T, Y0, P, span, n_steps, spec.rtol, spec.rtol * ATOL_PER_RTOL,
+            int(MAX_STEPS_PER_PERIOD * periods), geom, cols, float(spec.tol), SS_FRACTION, rec_f, rec_i)
+    specialised(sweep_block, m, args)(m, *args)  # releases the GIL
+    amps = rk4_amplifications(sats, [s.period / FAITHFUL_STEPS_PER_PERIOD for s in sats],
+                              spec.model)
+    return [_record(rec_f[j], rec_i[j], amps[j], spec.tol) for j in range(n)]
+
+
+def _record(f: np.ndarray, i: np.ndarray, amplification: float, tol: float) -> dict:
+    status, nfev = int(i[_I["status"]]), int(i[_I["nfev"]])
+    if not i[_I["counts"]]:
+        return record(status, nfev, amplification, classify(None), None)
+    m = PitchMetrics(mean_pitch=float(f[_F["mean_pitch"]]),
+                     steady_state_pitch=float(f[_F["steady_state_pitch"]]),
+                     settling_time=float(f[_F["settling_time"]]),
+                     tumbled=bool(i[_I["tumbled"]]), upside_down=bool(i[_I["upside_down"]]))
+    measured = {name: float(f[_F[name]]) for name in F_FIELDS}
+    measured.update(tumbled=int(m.tumbled), upside_down=int(m.upside_down))
+    return record(status, nfev, amplification, classify(m, tol=tol), measured)

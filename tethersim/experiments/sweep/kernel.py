@@ -1,0 +1,159 @@
+"""A block of sweep points in one compiled, nogil call: integrate, check, measure.
+
+``sweep_block`` runs each point of a block through the engine's own compiled
+loop (``dop853_run`` or ``rk4_run``, called exactly as ``simulate`` calls them
+with ``progress=False``: same arguments, same single call, hence the same
+trajectory bit for bit), then, still in compiled code and without the GIL:
+
+* the domain check of engine/domain.py for a circular orbit (balloon reach,
+  tether stretch, over the samples before the first non-finite one);
+* outcome.py's rule: a point counts when its run ended ok, stayed in the
+  domain, has at least two samples and every one of them is finite;
+* for a counting point, the pitch metrics and the trail (analysis.metrics_kernel,
+  the same bits as metrics.py) and the largest family force on each
+  coordinate (evaluate's own compiled loops: _domain_scan, _family_force_peaks).
+
+Python then builds the block's inputs and writes the records
+(tethersim.experiments.sweep.batch).  What a point needs beyond this (per-body
+air, a free orbit) runs the per-point path instead.
+
+Layout of the outputs, per point j:
+
+``rec_f[j]``  mean pitch, steady-state pitch, settling time, trail δx, trail δy,
+              largest family force on δx, δy, θ (NaN where not computed)
+``rec_i[j]``  status code (0 ok, 1 non-finite, 2 failed or left the domain),
+              counts (0/1), tumbled, upside down, right-hand-side evaluations
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import literally, njit
+
+from tethersim.analysis.metrics_kernel import N_PITCH, pitch_metrics_into, window_mean
+from tethersim.engine.evaluate import _domain_scan, _family_force_peaks
+from tethersim.engine.integrators.borrow import borrow
+from tethersim.engine.integrators.dop853 import dop853_run
+from tethersim.engine.integrators.rk4 import rk4_run
+
+F_FIELDS = ("mean_pitch", "steady_state_pitch", "settling_time", "trail_delta_x",
+            "trail_delta_y", "max_force_delta_x", "max_force_delta_y", "max_force_theta")
+I_FIELDS = ("status", "counts", "tumbled", "upside_down", "nfev")
+# where the block reads each point's domain limits (GEOM[j]) and state columns (cols)
+GEOM_FIELDS = ("reach_squared", "l10", "l20", "max_stretch")
+COL_FIELDS = ("delta_x", "delta_y", "theta", "delta_z")  # delta_z: -1 for a planar model
+STATUS_OK, STATUS_NONFINITE, STATUS_FAILED = 0, 1, 2
+
+
+@njit(cache=True, nogil=True)
+def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_steps, geom,
+                cols, tol, ss_fraction, rec_f, rec_i, out_t, out_y, pw, counters, buf, pm):
+    # every array is borrowed here, once (integrators/borrow.py)
+    air, T, Y0, P, span, geom, cols = (borrow(air), borrow(T), borrow(Y0), borrow(P),
+                                       borrow(span), borrow(geom), borrow(cols))
+    rec_f, rec_i, out_t, out_y = borrow(rec_f), borrow(rec_i), borrow(out_t), borrow(out_y)
+    pw, counters = borrow(pw), borrow(counters)
+    buf, pm = borrow(buf), borrow(pm)
+    ns = Y0.shape[1]
+    ix, iy, ith = cols[0], cols[1], cols[2]
+    # the loops' flags and first row as run-time values: a constant would be typed as a
+    # literal and compile a second copy of each loop (same arithmetic, twice the compile)
+    locate = not faithful  # DOP853 locates the switches, the thesis's RK4 does not
+    one = np.int64(1)
+    for j in range(P.shape[0]):
+        y, p = Y0[j], P[j]
+        for i in range(p.shape[0]):
+            pw[i] = p[i]
+        for i in range(ns):
+            out_y[0, i] = y[i]
+        if faithful:  # simulate._run_rk4, progress=False: one call for every step
+            out_t[0] = 0.0
+            rows, _, st = rk4_run(model, air, 0.0, y, span[j], n_steps, one, p, pw, locate,
+                                  out_t, out_y, one)
+            n = 1 + rows
+            nfev = 4 * n_steps
+            status = STATUS_OK if st == 0 else STATUS_NONFINITE
+            t = out_t
+        else:  # simulate._run_adaptive, progress=False, circular orbit: one call
+            t = T[j]
+            for i in range(counters.shape[0]):
+                counters[i] = 0
+            _, _, n, st = dop853_run(model, air, 0.0, span[j], y, 0.0, p, pw, rtol, atol, locate,
+                                     t, out_y, one, max_steps, counters, math.inf)
+            nfev = counters[0]
+            status = STATUS_OK if st == 0 else (STATUS_NONFINITE if st == 1 else STATUS_FAILED)
+        # engine/domain.py's checks of a circular orbit, the same compiled pass
+        last, i_far, _, i_over, _, _ = _domain_scan(model, out_y[:n], p, ix, iy, cols[3],
+                                                    geom[j, 1], geom[j, 2], geom[j, 0],
+                                                    geom[j, 3])
+        if i_far >= 0 or i_over >= 0:
+            status = STATUS_FAILED  # "left-domain"
+        counts = status == STATUS_OK and last == n and n >= 2
+        for k in range(rec_f.shape[1]):
+            rec_f[j, k] = math.nan
+        rec_i[j, 0] = status
+        rec_i[j, 1] = 1 if counts else 0
+        rec_i[j, 2] = 0
+        rec_i[j, 3] = 0
+        rec_i[j, 4] = nfev
+        if not counts:
+            continue
+        threshold = pitch_metrics_into(t, out_y, n, ith, tol, ss_fraction, buf, pm)
+        rec_f[j, 0], rec_f[j, 1], rec_f[j, 2] = pm[0], pm[1], pm[2]
+        rec_i[j, 2] = 1 if pm[3] != 0.0 else 0
+        rec_i[j, 3] = 1 if pm[4] != 0.0 else 0
+        rec_f[j, 3] = window_mean(t, out_y, n, ix, threshold, buf)
+        rec_f[j, 4] = window_mean(t, out_y, n, iy, threshold, buf)
+        peaks = _family_force_peaks(model, air, t, out_y[:n], p)  # uniform air: p's densities
+        rec_f[j, 5], rec_f[j, 6], rec_f[j, 7] = peaks[ix], peaks[iy], peaks[ith]
+
+
+# nogil: the sweep's threads run blocks side by side
+@njit(cache=True, nogil=True)
+def sweep_block(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_steps, geom,
+                cols, tol, ss_fraction, rec_f, rec_i):
+    """Integrate and measure every point of a block (one compiled call, no GIL).
+
+    Parameters
+    ----------
+    model : int
+        Model index (a compile-time literal: one block loop per model); a
+        circular-orbit model.
+    air : ndarray
+        The uniform air vector (tethersim.model.air.vector.uniform_air).
+    faithful : bool
+        RK4 at a fixed step, switches not located (else DOP853, switches located).
+    T : ndarray
+        (points, samples): adaptive, each point's output grid (the metrics grid
+        of simulate, ending at its t_end); RK4, scratch.
+    Y0, P : ndarray
+        (points, state) initial states, overwritten; (points, parameters).
+    span : ndarray
+        Per point: the RK4 step [s], or the adaptive run's end time [s].
+    n_steps : int
+        RK4 steps (samples = n_steps + 1).
+    rtol, atol : float
+        Adaptive tolerances.
+    max_steps : int
+        Adaptive step limit (simulate's MAX_STEPS_PER_PERIOD x periods).
+    geom : ndarray
+        (points, 4): squared balloon reach [m²], l10, l20 [m], largest stretch.
+    cols : ndarray
+        int64 state columns of δx, δy, θ, δz (−1: none).
+    tol, ss_fraction : float
+        Settling band [rad] and steady-state fraction (metrics.py).
+    rec_f, rec_i : ndarray
+        Outputs (points, 8) float64 and (points, 5) int64: module docstring.
+    """
+    literally(model)
+    ns = Y0.shape[1]
+    rows = T.shape[1]
+    out_t = np.empty(rows)
+    out_y = np.empty((rows, ns))
+    pw = np.empty(P.shape[1])
+    counters = np.zeros(5, dtype=np.int64)
+    buf = np.empty(rows)
+    pm = np.empty(N_PITCH)
+    _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_steps, geom,
+                cols, tol, ss_fraction, rec_f, rec_i, out_t, out_y, pw, counters, buf, pm)
