@@ -204,7 +204,7 @@ def validate_rhs(rep: Report, S, lamb, pydy_f):
 
 
 def _tether_margins(y, p):
-    from tethersim.engine.dynamics import tether_margins
+    from tethersim.generated.derived import tether_margins  # the model of the C port
     g = np.empty(2)
     tether_margins(np.ascontiguousarray(y, dtype=float), p, g)
     return g

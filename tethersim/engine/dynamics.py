@@ -69,6 +69,16 @@ def model_rhs(model, t, y, p, dydt):
     raise NotImplementedError("model_rhs is only callable from compiled code")
 
 
+def model_size(model):
+    """Length of model ``model``'s integrated state, a compile-time constant (literal model).
+
+    The step functions loop over the state with this bound rather than the array's
+    run-time length, so LLVM sees a constant trip count (the C ports' ``#define NS``)
+    and unrolls the stage sums; each component's arithmetic is unchanged.
+    """
+    raise NotImplementedError("model_size is only callable from compiled code")
+
+
 def model_tether_margins(model, y, p, g):
     """g[j] = λ_j − l_j0 of model ``model`` (compiled code, literal model only)."""
     raise NotImplementedError("model_tether_margins is only callable from compiled code")
@@ -92,6 +102,17 @@ def _model_rhs(model, t, y, p, dydt):
 
     def impl(model, t, y, p, dydt):
         rhs(t, y, p, dydt)
+    return impl
+
+
+@overload(model_size, inline="always", prefer_literal=True)
+def _model_size(model):
+    if (k := literal_index(model)) is None:
+        return None
+    n = state_size(k)
+
+    def impl(model):
+        return n
     return impl
 
 

@@ -19,12 +19,11 @@ import math
 import numpy as np
 from numba import literally, njit
 
-from tethersim.engine.dynamics import derivative, model_tether_margins
+from tethersim.engine.dynamics import derivative, model_size, model_tether_margins
 from tethersim.engine.integrators import switching
 from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.steps import (
     N_K,
-    copy_into,
     dop853_dense,
     dop853_error_norm,
     dop853_interpolate,
@@ -79,7 +78,7 @@ def _dop853_loop(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, 
     air = borrow(air)
     counters, work, y_new, f, F, g = (borrow(counters), borrow(work), borrow(y_new), borrow(f),
                                       borrow(F), borrow(g))
-    n = y.shape[0]
+    n = model_size(model)  # a compile-time constant: the loops below unroll
     K = work[:N_K]
     ys = work[N_K]
     g0, g1 = g[0], g[1]
@@ -108,7 +107,7 @@ def _dop853_loop(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, 
             h_try = min(h, t_end - t)
             dop853_step(model, air, t, y, f, h_try, p, pw, K, ys, y_new)
             counters[0] += 12
-            err = dop853_error_norm(K, h_try, y, y_new, rtol, atol)
+            err = dop853_error_norm(n, K, h_try, y, y_new, rtol, atol)
             if not math.isfinite(err):
                 err = 1e10  # a NaN/inf stage: reject and shrink the step (MIN_FACTOR)
             if err < 1.0:
@@ -134,10 +133,11 @@ def _dop853_loop(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, 
             dop853_dense(model, air, t, y, y_new, h_try, p, pw, K, ys, F)
             counters[0] += 3
         while i_out < out_t.shape[0] and out_t[i_out] <= t_new:
-            dop853_interpolate(F, y, (out_t[i_out] - t) / h_try, out_y[i_out])
+            dop853_interpolate(n, F, y, (out_t[i_out] - t) / h_try, out_y[i_out])
             i_out += 1
-        copy_into(y, y_new)
-        copy_into(f, K[12])
+        for i in range(n):
+            y[i] = y_new[i]
+            f[i] = K[12, i]
         t = t_new
         h = h_next
         for i in range(n):

@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import literally, njit
 
-from tethersim.engine.dynamics import model_tether_margins
+from tethersim.engine.dynamics import model_size, model_tether_margins
 from tethersim.engine.integrators import switching
 from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.steps import copy_into, rk4_step
@@ -64,7 +64,7 @@ def _rk4_loop(model, air, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y
     y, p, pw, out_t, out_y = borrow(y), borrow(p), borrow(pw), borrow(out_t), borrow(out_y)
     air = borrow(air)
     work, y_new, g = borrow(work), borrow(y_new), borrow(g)
-    n = y.shape[0]
+    n = model_size(model)  # a compile-time constant: the loops below unroll
     row = row0
     switches = 0
     for k in range(1, n_steps + 1):
@@ -74,10 +74,12 @@ def _rk4_loop(model, air, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y
                                     g[0], g[1], g[2])
         else:
             rk4_step(model, air, t, y, h, p, pw, work, y_new)
-            copy_into(y, y_new)
+            for i in range(n):
+                y[i] = y_new[i]
         if k % stride == 0:
             out_t[row] = t0 + k * h
-            copy_into(out_y[row], y)
+            for i in range(n):
+                out_y[row, i] = y[i]
             row += 1
         for i in range(n):
             if not math.isfinite(y[i]):

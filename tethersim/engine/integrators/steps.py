@@ -20,7 +20,7 @@ import math
 import numpy as np
 from numba import njit
 
-from tethersim.engine.dynamics import derivative
+from tethersim.engine.dynamics import derivative, model_size
 from tethersim.engine.integrators.dop853_tableau import E3, E5, N_STAGES, A, B, C, D
 
 
@@ -56,7 +56,7 @@ def rk4_step(model, air, t, y, h, p, pw, work, y_new):
     y_new : ndarray
         Output: the state at t + h.
     """
-    n = y.shape[0]
+    n = model_size(model)
     ys = work[4]
     for s in range(4):
         if s == 0:
@@ -79,16 +79,16 @@ if not np.array_equal(A[N_STAGES, :N_STAGES], B):
 
 
 @njit(cache=True, inline="always")
-def _stage_state(s, y, h, K, ys):
+def _stage_state(n, s, y, h, K, ys):
     """ys = y + h Σ_{j<s} A[s, j] K[j]: the state at which stage s is evaluated.
 
     Four state components at a time, each in its own scalar accumulator: the
     sums are chains of dependent additions, and four independent chains keep
     the adder busy (as a C compiler's outer-loop vectorisation does).  Each
     component still sums A[s, 0] K[0] + A[s, 1] K[1] + ... in that order, so
-    the rounding is that of a plain per-component loop.
+    the rounding is that of a plain per-component loop.  n: the state's length
+    (dynamics.model_size, a compile-time constant).
     """
-    n = y.shape[0]
     i = 0
     while i + 4 <= n:
         a0 = 0.0
@@ -131,19 +131,21 @@ def dop853_step(model, air, t, y, f, h, p, pw, K, ys, y_new):
     y_new receives the state at t + h; K[0..12] the stages, K[12] = f(t + h,
     y_new) (first same as last); ys is a stage-state scratch vector.
     """
-    copy_into(K[0], f)
+    n = model_size(model)
+    for i in range(n):
+        K[0, i] = f[i]
     for s in range(1, N_STAGES + 1):
         # row N_STAGES of A is B: the FSAL stage is evaluated at the solution itself
-        _stage_state(s, y, h, K, ys)
+        _stage_state(n, s, y, h, K, ys)
         if s == N_STAGES:
-            copy_into(y_new, ys)
+            for i in range(n):
+                y_new[i] = ys[i]
         derivative(model, air, t + C[s] * h, ys, p, pw, K[s])
 
 
 @njit(cache=True)
-def dop853_error_norm(K, h, y, y_new, rtol, atol):
-    """Scaled RMS error estimate of the last step (DOP853's 5th/3rd-order blend)."""
-    n = y.shape[0]
+def dop853_error_norm(n, K, h, y, y_new, rtol, atol):
+    """Scaled RMS error estimate of the last step (DOP853's 5th/3rd-order blend); n = len(y)."""
     e5, e3 = 0.0, 0.0
     for i in range(n):
         scale = atol + max(abs(y[i]), abs(y_new[i])) * rtol
@@ -161,9 +163,9 @@ def dop853_error_norm(K, h, y, y_new, rtol, atol):
 @njit(cache=True)
 def dop853_dense(model, air, t, y, y_new, h, p, pw, K, ys, F):
     """Coefficients F (7, n) of the 7th-order interpolant on [t, t + h]."""
-    n = y.shape[0]
+    n = model_size(model)
     for s in range(N_STAGES + 1, N_K):
-        _stage_state(s, y, h, K, ys)
+        _stage_state(n, s, y, h, K, ys)
         derivative(model, air, t + C[s] * h, ys, p, pw, K[s])
     for i in range(n):
         dy = y_new[i] - y[i]
@@ -178,9 +180,8 @@ def dop853_dense(model, air, t, y, y_new, h, p, pw, K, ys, F):
 
 
 @njit(cache=True)
-def dop853_interpolate(F, y, x, out):
-    """Dense output at fraction x of the step (0 <= x <= 1) into out."""
-    n = y.shape[0]
+def dop853_interpolate(n, F, y, x, out):
+    """Dense output at fraction x of the step (0 <= x <= 1) into out; n = len(y)."""
     m = F.shape[0]
     for i in range(n):
         acc = 0.0
