@@ -102,7 +102,7 @@ def first_violation(res, altitude=None) -> Violation | None:
     last, i_far, d_far, i_over, j_over, s_over = domain_scan(
         lay.index, np.ascontiguousarray(res.states), res.parameters,
         names.index("delta_x"), names.index("delta_y"),
-        names.index("delta_z") if "delta_z" in names else -1, sat.l10, sat.l20,
+        names.index("delta_z") if "delta_z" in names else -1, sat.l10, sat.l20, sat.a, sat.b,
         reach(sat) ** 2, MAX_STRETCH)
     candidates = []
     h_min = getattr(sat, "reentry_altitude", REENTRY_ALTITUDE)

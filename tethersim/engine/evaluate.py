@@ -143,7 +143,7 @@ def _tether_margin_series(model, Y, p):
 
 
 @njit(cache=True, nogil=True)
-def _domain_scan(model, Y, p, ix, iy, iz, l10, l20, reach2, max_stretch):
+def _domain_scan(model, Y, p, ix, iy, iz, l10, l20, a, b, reach2, max_stretch):
     """One pass over the samples for engine/domain.py (the same arithmetic as numpy's).
 
     Returns
@@ -153,6 +153,14 @@ def _domain_scan(model, Y, p, ix, iy, iz, l10, l20, reach2, max_stretch):
         balloon's squared distance δx² + δy² (+ δz² when iz >= 0) > reach2, or -1,
         and that distance²; first sample with a tether's λ_j / l_j0 > max_stretch,
         or -1, the tether (0 or 1, the more stretched) and its λ / l0).
+
+    Notes
+    -----
+    The tether lengths are evaluated only where a stretch is possible: tether j runs
+    from the balloon (at distance d from the boom's COM) to a boom end (b or a from
+    it), so λ_j <= d + end_j, and λ_j > max_stretch l_j0 needs d > max_stretch l_j0
+    − end_j.  The first sample over the limit is the same; most runs never come
+    near it, and the scan costs a few nanoseconds a sample instead of two hypot.
     """
     literally(model)
     n, m = Y.shape
@@ -172,9 +180,17 @@ def _domain_scan(model, Y, p, ix, iy, iz, l10, l20, reach2, max_stretch):
         if d > reach2:
             i_far, d_far = i, d
             break
+    # below this balloon distance no tether can be over the limit (Notes); the margin
+    # 1e-9 keeps the bound conservative against the rounding of d
+    near = max(min(max_stretch * l10 - b, max_stretch * l20 - a), 0.0) * (1.0 - 1e-9)
     g = np.empty(2)
     i_over, j_over, s_over = -1, 0, 0.0
     for i in range(last):
+        d = Y[i, ix] ** 2 + Y[i, iy] ** 2
+        if iz >= 0:
+            d = d + Y[i, iz] ** 2
+        if d <= near * near:
+            continue
         model_tether_margins(model, Y[i], p, g)
         s0 = g[0] / l10 + 1.0
         s1 = g[1] / l20 + 1.0
@@ -208,6 +224,6 @@ def tether_margin_series(model: int, Y, p) -> np.ndarray:
     return call(_tether_margin_series, model, Y, p)
 
 
-def domain_scan(model: int, Y, p, ix, iy, iz, l10, l20, reach2, max_stretch) -> tuple:
+def domain_scan(model: int, Y, p, ix, iy, iz, l10, l20, a, b, reach2, max_stretch) -> tuple:
     """One compiled pass over the samples for engine/domain.py (see :func:`_domain_scan`)."""
-    return call(_domain_scan, model, Y, p, ix, iy, iz, l10, l20, reach2, max_stretch)
+    return call(_domain_scan, model, Y, p, ix, iy, iz, l10, l20, a, b, reach2, max_stretch)

@@ -106,7 +106,7 @@ def _compiled(sats: list, spec: SweepSpec) -> list:
         span = np.array([periods * s.period for s in sats])
         grids = {}
         T = np.stack([_grid(t_end, n_out, refine, grids) for t_end in span])
-    geom = np.array([[reach(s) ** 2, s.l10, s.l20, MAX_STRETCH] for s in sats])
+    geom = np.array([[reach(s) ** 2, s.l10, s.l20, MAX_STRETCH, s.a, s.b] for s in sats])
     cols = np.array([lay.state.index(c) if c in lay.state else -1 for c in COL_FIELDS],
                     dtype=np.int64)
     rec_f = np.empty((n, len(F_FIELDS)))

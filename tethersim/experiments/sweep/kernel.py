@@ -41,7 +41,7 @@ F_FIELDS = ("mean_pitch", "steady_state_pitch", "settling_time", "trail_delta_x"
             "trail_delta_y", "max_force_delta_x", "max_force_delta_y", "max_force_theta")
 I_FIELDS = ("status", "counts", "tumbled", "upside_down", "nfev")
 # where the block reads each point's domain limits (GEOM[j]) and state columns (cols)
-GEOM_FIELDS = ("reach_squared", "l10", "l20", "max_stretch")
+GEOM_FIELDS = ("reach_squared", "l10", "l20", "max_stretch", "a", "b")
 COL_FIELDS = ("delta_x", "delta_y", "theta", "delta_z")  # delta_z: -1 for a planar model
 STATUS_OK, STATUS_NONFINITE, STATUS_FAILED = 0, 1, 2
 
@@ -85,8 +85,8 @@ def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
             status = STATUS_OK if st == 0 else (STATUS_NONFINITE if st == 1 else STATUS_FAILED)
         # engine/domain.py's checks of a circular orbit, the same compiled pass
         last, i_far, _, i_over, _, _ = _domain_scan(model, out_y[:n], p, ix, iy, cols[3],
-                                                    geom[j, 1], geom[j, 2], geom[j, 0],
-                                                    geom[j, 3])
+                                                    geom[j, 1], geom[j, 2], geom[j, 4],
+                                                    geom[j, 5], geom[j, 0], geom[j, 3])
         if i_far >= 0 or i_over >= 0:
             status = STATUS_FAILED  # "left-domain"
         counts = status == STATUS_OK and last == n and n >= 2
@@ -138,7 +138,7 @@ def sweep_block(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
     max_steps : int
         Adaptive step limit (simulate's MAX_STEPS_PER_PERIOD x periods).
     geom : ndarray
-        (points, 4): squared balloon reach [m²], l10, l20 [m], largest stretch.
+        (points, 6): squared balloon reach [m²], l10, l20 [m], largest stretch, a, b [m].
     cols : ndarray
         int64 state columns of δx, δy, θ, δz (−1: none).
     tol, ss_fraction : float
