@@ -1,8 +1,10 @@
 """``python -m derive [OUTDIR]``: regenerate generated/ (default) from the derivation."""
 from __future__ import annotations
 
+import os
 import sys
 import time
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 from . import codegen, orbit_codegen
@@ -16,37 +18,59 @@ from .three_d.models3d import DEFINITIONS_3D
 from .three_d.pipeline3d import derive3d
 
 
+def _planar(out: Path) -> list:
+    """The thesis's four variants and their layout; lines to print."""
+    kin = planar_kinematics()
+    sub = state_substitution()
+    length_defs = {lam: d.subs(sub) for lam, d in kin.tether_length_defs.items()}
+    lines = []
+    for defn in DEFINITIONS:
+        fname = codegen.module_filename(defn.name)
+        (out / fname).write_text(codegen.module_source(derive(defn), length_defs, kin))
+        lines.append(f"  {defn.name:<17} -> {out.name}/{fname}")
+    (out / "layout.py").write_text(codegen.layout_source(FAMILY_ORDER))
+    return lines
+
+
+def _three_d(out: Path) -> list:
+    """The 3-D models, their layout and dispatch."""
+    lines = []
+    geometry3d = codegen3d.geometry_lines()
+    for defn in DEFINITIONS_3D:
+        fname = codegen3d.module_filename(defn.name)
+        (out / fname).write_text(codegen3d.module_source(derive3d(defn), geometry3d))
+        lines.append(f"  {defn.name:<19} -> {out.name}/{fname}")
+    (out / "layout3d.py").write_text(codegen3d.layout_source(DEFINITIONS_3D))
+    (out / "dispatch3d.py").write_text(codegen3d.dispatch_source(DEFINITIONS_3D))
+    return lines
+
+
+def _free(out: Path) -> list:
+    """The free-orbit models (issue 12), own layout."""
+    return [f"  {f[:-3].replace('_', '-'):<17} -> {out.name}/{f}"
+            for f in orbit_codegen.write_free_models(out)]
+
+
+def _free3d(out: Path) -> list:
+    """The 3-D models on a free orbit, own layout."""
+    return [f"  {d.name:<24} -> {out.name}/{f}"
+            for f, d in zip(free3d_codegen.write_free3d_models(out), FREE3D_DEFINITIONS)]
+
+
+GROUPS = (_planar, _three_d, _free, _free3d)  # independent: derived side by side
+
+
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     out = Path(argv[0]) if argv else Path(__file__).resolve().parent.parent / "generated"
     out.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
-    kin = planar_kinematics()
-    sub = state_substitution()
-    length_defs = {lam: d.subs(sub) for lam, d in kin.tether_length_defs.items()}
-    names = []
-    for defn in DEFINITIONS:
-        model = derive(defn)
-        fname = codegen.module_filename(defn.name)
-        (out / fname).write_text(codegen.module_source(model, length_defs, kin))
-        names.append(fname[:-3])
-        print(f"  {defn.name:<17} -> {out.name}/{fname}")
-    (out / "layout.py").write_text(codegen.layout_source(FAMILY_ORDER))
-    names3d = []
-    geometry3d = codegen3d.geometry_lines()
-    for defn in DEFINITIONS_3D:
-        fname = codegen3d.module_filename(defn.name)
-        (out / fname).write_text(codegen3d.module_source(derive3d(defn), geometry3d))
-        names3d.append(fname[:-3])
-        print(f"  {defn.name:<19} -> {out.name}/{fname}")
-    (out / "layout3d.py").write_text(codegen3d.layout_source(DEFINITIONS_3D))
-    (out / "dispatch3d.py").write_text(codegen3d.dispatch_source(DEFINITIONS_3D))
-    free = orbit_codegen.write_free_models(out)  # free orbit (issue 12), own layout
-    for fname in free:
-        print(f"  {fname[:-3].replace('_', '-'):<17} -> {out.name}/{fname}")
-    free3d = free3d_codegen.write_free3d_models(out)  # 3-D on a free orbit, own layout
-    for fname, defn in zip(free3d, FREE3D_DEFINITIONS):
-        print(f"  {defn.name:<24} -> {out.name}/{fname}")
+    # the four families share nothing but their inputs: one process each, as many at a
+    # time as there are cores (each writes its own files; the output is the same bytes)
+    workers = min(len(GROUPS), os.cpu_count() or 1)
+    with ProcessPoolExecutor(max_workers=workers) as pool:
+        for future in [pool.submit(group, out) for group in GROUPS]:
+            print("\n".join(future.result()))
     from .orbit import FREE_DEFINITIONS
     # one registry of every model, in one order: the thesis variants, 3-D, free orbit, 3-D free
     every = (tuple(DEFINITIONS) + tuple(DEFINITIONS_3D) + tuple(FREE_DEFINITIONS)
@@ -63,8 +87,8 @@ def main(argv=None) -> int:
             "MODELS = {", *(f"    {d.name!r}: {n}," for d, n in zip(every, modules)), "}", ""]
     (out / "__init__.py").write_text("\n".join(init))
     (out / "dispatch.py").write_text(codegen.dispatch_source(every))
-    print(f"derive: {len(names) + len(names3d) + len(free) + len(free3d)} models in "
-          f"{time.perf_counter() - t0:.1f} s")
+    print(f"derive: {len(every)} models in {time.perf_counter() - t0:.1f} s "
+          f"({workers} processes)")
     return 0
 
 

@@ -19,6 +19,7 @@ does not match their data are recomputed, with a StoreRepaired warning.
 from __future__ import annotations
 
 import json
+import threading
 import warnings
 from pathlib import Path
 
@@ -81,6 +82,8 @@ class SweepStore:
     def __init__(self, path, spec: SweepSpec, restart: bool = False):
         self.path = Path(path)
         self.spec = spec
+        self.group = None
+        self._creating, self._create_error = None, None
         self.lock = StoreLock(self.path).acquire()  # before looking: no second writer
         try:
             self._open(restart)
@@ -89,8 +92,12 @@ class SweepStore:
             raise
 
     def close(self) -> None:
-        """Release the writer lock (the data stay readable)."""
-        self.lock.release()
+        """Release the writer lock (the data stay readable), once a new store is written."""
+        try:
+            if self._creating is not None:
+                self._creating.join()
+        finally:
+            self.lock.release()
 
     def _open(self, restart: bool) -> None:
         spec = self.spec
@@ -125,14 +132,34 @@ class SweepStore:
                                        f".zgroup); run again with --restart to discard it")
                 raise StoreMismatch(f"{self.path} exists and is not a sweep store; choose another --out")
             ds = _empty_dataset(spec)
+            self.arrays = {v: ds[v].values.reshape(-1).copy() for v in _stored()}
+            # written on a thread: the first points compute (without the GIL) while Zarr
+            # writes the empty store, a serial ~0.2 s that bounded short sweeps; every
+            # flush, the lock's release and dataset() wait for it (_created)
+            self._creating = threading.Thread(target=self._create, args=(ds,),
+                                              name="tethersim-store-create")
+            self._creating.start()
+        self.row = spec.shape[-1]  # points per chunk (one grid row)
+        self.dirty = set()
+
+    def _create(self, ds: xr.Dataset) -> None:
+        try:
             encoding = {v: {"chunks": self._chunks()} for v in list(ds.data_vars)}
             # metadata never changes after creation (flushes write chunks only), so it
             # is consolidated once; Zarr format 2, where consolidation is in the spec
             ds.to_zarr(self.path, mode="w", encoding=encoding, consolidated=True, zarr_format=2)
-            self.arrays = {v: ds[v].values.reshape(-1).copy() for v in _stored()}
-        self.row = spec.shape[-1]  # points per chunk (one grid row)
-        self.group = zarr.open_group(str(self.path), mode="r+")
-        self.dirty = set()
+        except BaseException as exc:  # noqa: BLE001 - re-raised by _created in the caller
+            self._create_error = exc
+
+    def _created(self) -> None:
+        """Wait for a new store's files (written on a thread); raise what writing them raised."""
+        if self._creating is not None:
+            self._creating.join()
+            self._creating = None
+            if self._create_error is not None:
+                raise self._create_error
+        if self.group is None:
+            self.group = zarr.open_group(str(self.path), mode="r+")
 
     def _read_verified(self) -> dict:
         try:
@@ -175,6 +202,7 @@ class SweepStore:
 
     def flush(self) -> None:
         """Write the rows that gained points: data and checksums first, then the done mask."""
+        self._created()
         if not self.dirty:
             return
         runs = _runs(sorted(self.dirty))
@@ -190,6 +218,7 @@ class SweepStore:
 
     def dataset(self) -> xr.Dataset:
         """The whole data set, loaded from disk."""
+        self._created()
         return open_dataset(self.path)
 
 
