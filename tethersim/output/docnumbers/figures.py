@@ -159,3 +159,8 @@ QUANTITIES.update(_roll.QUANTITIES)
 # every roll figure compiles the 3-D kernels (jacobian ~15 s cold) or runs them for 40-50
 # orbits: the slow tier (make test-slow, CI) checks them all
 FIGURES += [replace(f, slow=True) for f in _roll.FIGURES]
+
+from tethersim.output.docnumbers import figures_air as _air  # noqa: E402
+
+QUANTITIES.update(_air.QUANTITIES)
+FIGURES += _air.FIGURES
