@@ -6,8 +6,8 @@ parameter vector; the model's own layout (number of coordinates, families)
 comes from its generated module.
 
 The public functions are called from Python with a plain int model index: they
-pick the compiled loop of that literal once (integrators.select.specialised)
-and call it directly.  Called through numba's dispatcher instead, a literal
+pick the compiled loop of that literal once and call it directly
+(integrators.select.call).  Called through numba's dispatcher instead, a literal
 argument sends every call down its type-inference slow path (~1-20 ms a call,
 more than a 5-orbit run; it made every sweep point's outcome cost that).
 """
@@ -142,6 +142,15 @@ def _tether_margin_series(model, Y, p):
     return out
 
 
+@njit(cache=True, inline="always")
+def _balloon_distance2(Y, i, ix, iy, iz):
+    """δx² + δy² (+ δz² when iz >= 0) of sample i: numpy's arithmetic (x**2 is x*x)."""
+    d = Y[i, ix] ** 2 + Y[i, iy] ** 2
+    if iz >= 0:
+        d = d + Y[i, iz] ** 2
+    return d
+
+
 @njit(cache=True, nogil=True)
 def _domain_scan(model, Y, p, ix, iy, iz, l10, l20, a, b, reach2, max_stretch):
     """One pass over the samples for engine/domain.py (the same arithmetic as numpy's).
@@ -174,9 +183,7 @@ def _domain_scan(model, Y, p, ix, iy, iz, l10, l20, a, b, reach2, max_stretch):
             break
     i_far, d_far = -1, 0.0
     for i in range(last):
-        d = Y[i, ix] ** 2 + Y[i, iy] ** 2
-        if iz >= 0:
-            d = d + Y[i, iz] ** 2
+        d = _balloon_distance2(Y, i, ix, iy, iz)
         if d > reach2:
             i_far, d_far = i, d
             break
@@ -186,10 +193,7 @@ def _domain_scan(model, Y, p, ix, iy, iz, l10, l20, a, b, reach2, max_stretch):
     g = np.empty(2)
     i_over, j_over, s_over = -1, 0, 0.0
     for i in range(last):
-        d = Y[i, ix] ** 2 + Y[i, iy] ** 2
-        if iz >= 0:
-            d = d + Y[i, iz] ** 2
-        if d <= near * near:
+        if _balloon_distance2(Y, i, ix, iy, iz) <= near * near:
             continue
         model_tether_margins(model, Y[i], p, g)
         s0 = g[0] / l10 + 1.0
