@@ -20,6 +20,7 @@ from numba import literally, njit
 from numba.extending import overload
 
 from tethersim.engine.dynamics import KERNELS, literal_index, model_densities, model_tether_margins
+from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.select import call
 from tethersim.model.air.vector import UNIFORM
 from tethersim.model.registry import MODELS
@@ -73,6 +74,27 @@ def _model_shape(model):
     return impl
 
 
+@njit(cache=True, nogil=True)
+def _forces_loop(model, air, T, Y, p, pw, out, q, peaks):
+    # the caller holds every array for the call: all are borrowed here (module docstring)
+    air, T, Y, p, pw = borrow(air), borrow(T), borrow(Y), borrow(p), borrow(pw)
+    out, q, peaks = borrow(out), borrow(q), borrow(peaks)
+    nf, nq = model_shape(model)
+    for i in range(Y.shape[0]):
+        # pw equals p in uniform air; per-body air writes the bodies' densities into it
+        if air[0] != UNIFORM:
+            model_densities(model, T[i], Y[i], p, pw, air)
+        if out.shape[0] == 0:  # peaks only
+            model_family_forces(model, Y[i], pw, q)
+            for f in range(nf):
+                for k in range(nq):
+                    a = abs(q[f, k])
+                    if a > peaks[k]:
+                        peaks[k] = a
+        else:
+            model_family_forces(model, Y[i], pw, out[i])
+
+
 @njit(cache=True, nogil=True)  # nogil: sweeps evaluate forces on threads
 def _family_forces_series(model, air, T, Y, p):
     """Q[i, f, k]: generalized force of family f on coordinate k at sample (T[i], Y[i]) (SI).
@@ -81,15 +103,8 @@ def _family_forces_series(model, air, T, Y, p):
     """
     literally(model)
     nf, nq = model_shape(model)
-    n = Y.shape[0]
-    out = np.zeros((n, nf, nq))
-    pw = p.copy()
-    for i in range(n):
-        par = p
-        if air[0] != UNIFORM:
-            model_densities(model, T[i], Y[i], p, pw, air)
-            par = pw
-        model_family_forces(model, Y[i], par, out[i])
+    out = np.zeros((Y.shape[0], nf, nq))
+    _forces_loop(model, air, T, Y, p, p.copy(), out, np.empty((nf, nq)), np.empty(0))
     return out
 
 
@@ -99,8 +114,9 @@ def _jacobi_series(model, Y, p):
     literally(model)
     n = Y.shape[0]
     out = np.empty(n)
+    Y, p, o = borrow(Y), borrow(p), borrow(out)  # ``out`` lives to the return
     for i in range(n):
-        out[i] = model_jacobi(model, Y[i], p)
+        o[i] = model_jacobi(model, Y[i], p)
     return out
 
 
@@ -114,21 +130,10 @@ def _family_force_peaks(model, air, T, Y, p):
     """
     literally(model)
     nf, nq = model_shape(model)
-    out = np.zeros(nq)
-    q = np.zeros((nf, nq))
-    pw = p.copy()
-    for i in range(Y.shape[0]):
-        par = p
-        if air[0] != UNIFORM:
-            model_densities(model, T[i], Y[i], p, pw, air)
-            par = pw
-        model_family_forces(model, Y[i], par, q)
-        for f in range(nf):
-            for k in range(nq):
-                a = abs(q[f, k])
-                if a > out[k]:
-                    out[k] = a
-    return out
+    peaks = np.zeros(nq)
+    _forces_loop(model, air, T, Y, p, p.copy(), np.empty((0, nf, nq)), np.empty((nf, nq)),
+                 peaks)
+    return peaks
 
 
 @njit(cache=True)
@@ -137,8 +142,9 @@ def _tether_margin_series(model, Y, p):
     literally(model)
     n = Y.shape[0]
     out = np.empty((n, 2))
+    Y, p, o = borrow(Y), borrow(p), borrow(out)  # ``out`` lives to the return
     for i in range(n):
-        model_tether_margins(model, Y[i], p, out[i])
+        model_tether_margins(model, Y[i], p, o[i])
     return out
 
 
@@ -172,6 +178,7 @@ def _domain_scan(model, Y, p, ix, iy, iz, l10, l20, a, b, reach2, max_stretch):
     near it, and the scan costs a few nanoseconds a sample instead of two hypot.
     """
     literally(model)
+    Y, p = borrow(Y), borrow(p)
     n, m = Y.shape
     last = n
     for i in range(n):
