@@ -25,11 +25,19 @@ from tethersim.experiments.sweep import (
     SweepSpec,
     run_sweep,
 )
+from tethersim.experiments.sweep import store as store_module
 from tethersim.experiments.sweep.lock import StoreLock
 
 ROOT = Path(__file__).parents[2]
 AXES = (("E1", [0.0038, 0.0042]), ("E2", [0.041, 0.043, 0.045]))  # rows are E2 values
 PERIODS = 0.2  # short runs: the faults, not the physics, are under test
+
+
+@pytest.fixture(autouse=True)
+def row_chunks(monkeypatch):
+    # one chunk per grid row, as a sweep of more than CHUNK_POINTS points has: a fault
+    # then hits one row (this 2 x 3 grid is otherwise one chunk per variable)
+    monkeypatch.setattr(store_module, "CHUNK_POINTS", 1)
 
 
 def _spec():

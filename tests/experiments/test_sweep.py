@@ -64,14 +64,24 @@ def test_sweep_grid_labels_carry_units_and_class_meanings(reference):
     assert reference.stability_class.attrs["flag_meanings"].split()[0] == "stable"
 
 
-def test_interrupted_sweep_resumes_to_the_uninterrupted_data(reference, tmp_path):
+def paced(monkeypatch, seconds=0.05):
+    """Points that take ``seconds`` longer (data unchanged): an interruption then lands
+    while points are pending, however fast the machine computes them."""
+    from tethersim.experiments.sweep import runner
+    fast = runner.run_points
+    monkeypatch.setattr(runner, "run_points", lambda *a: (time.sleep(seconds), fast(*a))[1])
+
+
+def test_interrupted_sweep_resumes_to_the_uninterrupted_data(reference, tmp_path, monkeypatch):
     out = tmp_path / "sweep.zarr"
+    paced(monkeypatch)
     with pytest.raises(SweepInterrupted) as info:
         run_sweep(_spec(), out, workers=2, progress=False, stop_after=2)
     partial = xr.open_zarr(out).load()
     n_done = int(partial.done.sum())
     assert 2 <= n_done < partial.done.size, "the interruption kept the finished points only"
     assert str(out) in str(info.value)
+    monkeypatch.undo()
     resumed = run_sweep(_spec(), out, workers=1, progress=False).dataset()
     xr.testing.assert_identical(resumed, reference)
 

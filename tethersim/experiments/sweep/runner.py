@@ -75,8 +75,16 @@ def block_size(periods: float, points: int, workers: int, minimum: int = 1) -> i
     return max(minimum, min(by_work, by_balance, MAX_BLOCK))
 
 
-def _blocks(ks: list, size: int) -> list:
-    return [ks[i:i + size] for i in range(0, len(ks), size)]
+def _blocks(ks: list, size: int, workers: int = 1, minimum: int = 1) -> list:
+    """ks in tasks of ``size`` points, in order; the last tasks shrink (at most the points
+    left over 2 x workers, at least ``minimum``) so the workers finish together: with
+    equal tasks, one thread idled for most of a task at the end (~20 ms of a 0.4 s sweep)."""
+    out, i = [], 0
+    while i < len(ks):
+        n = max(minimum, min(size, math.ceil((len(ks) - i) / (2 * workers))))
+        out.append(ks[i:i + n])
+        i += n
+    return out
 
 
 def map_points(spec: SweepSpec, ks=None, workers: int | None = None) -> list:
@@ -85,7 +93,7 @@ def map_points(spec: SweepSpec, ks=None, workers: int | None = None) -> list:
     spec_json = spec.to_json()
     with executor(workers) as (ex, minimum, n):
         size = block_size(spec.periods, len(ks), n, minimum)
-        futures = [ex.submit(run_points, spec_json, b) for b in _blocks(ks, size)]
+        futures = [ex.submit(run_points, spec_json, b) for b in _blocks(ks, size, n, minimum)]
         try:
             return [rec for f in futures for _, rec in f.result()]
         except BaseException:
@@ -155,7 +163,8 @@ def _fill(store, spec, workers, scheduler, dask_workers, progress, block, stop_a
     spec_json = spec.to_json()
     with executor(workers, scheduler, dask_workers) as (ex, minimum, n):
         size = block or block_size(spec.periods, len(pending), n, minimum)
-        futures = [ex.submit(run_points, spec_json, b) for b in _blocks(pending, size)]
+        futures = [ex.submit(run_points, spec_json, b)
+                   for b in _blocks(pending, size, n, minimum)]
         bar = tqdm(total=spec.size, initial=spec.size - len(pending), unit="run",
                    desc=f"sweep {spec.satellite.name} {' x '.join(spec.names)}",
                    disable=progress is False, delay=0 if progress else 1.0, smoothing=0.05)
