@@ -124,6 +124,7 @@ def bench_csweep(rep, S, q, log):
 
     from tethersim import load_preset
     from tethersim.experiments.sweep import SweepSpec, run_sweep
+    from tethersim.experiments.sweep.runner import map_points
     from tethersim.experiments.sweep.spec import ATOL_PER_RTOL
 
     lib, why = build(S)
@@ -168,10 +169,18 @@ def bench_csweep(rep, S, q, log):
                     return clock() - t0
                 return t
 
+            def map_timer(threads):  # the same points without a store (runner.map_points)
+                def t():
+                    t0 = clock()
+                    map_points(spec, workers=threads)
+                    return clock() - t0
+                return t
+
             load = os.getloadavg()[0]
             res = interleave({"c1": c_timer(1), f"c{cores}": c_timer(cores),
                               "ts1": ts_timer(1), f"ts{cores}": ts_timer(cores),
-                              f"pp{cores}": ts_timer(cores, per_point=True)},
+                              f"pp{cores}": ts_timer(cores, per_point=True),
+                              "mp1": map_timer(1), f"mp{cores}": map_timer(cores)},
                              q["sweep_repeats"], warmup=1)
             load = (load + os.getloadavg()[0]) / 2
             tp = {k: spec.size / median(v) for k, v in res.items()}
@@ -191,13 +200,15 @@ def bench_csweep(rep, S, q, log):
                     f"path ({cores} threads)", tp[f"ts{cores}"] / tp[f"pp{cores}"], "x")
             rep.target(f"csweep.{tag}", f"sweep {periods:g} orbits: tethersim >= 0.5x C+OpenMP",
                        ratio, ">=", 0.5, note=f"load average {load:.1f} on {os.cpu_count()} cores")
-            for who in ("c", "ts"):
+            for who, name in (("c", "C+OpenMP"), ("ts", "run_sweep"),
+                              ("mp", "map_points (no store)")):
                 sc = tp[f"{who}{cores}"] / tp[f"{who}1"]
-                rep.fig(f"csweep.{tag}.scale_{who}", f"{periods:g} orbits: {who} scaling 1 -> "
+                rep.fig(f"csweep.{tag}.scale_{who}", f"{periods:g} orbits: {name} scaling 1 -> "
                         f"{cores} threads", sc, "x")
             rep.target(f"csweep.{tag}.scale", f"sweep {periods:g} orbits: tethersim 1 -> {cores} "
                        "threads", tp[f"ts{cores}"] / tp["ts1"], ">=", 1.8 if cores >= 2 else 1.0,
-                       note=f"C itself {tp[f'c{cores}'] / tp['c1']:.2f}x; load average "
+                       note=f"C itself {tp[f'c{cores}'] / tp['c1']:.2f}x, tethersim without its "
+                            f"store {tp[f'mp{cores}'] / tp['mp1']:.2f}x; load average "
                             f"{load:.1f} on {os.cpu_count()} cores")
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
