@@ -164,3 +164,8 @@ from tethersim.output.docnumbers import figures_air as _air  # noqa: E402
 
 QUANTITIES.update(_air.QUANTITIES)
 FIGURES += _air.FIGURES
+
+from tethersim.output.docnumbers import figures_orbit as _orbit  # noqa: E402
+
+QUANTITIES.update(_orbit.QUANTITIES)
+FIGURES += _orbit.FIGURES
