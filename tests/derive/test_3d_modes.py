@@ -1,7 +1,7 @@
 """Linear attitude modes of the 3-D kernels against closed forms (checks (b), (c)).
 
 Jacobian of the generated kernels at the nominal attitude (y = 0), drag and
-tethers off.  References (shared/physics-references.md):
+tethers off.  References (docs/sources.md):
 
 * rigid dumbbell (point masses on a rod): in-plane libration √3·n, out-of-plane
   2·n (Cosmo & Lorenzini, Tethers in Space Handbook, 1997);

@@ -1,7 +1,7 @@
 """Free-orbit kernels (generated/free*.py) against closed forms (issue 12, part 6).
 
 Every run integrates the generated ``rhs`` with scipy's DOP853 at rtol 1e-12.
-Closed forms are from /work/shared/physics-references.md; each test cites its
+Closed forms are from docs/sources.md; each test cites its
 source.  Inputs are SatI's (tethersim/model/presets/satI.toml) and WGS-84 constants
 (Vallado Table D-3); no expected result is typed in.  The runs that docs/orbit.md
 quotes are tethersim/output/docnumbers/figures_orbit.py's (the doc's figures are
@@ -34,7 +34,7 @@ from tethersim.output.docnumbers.free_orbit import integrate, params, state
 def test_circular_orbit_decays_at_the_drag_rate_with_co_rotating_air(module):
     """da/dt = −ρ (Σ C_D A_i / m) √(μ a) (1 − ω_E/n)² (Vallado ch. 8, still air;
     the factor for air co-rotating with an equatorial prograde orbit from
-    physics-references.md), for SatI at 200 km in constant air (ρ = 2.8e-10):
+    docs/sources.md), for SatI at 200 km in constant air (ρ = 2.8e-10):
     figures_orbit.decay."""
     d = decay(module)
     err = abs(d.run / d.law - 1)
@@ -71,7 +71,7 @@ def test_j2_apsidal_and_mean_motion_rates_of_an_equatorial_orbit(module):
 @pytest.mark.parametrize("module", (free, free_exact_gravity), ids=lambda m: m.MODEL)
 def test_dumbbell_pitch_is_forced_by_eccentricity(module):
     """Beletsky's periodic solution θ = −e sin ν of a dumbbell (K = 1) at e = 1e-3, first-order
-    error ≈ 0.2 % (physics-references.md): 3 orbits stay on it to 1 % of e
+    error ≈ 0.2 % (docs/sources.md): 3 orbits stay on it to 1 % of e
     (figures_orbit.forced_pitch_error)."""
     err = forced_pitch_error(module)
     assert err < 0.01, f"max |θ − θ_forced| = {err:.2e} e"

