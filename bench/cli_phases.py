@@ -48,7 +48,7 @@ def main(out_dir: str) -> None:
     phases["write CSV"] = time.perf_counter() - t
     t = time.perf_counter()
     ts.write_netcdf(res, out / "timeseries.nc")
-    phases["write NetCDF (imports xarray)"] = time.perf_counter() - t
+    phases["write NetCDF (scipy.io, no xarray)"] = time.perf_counter() - t
     t = time.perf_counter()
     plot_result(res, out)
     phases["plots (4 PNGs, incl. matplotlib import)"] = time.perf_counter() - t
