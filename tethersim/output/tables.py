@@ -166,7 +166,7 @@ def _nc3_attribute(value):
         if np.any(a != a.astype(np.int32)):
             raise ValueError(f"attribute {value!r} does not fit netCDF-3's 32-bit integers")
         return a.astype(np.int32)
-    return a.astype(np.float64)
+    return a  # floats keep their width, as in xarray
 
 
 def write_netcdf(res: SimResult, path, attrs: dict | None = None) -> Path:
