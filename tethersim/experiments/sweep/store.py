@@ -152,7 +152,7 @@ class SweepStore:
 
     def _create(self, ds: xr.Dataset, chunk_rows: int) -> None:
         # Zarr's own API, not xarray's to_zarr: the same store (xarray reads it back
-        # identical, tests/experiments/test_store.py) for about two thirds of the CPU,
+        # identical, tests/experiments/test_store.py) for about three quarters of the CPU,
         # which a short sweep's threads would otherwise share with it.  Zarr format 2,
         # where consolidated metadata is in the spec; xarray's dimension names attribute.
         try:
