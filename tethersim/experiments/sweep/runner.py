@@ -172,8 +172,7 @@ def _fill(store, spec, workers, scheduler, dask_workers, progress, block, stop_a
         try:
             for fut in cf.as_completed(futures):
                 records = fut.result()
-                for k, rec in records:
-                    store.put(k, rec)
+                store.put(records)
                 count += len(records)
                 bar.update(len(records))
                 if time.monotonic() - last > FLUSH_SECONDS:
@@ -190,9 +189,7 @@ def _fill(store, spec, workers, scheduler, dask_workers, progress, block, stop_a
                 if f.cancelled():
                     continue
                 try:
-                    for k, rec in f.result():
-                        if not store.done[k]:
-                            store.put(k, rec)
+                    store.put([(k, rec) for k, rec in f.result() if not store.done[k]])
                 except (cf.CancelledError, Exception):  # noqa: BLE001 - the first error wins
                     pass
             store.flush()
