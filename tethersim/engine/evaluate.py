@@ -131,8 +131,10 @@ def _family_force_peaks(model, air, T, Y, p):
     literally(model)
     nf, nq = model_shape(model)
     peaks = np.zeros(nq)
-    _forces_loop(model, air, T, Y, p, p.copy(), np.empty((0, nf, nq)), np.empty((nf, nq)),
-                 peaks)
+    pw = np.empty(p.shape[0])  # p.copy() written out: p may be borrowed (borrow.py)
+    for i in range(p.shape[0]):
+        pw[i] = p[i]
+    _forces_loop(model, air, T, Y, p, pw, np.empty((0, nf, nq)), np.empty((nf, nq)), peaks)
     return peaks
 
 
