@@ -106,6 +106,19 @@ family_force_peaks(res.layout.index, res.air, res.t, res.states, res.parameters)
 """
 
 
+# run after RUN on a cold cache (numba shows the LLVM IR only of what it compiled, not
+# of what it loaded): calls to NRT_incref/NRT_decref in each per-evaluation function
+IR_CALLS = """
+import re
+from tethersim.engine import dynamics
+from tethersim.engine.integrators import steps
+for f in (dynamics.derivative, steps.rk4_step, steps.dop853_step, steps.dop853_dense):
+    for sig in f.signatures:
+        calls = len(re.findall(r"call \\w+ @NRT_(?:incref|decref)", f.inspect_llvm(sig)))
+        print("IR", f.__name__, calls)
+"""
+
+
 def _nrt_ops(n: int, env: dict) -> int:
     r = subprocess.run([sys.executable, "-c", RUN, str(n)], cwd=REPO, env=env,
                        capture_output=True, text=True, timeout=900)
@@ -124,10 +137,16 @@ def test_reference_count_operations_do_not_grow_with_the_step_count(tmp_path):
     env.pop("NUMBA_CACHE_DIR", None)
     env.update(TETHERSIM_CACHE_DIR=str(tmp_path), NUMBA_DEBUG_NRT="1")
     # cold cache: compiles once (with the debug prints) and says so, once
-    first = subprocess.run([sys.executable, "-c", RUN, "30"], cwd=REPO, env=env,
+    first = subprocess.run([sys.executable, "-c", RUN + IR_CALLS, "30"], cwd=REPO, env=env,
                            capture_output=True, text=True, timeout=900)
     assert first.returncode == 0, first.stderr[-2000:]
     assert first.stderr.count("compiling numerical kernels once") == 1
+    # the loops pass borrowed arrays (borrow.BorrowedArray): numba emits no reference
+    # counting at all, not even a call that returns at once on a NULL pointer
+    ir = [line.split() for line in first.stdout.splitlines() if line.startswith("IR ")]
+    assert {name for _, name, _ in ir} == {"derivative", "rk4_step", "dop853_step",
+                                           "dop853_dense"}
+    assert all(calls == "0" for *_, calls in ir), ir
     small, large = _nrt_ops(300, env), _nrt_ops(600, env)
     assert small == large
     assert small < 150  # a few per call (allocations, arguments; 117 with the 5 evaluations), none per step
