@@ -169,3 +169,8 @@ from tethersim.output.docnumbers import figures_orbit as _orbit  # noqa: E402
 
 QUANTITIES.update(_orbit.QUANTITIES)
 FIGURES += _orbit.FIGURES
+
+from tethersim.output.docnumbers import orbit_notes as _notes  # noqa: E402
+
+QUANTITIES.update(_notes.QUANTITIES)
+FIGURES += _notes.FIGURES
