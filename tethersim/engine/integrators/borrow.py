@@ -6,7 +6,7 @@ is rebound or goes out of scope, numba emits a call to ``NRT_incref`` or
 ``NRT_decref`` on that pointer: an atomic, lock-prefixed increment (~10 ns on
 some Xeons) about 23 times per right-hand-side evaluation, and even on a NULL
 pointer a call that returns at once (about 14 per evaluation of the derivative,
-some 15 % of a DOP853 run).
+7 % of a DOP853 run on an AMD EPYC).
 
 A *borrowed* array has its own numba type, :class:`BorrowedArray`: the same
 layout, operations and views as a numba array, but its data model declares the
