@@ -22,8 +22,8 @@ be returned, stored or outlive the call that borrowed it.
 """
 from __future__ import annotations
 
-from numba.core import cgutils, types
-from numba.extending import intrinsic, models, register_model
+from numba.core import cgutils, errors, types
+from numba.extending import intrinsic, models, overload_classmethod, register_model
 
 
 class BorrowedArray(types.Array):
@@ -65,6 +65,15 @@ class BorrowedArrayModel(models.StructModel):
             ("strides", types.UniTuple(types.intp, fe_type.ndim)),
         ]
         super().__init__(dmm, fe_type, members)
+
+
+@overload_classmethod(BorrowedArray, "_allocate")
+def _refuse_allocation(cls, allocsize, align):
+    # numba allocates a new array (a copy, np.empty_like, arithmetic) of its template's
+    # type: one typed borrowed would own memory that nothing frees
+    raise errors.TypingError("a borrowed array (tethersim.engine.integrators.borrow) cannot "
+                             "be the template of a new array: allocate with np.empty and "
+                             "copy into it")
 
 
 @intrinsic
