@@ -22,6 +22,7 @@ from numba.extending import overload
 from tethersim.engine.dynamics import KERNELS, literal_index, model_densities, model_tether_margins
 from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.select import call
+from tethersim.engine.integrators.steps import copy_into
 from tethersim.model.air.vector import UNIFORM
 from tethersim.model.registry import MODELS
 
@@ -131,9 +132,8 @@ def _family_force_peaks(model, air, T, Y, p):
     literally(model)
     nf, nq = model_shape(model)
     peaks = np.zeros(nq)
-    pw = np.empty(p.shape[0])  # p.copy() written out: p may be borrowed (borrow.py)
-    for i in range(p.shape[0]):
-        pw[i] = p[i]
+    pw = np.empty(p.shape[0])  # not p.copy(): p may be borrowed (borrow.py)
+    copy_into(pw, p)
     _forces_loop(model, air, T, Y, p, pw, np.empty((0, nf, nq)), np.empty((nf, nq)), peaks)
     return peaks
 

@@ -34,18 +34,22 @@ class BorrowedArray(types.Array):
                 f"{'' if aligned else ' unaligned'}")
         super().__init__(dtype, ndim, layout, readonly=readonly, name=name, aligned=aligned)
 
+    @classmethod
+    def of(cls, arr: types.Array) -> BorrowedArray:
+        """The borrowed twin of the array type ``arr`` (same dtype, shape, layout, flags)."""
+        return cls(arr.dtype, arr.ndim, arr.layout, readonly=not arr.mutable,
+                   aligned=arr.aligned)
+
     def copy(self, dtype=None, ndim=None, layout=None, readonly=None):
         # views, slices and reshapes of a borrowed array are borrowed
-        base = super().copy(dtype=dtype, ndim=ndim, layout=layout, readonly=readonly)
-        return BorrowedArray(base.dtype, base.ndim, base.layout, readonly=not base.mutable,
-                             aligned=base.aligned)
+        return BorrowedArray.of(super().copy(dtype=dtype, ndim=ndim, layout=layout,
+                                             readonly=readonly))
 
     def unify(self, typingctx, other):
         # p or pw (dynamics.derivative): two borrowed arrays unify to a borrowed one
         base = super().unify(typingctx, other)
         if base is not None and isinstance(other, BorrowedArray):
-            return BorrowedArray(base.dtype, base.ndim, base.layout, readonly=not base.mutable,
-                                 aligned=base.aligned)
+            return BorrowedArray.of(base)
         return base
 
 
@@ -93,8 +97,7 @@ def borrow(typingctx, arr):
     """
     if not isinstance(arr, types.Array):
         return None
-    result = arr if isinstance(arr, BorrowedArray) else BorrowedArray(
-        arr.dtype, arr.ndim, arr.layout, readonly=not arr.mutable, aligned=arr.aligned)
+    result = arr if isinstance(arr, BorrowedArray) else BorrowedArray.of(arr)
 
     def codegen(context, builder, signature, args):
         src = context.make_array(signature.args[0])(context, builder, value=args[0])
