@@ -159,3 +159,21 @@ def test_console_entry_point_prints_warning_and_error_to_stderr(tmp_path):
     assert proc.returncode == 2
     assert proc.stderr.startswith("tethersim: error: argument --periods:")
     assert proc.stderr.count("\n") == 1 and "Traceback" not in proc.stderr
+
+
+def test_cli_import_leaves_the_sweep_store_libraries_unloaded():
+    # `tethersim run` needs neither xarray nor zarr (0.3 s of a warm 2 s run); only the
+    # commands that open a sweep store load them
+    code = ("import contextlib, io, sys; from tethersim.cli.main import main\n"
+            "with contextlib.redirect_stdout(io.StringIO()): main(['show', 'satI'])\n"
+            "print(sorted(k for k in ('xarray', 'zarr', 'pandas') if k in sys.modules))")
+    proc = subprocess.run([sys.executable, "-c", code], check=True, capture_output=True,
+                          text=True, timeout=120)
+    assert proc.stdout.strip() == "[]"
+
+
+def test_sweep_interrupted_is_a_keyboard_interrupt():
+    # so the CLI's Ctrl-C branch handles it without importing the sweep package
+    from tethersim.experiments.sweep import SweepInterrupted
+
+    assert issubclass(SweepInterrupted, KeyboardInterrupt)

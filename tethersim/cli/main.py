@@ -102,7 +102,8 @@ def main(argv=None) -> int:
     >>> main(["show", "satI"])  # doctest: +SKIP
     0
     """
-    from tethersim.experiments.sweep import SweepInterrupted
+    # a sweep's SweepInterrupted is a KeyboardInterrupt: importing it here would load the
+    # sweep store's xarray and zarr (0.3 s) into every command
     from tethersim.model.satellite import SatelliteError
 
     try:
@@ -125,7 +126,7 @@ def main(argv=None) -> int:
     except options.RunFailed as exc:
         print(f"tethersim: error: the run failed: {exc}", file=sys.stderr)
         return 1
-    except (options.Interrupted, SweepInterrupted, KeyboardInterrupt) as exc:
+    except (options.Interrupted, KeyboardInterrupt) as exc:
         # the command's hint says how to continue (sweep, report); {out} is its folder
         hint = getattr(args, "interrupted_hint", "").format(out=args.out if "out" in args else "")
         detail = "; ".join(s for s in (str(exc), hint) if s)

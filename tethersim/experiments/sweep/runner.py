@@ -28,8 +28,12 @@ BALANCE = 4  # at least this many tasks per worker, so no worker idles at the en
 MAX_BLOCK = 64
 
 
-class SweepInterrupted(Exception):
-    """Ctrl-C or SIGTERM during a sweep; everything finished was written."""
+class SweepInterrupted(KeyboardInterrupt):
+    """Ctrl-C or SIGTERM during a sweep; everything finished was written.
+
+    A :class:`KeyboardInterrupt` (``except Exception`` lets it through, as it does a
+    plain Ctrl-C) that names the store and how to resume.
+    """
 
     def __init__(self, store: SweepStore):
         n = int(store.done.sum())
