@@ -15,7 +15,9 @@ with gcc -O3.  Results go to stdout (table at the end) and bench/results.json.
      (3b: simulate() adaptive default per accepted step vs C, bench/engine_bench.py)
   4. sympy.lambdify + solve_ivp and PyDy + solve_ivp, same model and tolerance
   5. `python -m derive <tmpdir>` wall time
-  6. second `tethersim run satI --periods 50` wall time (numba caches warm)
+  6. second `tethersim run satI --periods 50` wall time (numba caches warm), and a
+     cold first `tethersim run satI --periods 1 --no-plots` with an empty cache folder
+     (TETHERSIM_CACHE_DIR); `--only cli` runs this section alone
   7. sweep throughput, 1 thread vs every core (bench/sweep_bench.py); C+OpenMP sweep
      driver vs run_sweep at 5 and 50 orbits, 1 and 2 threads, and run_sweep through
      the per-point path (bench/csweep.py); `--only sweep` runs this section alone
@@ -563,9 +565,18 @@ def bench_cli(rep: Report, q):
         have = False
     if not have:
         log("    skipped: CLI not available")
-        rep.target("T6", "6. second CLI run < 3 s", None, "<", 3.0, "s",
+        rep.target("T6", "6. second CLI run <= 2.5 s", None, "<=", 2.5, "s",
                    note="skipped: CLI not available")
         return
+    with tempfile.TemporaryDirectory() as tmp:
+        # issue 10: the first run after install compiles every kernel it calls
+        dt, rc, tail = wall([str(exe), "run", "satI", "--periods", "1", "--no-plots", "--out",
+                             tmp + "/cold"], cwd=tmp, env={"TETHERSIM_CACHE_DIR": tmp + "/cache"})
+        log(f"    cold run (empty cache folder), --periods 1 --no-plots: {dt:.1f} s")
+        rep.check("cold tethersim run succeeded", rc == 0, tail[-300:] if rc else "")
+        cold = rep.fig("cli.cold", "cold first run --periods 1 --no-plots (empty cache)", dt, "s")
+        rep.target("T6c", "6. cold first CLI run <= 20 s (issue 10)", cold if rc == 0 else None,
+                   "<=", 20.0, "s", note="" if rc == 0 else "cold run failed")
     times = []
     with tempfile.TemporaryDirectory() as tmp:
         cmd = [str(exe), "run", "satI", "--periods", "50", "--out", tmp + "/out"]
@@ -573,7 +584,7 @@ def bench_cli(rep: Report, q):
             dt, rc, tail = wall(cmd, cwd=tmp)
             if rc != 0:
                 rep.check("tethersim run succeeded", False, tail[-300:])
-                rep.target("T6", "6. second CLI run < 3 s", None, "<", 3.0, "s",
+                rep.target("T6", "6. second CLI run <= 2.5 s", None, "<=", 2.5, "s",
                            note="CLI run failed")
                 return
             times.append(dt)
@@ -590,7 +601,7 @@ def bench_cli(rep: Report, q):
     if len(times) > 2:
         rep.fig("cli.warm_median", "median of the warm runs (2nd onwards)", median(times[1:]), "s",
                 times[1:])
-    rep.target("T6", "6. second CLI run < 3 s", second, "<", 3.0, "s",
+    rep.target("T6", "6. second CLI run <= 2.5 s (issue 10)", second, "<=", 2.5, "s",
                note=f"warm-run median {median(times[1:]):.2f} s over {len(times) - 1}")
     if phases:
         log("    where a warm run spends its time (bench/cli_phases.py, one fresh process):")
@@ -687,9 +698,9 @@ def main(argv=None) -> int:
     ap.add_argument("--json", default=str(HERE / "results.json"), help="where to write results")
     ap.add_argument("--skip-slow", action="store_true",
                     help="skip the subprocess figures (make derive, CLI, report)")
-    ap.add_argument("--only", choices=("sweep", "report", "3d"), default=None,
-                    help="run one section only (sweep throughput, the report's wall time, or "
-                         "the 3-D model against its C port)")
+    ap.add_argument("--only", choices=("sweep", "report", "3d", "cli"), default=None,
+                    help="run one section only (sweep throughput, the report's wall time, "
+                         "the 3-D model against its C port, or the CLI's cold and warm runs)")
     args = ap.parse_args(argv)
     q = dict(fast_repeats=15, dop_repeats=9, slow_repeats=5, rhs_calls=200_000,
              lambdify_calls=1000, pydy_calls=4000, pycall_calls=20_000,
@@ -718,6 +729,8 @@ def main(argv=None) -> int:
         elif args.only == "3d":
             import bench3d
             bench3d.bench_3d(rep, q, log)
+        elif args.only == "cli":
+            bench_cli(rep, q)
         else:
             sweep_bench.bench_report(rep, q, REPO)
         print_table(rep, clock() - t_start, "(not written with --only)")
