@@ -161,7 +161,7 @@ def test_console_entry_point_prints_warning_and_error_to_stderr(tmp_path):
     assert proc.stderr.count("\n") == 1 and "Traceback" not in proc.stderr
 
 
-def test_cli_import_leaves_the_sweep_store_libraries_unloaded():
+def test_a_command_without_a_sweep_leaves_xarray_and_zarr_unloaded():
     # `tethersim run` needs neither xarray nor zarr (0.3 s of a warm 2 s run); only the
     # commands that open a sweep store load them
     code = ("import contextlib, io, sys; from tethersim.cli.main import main\n"
