@@ -281,9 +281,10 @@ def _write_files(root: Path, files: dict, keys: list) -> None:
     Each file goes to a temporary name and is renamed into place, as Zarr's LocalStore
     writes: a kill leaves every file whole, old or new.
     """
+    for folder in dict.fromkeys((root / key).parent for key in keys):  # each folder once
+        folder.mkdir(parents=True, exist_ok=True)
     for key in keys:
         path = root / key
-        path.parent.mkdir(parents=True, exist_ok=True)
         partial = path.with_name(path.name + ".partial")
         partial.write_bytes(files[key].to_bytes())
         os.replace(partial, path)
