@@ -246,14 +246,14 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
     done = 0
     # this model's compiled loop, chosen (compiled or loaded) once, before the bar
     # starts: its rate, hence its ETA, then counts integration only
-    loop = specialised(rk4_run, m, (air, 0.0, y, h, chunk, 1, p, pw, locate, out_t, out_y,
+    loop = specialised(rk4_run, m, (air, 0, y, h, chunk, 1, p, pw, locate, out_t, out_y,
                                     row))
     with _bar(periods, f"{sat.name} RK4", progress) as bar:
         try:
             while done < steps:
                 n = min(chunk, steps - done)
                 t_call = time.perf_counter()
-                rows, sw, st = loop(m, air, done * h, y, h, n, 1, p, pw, locate, out_t,
+                rows, sw, st = loop(m, air, done, y, h, n, 1, p, pw, locate, out_t,
                                     out_y, row)
                 if progress is None and (time.perf_counter() - t_call) * steps < QUICK_RUN_S * n:
                     chunk = steps

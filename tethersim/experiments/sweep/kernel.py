@@ -69,7 +69,7 @@ def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
             out_y[0, i] = y[i]
         if faithful:  # simulate._run_rk4, progress=False: one call for every step
             out_t[0] = 0.0
-            rows, _, st = rk4_run(model, air, 0.0, y, span[j], n_steps, one, p, pw, locate,
+            rows, _, st = rk4_run(model, air, 0, y, span[j], n_steps, one, p, pw, locate,
                                   out_t, out_y, one)
             n = 1 + rows
             nfev = 4 * n_steps
