@@ -219,66 +219,14 @@ def overrides(args) -> list:
 
 def satellite(args):
     """The satellite of ``args.satellite`` with --set/--scale applied (edge units), in the
-    orbit its ``--model``/``--models`` run (:func:`orbit_of_models`)."""
+    orbit its ``--model``/``--models`` run (:func:`tethersim.cli.orbit.orbit_of_models`)."""
     from tethersim.model.params import apply_overrides
     from tethersim.model.presets import resolve
     sat = resolve(args.satellite, getattr(args, "allow_implausible", False))
     sat = apply_overrides(sat, getattr(args, "set", None) or (),
                           getattr(args, "scale", None) or ())
+    from tethersim.cli.orbit import orbit_of_models
     return orbit_of_models(args, sat)
-
-
-def _requested_models(args) -> tuple:
-    if getattr(args, "models", None):
-        return models(args)
-    return (args.model,) if getattr(args, "model", None) else ()
-
-
-def _set_orbit(args) -> str | None:
-    """The last ``--set orbit=...`` value as typed (stripped), or None."""
-    given = None
-    for s in getattr(args, "set", None) or ():
-        name, _, value = s.partition("=")
-        if name.strip() == "orbit":
-            given = value.strip()
-    return given
-
-
-def orbit_of_models(args, sat):
-    """``sat`` in the orbit of the requested free-orbit models: one orbit per run.
-
-    A free-orbit model (``--model free``, ``3d-free``, ...) runs a free orbit, so
-    without an explicit ``--set orbit=...`` the satellite gets ``orbit = "free"``
-    before anything runs (its summary, files and plots then say so); with an
-    explicit ``--set orbit=circular`` the command is refused.
-
-    Raises
-    ------
-    UsageError
-        ``--set orbit=circular`` with a free-orbit model (one line).
-    tethersim.model.satellite.SatelliteError
-        The satellite cannot fly a free orbit (e.g. its re-entry altitude).
-    """
-    from tethersim.model.registry import BY_NAME
-    free = [m for m in _requested_models(args) if BY_NAME[m].orbit == "free"]
-    if not free or sat.orbit == "free":
-        return sat
-    flag = "--models" if getattr(args, "models", None) else "--model"
-    if _set_orbit(args) is not None:
-        twins = {v: k for k, v in _free_variants().items()}
-        hint = (f", or use {flag} {twins[free[0]]} for the circular orbit" if free[0] in twins
-                else "")
-        raise UsageError(f"{flag} {free[0]} with --set orbit={sat.orbit}: a free-orbit model "
-                         f"runs a free orbit; drop --set orbit={sat.orbit}{hint}")
-    try:
-        return sat.replace(orbit="free")
-    except ValueError as exc:
-        raise type(exc)(f"{flag} {free[0]} (orbit = 'free'): {exc}") from None
-
-
-def _free_variants() -> dict:
-    from tethersim.model.registry import FREE_VARIANTS
-    return FREE_VARIANTS
 
 
 @dataclass(frozen=True)
