@@ -41,14 +41,17 @@ def test_contradictory_orbit_options_are_refused_in_one_line(argv, expected, tmp
     assert not (tmp_path / "o").exists()
 
 
-def test_a_free_model_makes_the_satellite_free_before_the_run():
+@pytest.mark.parametrize("kind, names", [("model", "free"), ("model", "3d-free"),
+                                          ("models", ["derived,free-exact-gravity"])])
+def test_a_free_model_makes_the_satellite_free_before_the_run(kind, names):
     from argparse import Namespace
 
     from tethersim.cli.options import satellite  # resolves the orbit (tethersim.cli.orbit)
-    args = Namespace(satellite="satI", set=[], scale=[], model="free", allow_implausible=False)
+    args = Namespace(satellite="satI", set=[], scale=[], allow_implausible=False,
+                     **{kind: names})
     sat = satellite(args)
     assert (sat.orbit, sat.density_mode) == ("free", "per-body")
-    args.model = "derived"
+    setattr(args, kind, "derived" if kind == "model" else ["derived,exact-gravity"])
     assert satellite(args).orbit == "circular"
 
 

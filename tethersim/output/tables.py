@@ -153,6 +153,8 @@ def _series(res: SimResult, attrs: dict | None = None) -> tuple:
             meta[f"sat_{k}"] = v
         elif k in ("I1", "I2"):  # end-body moments [roll, pitch, yaw] kg m^2, where set
             meta[f"sat_{k}"] = np.asarray(v, dtype=float)
+    # the density the run used, also when the orbit chose it (to_dict leaves it out then)
+    meta["sat_density_mode"] = res.satellite.density_mode
     meta.update(attrs or {})
     return columns, meta
 
