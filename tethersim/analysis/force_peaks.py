@@ -121,9 +121,16 @@ def largest_forces_from(t, Q, period: float) -> list:
     return rows
 
 
+def in_plane_forces(res: SimResult) -> np.ndarray:
+    """(n, families, 3): the run's generalized forces on δx, δy, θ only (a 3-D or
+    free-orbit model also has roll, yaw, δz or r, ν coordinates)."""
+    names = res.layout.state
+    return res.forces[:, :, [names.index(c) for c, _, _ in COORDINATES]]
+
+
 def largest_forces(res: SimResult) -> list:
     """The largest single-family generalized force on δx, δy, θ of a run (thesis p. 5-8)."""
-    return largest_forces_from(res.t, res.forces, res.satellite.period)
+    return largest_forces_from(res.t, in_plane_forces(res), res.satellite.period)
 
 
 def _fmt(value: float, unit: str) -> str:

@@ -76,6 +76,11 @@ def orbit_summary(res: SimResult, out: Outcome) -> dict:
         rt = out.reentry_time
         d["re-entry time [h]"] = rt / 3600 if rt is not None else float("nan")
         d["final altitude [km]"] = float(res.altitude[-1] / 1e3)
+        # which limit ended the run, and when: re-entry, the model's domain, or its length
+        d["run ended at [h]"] = float(res.t[-1] / 3600)
+        d["run ended by"] = (f"its length, {res.t[-1] / res.satellite.period:.4g} orbits, "
+                             f"without re-entry" if res.status == "ok"
+                             else res.message or res.status)
     return d
 
 

@@ -58,9 +58,13 @@ def run(args) -> int:
     """
     from tethersim.experiments.feasibility import FeasibilitySpec, run_feasibility
     from tethersim.model import params
+    from tethersim.model.registry import BY_NAME
     from tethersim.output.plots.feasibility import plot_feasibility
     from tethersim.output.tables import write_rows
-
+    if BY_NAME[args.model].orbit == "free":  # before options.satellite makes the orbit free
+        raise options.UsageError(f"--model {args.model}: feasibility takes a circular-orbit "
+                                 f"model; it runs the trim on the held circular orbit and the "
+                                 f"lifetime with the model's free twin")
     sat = options.satellite(args)
     altitudes = tuple(float(v) for v in params.parse_grid("altitude", args.altitude))
     areas = (tuple(float(v) for v in params.parse_grid("A3", args.A3)) if args.A3 else ())

@@ -51,6 +51,7 @@ def run(args) -> int:
         COLUMNS,
         SAMPLES_PER_PERIOD,
         format_table,
+        in_plane_forces,
         largest_forces,
         table_rows,
     )
@@ -70,7 +71,7 @@ def run(args) -> int:
     options.interrupted_early(res)
     rows = largest_forces(res)
     written = [write_table(out / "forces.csv", table_rows(rows), COLUMNS)]
-    written += plot_forces(res, out, Q=res.forces)
+    written += plot_forces(res, out, Q=in_plane_forces(res))
     written.append(options.write_provenance(out, record))
     print(res.label)
     print(how.describe(sat.period, args.periods))

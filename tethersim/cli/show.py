@@ -70,7 +70,8 @@ def run(args) -> int:
     for n, v in zip(names, sat.initial):
         print(f"  {n:<18} {v:.6g}")
     print(f"  r0 {sat.r0:.6g} m, omega {sat.omega:.6g} rad/s, period {sat.period:.6g} s, "
-          f"rho {sat.rho:.4g} kg/m^3, density {sat.density_mode}")
+          f"rho {sat.rho:.4g} kg/m^3, density {sat.density_mode}"
+          + (" (follows the orbit)" if sat.density_auto else ""))
     from tethersim.model.options import density_text
     print(f"  air density of a run: {density_text(sat)}")
     for line in (sat.implausible if sat.allow_implausible else ()):

@@ -11,7 +11,13 @@ from pathlib import Path
 
 import numpy as np
 
-from tethersim.analysis.force_peaks import COORDINATES, SMALL_FRACTION, peaks, small_families
+from tethersim.analysis.force_peaks import (
+    COORDINATES,
+    SMALL_FRACTION,
+    in_plane_forces,
+    peaks,
+    small_families,
+)
 from tethersim.engine.result import SimResult
 from tethersim.generated.layout import FAMILIES
 from tethersim.output.plots.run import FAST_PNG, _hours_on_top
@@ -36,7 +42,7 @@ def plot_forces(res: SimResult, out_dir, Q: np.ndarray | None = None) -> list:
 
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
-    Q = res.forces if Q is None else Q
+    Q = in_plane_forces(res) if Q is None else Q
     pk = peaks(Q)
     period = res.satellite.period
     orbits = res.t / period
