@@ -21,6 +21,9 @@ def add_parser(sub) -> None:
                     "the 3-D models, then its initial state and derived orbit (SI).")
     options.add_satellite(p)
     options.add_overrides(p)
+    p.add_argument("--toml", metavar="FILE", default=None,
+                   help="also write the satellite (with --set/--scale) as a preset TOML file, "
+                        "to edit and run: tethersim run FILE")
     p.set_defaults(func=run)
 
 
@@ -76,4 +79,23 @@ def run(args) -> int:
     print(f"  air density of a run: {density_text(sat)}")
     for line in (sat.implausible if sat.allow_implausible else ()):
         print(f"  implausible (allowed): {line}")
+    if args.toml:
+        _write_toml(sat, args)
     return 0
+
+
+def _write_toml(sat, args) -> None:
+    """Write ``sat`` to ``args.toml`` in the preset layout (tethersim.model.presets.write)."""
+    from pathlib import Path
+
+    from tethersim.model.presets.write import dumps
+    path = Path(args.toml)
+    if path.suffix != ".toml":
+        raise ValueError(f"--toml {args.toml}: the file name must end in .toml")
+    header = f"{sat.name}: written by tethersim show {args.satellite} " + " ".join(
+        options.overrides(args))
+    try:
+        path.write_text(dumps(sat, header=header.strip()))
+    except OSError as exc:
+        raise ValueError(f"--toml {args.toml}: cannot write the file: {exc.strerror}") from None
+    print(f"wrote {path}")
