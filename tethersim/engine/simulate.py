@@ -194,8 +194,9 @@ def estimate_error(run: SimResult) -> SimResult:
     -------
     SimResult
         A copy of ``run`` whose error_estimate holds |final state - final state
-        of the rerun| in (δx, δy, θ): RK4 reruns at half the step, the adaptive
-        method at rtol/100 and atol/100.  ``run`` itself (unchanged) when it did
+        of the rerun| in every generalized coordinate of the model, in its
+        layout order (``SimResult.errors`` names them): RK4 reruns at half the
+        step, the adaptive method at rtol/100 and atol/100.  ``run`` itself (unchanged) when it did
         not end with status "ok", when the rerun fails, or when it has no
         record of its length (``periods``).
     """
@@ -214,7 +215,10 @@ def _with_error(run: SimResult, fine: SimResult) -> SimResult:
     from dataclasses import replace
     if fine.status != "ok":
         return run
-    err = tuple(float(abs(a - b)) for a, b in zip(run.states[-1, :3], fine.states[-1, :3]))
+    # every generalized coordinate (the 3-D layout's θ is the fifth, φ and ψ beside it; a
+    # free orbit's r and ν follow): the first three alone never looked at the attitude
+    n = run.layout.n_coordinates
+    err = tuple(float(abs(a - b)) for a, b in zip(run.states[-1, :n], fine.states[-1, :n]))
     return replace(run, error_estimate=err)
 
 
