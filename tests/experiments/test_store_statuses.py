@@ -14,11 +14,11 @@ from tethersim.experiments.sweep import (
     StoreDamaged,
     StoreMismatch,
     SweepSpec,
+    kernel,
     open_dataset,
     run_sweep,
     status_names,
 )
-from tethersim.experiments.sweep import kernel
 from tethersim.experiments.sweep.analysis import status_counts
 from tethersim.experiments.sweep.point import STATUS
 
