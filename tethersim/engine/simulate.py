@@ -291,12 +291,14 @@ def refined_grid(t_end: float, n_out: int, refine: int) -> np.ndarray:
 
 
 def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
-                  refine: int = 1) -> SimResult:
+                  refine: int = 1, start=None) -> SimResult:
     t_end = periods * sat.period
     m, air = _kernel_args(sat, model, t_end)
     p = parameter_vector(sat, model)
     pw = p.copy()
-    y = initial_state(m, initial_model_state(sat, model), sat.r0, sat.r0 * sat.omega)
+    # start: an integrated state to continue from (engine/release.py), else the satellite's
+    y = (initial_state(m, initial_model_state(sat, model), sat.r0, sat.r0 * sat.omega)
+         if start is None else np.array(start, dtype=float))
     out_t = refined_grid(t_end, n_out, refine)
     out_y = np.full((out_t.size, state_size(m)), np.nan)
     out_y[0] = y
