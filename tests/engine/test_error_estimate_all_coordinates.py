@@ -110,3 +110,26 @@ def test_a_coarse_3d_rk4_run_is_judged_on_roll_and_yaw_too(sat):
         assert res.errors[name] == abs(res.states[-1, k] - half.states[-1, k]), name
     assert res.errors["phi"] > 0 and res.errors["psi"] > 0
     assert all(math.isfinite(e) for e in res.error_estimate)
+
+
+@pytest.mark.slow  # compiles the 3-D loop; 400 orbits of RK4 at the thesis's step (~2 s)
+def test_a_long_3d_rk4_run_is_not_converged_in_yaw_where_the_old_check_saw_nothing(sat):
+    """SatI with 0.5 rad of roll and yaw, 400 orbits at the thesis's 26.55 s step: the yaw
+    error grows orbit after orbit (undamped) while δx, δy, δz agree to far below their
+    bounds, so a check of the first three states (δx, δy, δz) called it converged."""
+    tilted = sat.replace(initial_3d={"phi": 0.5, "psi": 0.5})
+    steps = 200 * 400
+    res = ts.simulate(tilted, periods=400, model="3d", method="rk4", steps=steps,
+                      progress=False, check=True, step_warning=False)
+    half = ts.simulate(tilted, periods=400, model="3d", method="rk4", steps=2 * steps,
+                       progress=False, step_warning=False)
+    lay = res.layout
+    diff = {k: abs(res.states[-1, i] - half.states[-1, i])
+            for i, k in enumerate(lay.state[:lay.n_coordinates])}
+    # the old check: δx, δy within 1 cm and the third state (δz here) within 1e-3
+    assert diff["delta_x"] <= CONVERGED_POSITION and diff["delta_y"] <= CONVERGED_POSITION
+    assert diff["delta_z"] <= CONVERGED_THETA
+    # the yaw is not within its bound, and the check now says so and names it
+    assert diff["psi"] > CONVERGED_THETA
+    assert res.converged is False
+    assert "NOT converged" in res.label and "largest in psi" in res.label
