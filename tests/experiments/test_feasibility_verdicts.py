@@ -137,7 +137,7 @@ def test_five_orbits_at_200_km_decide_that_the_balloon_is_lost_first(tmp_path):
     with (out / "feasibility.csv").open() as fh:
         r200, r250 = list(csv.DictReader(fh))
     assert r200["verdict"] == LOST
-    assert r200["free_end"] == "left-domain"
+    assert r200["free_end"] == "left-domain" and r200["nominal_status"] == "ok"
     lost, reentry = float(r200["balloon_lost_h"]), float(r200["reentry_h"])
     assert 0 < lost < reentry < 20 and r200["reentry_capped"] == "false"
     # 250 km: the balloon lasts longer than 5 orbits can judge; the run says how long to run
@@ -176,3 +176,18 @@ def test_the_feasibility_cap_counts_runs_per_point(monkeypatch):
         FeasibilitySpec(sat, (200.0, 210.0, 220.0))
     with pytest.raises(SizeLimitError, match="--altitude and --A3"):
         FeasibilitySpec(sat, (200.0, 210.0), areas=(10.0, 12.0))
+
+
+def test_a_point_stopped_by_ctrl_c_is_not_recorded(monkeypatch):
+    from dataclasses import replace
+
+    from tethersim.experiments import feasibility as fe
+    from tethersim.model.presets import load_preset
+
+    spec = fe.FeasibilitySpec(load_preset("satI"), (200.0,), solar=("mean",), periods=0.1,
+                              max_lifetime_h=0.1)
+    real = fe.simulate
+    monkeypatch.setattr(fe, "simulate",
+                        lambda *a, **k: replace(real(*a, **k), status="interrupted"))
+    with pytest.raises(KeyboardInterrupt):
+        fe.run_point(spec, 200.0, spec.satellite.A3)

@@ -181,8 +181,8 @@ def free_ends(spec: FeasibilitySpec, sat: Satellite, rtol: float) -> dict:
         ``"capped"``) and ``end_altitude`` [m] (where the free run ended).
     """
     cap = spec.max_lifetime_h * 3600
-    free = simulate(sat, periods=cap / sat.period, model=spec.model, rtol=rtol,
-                    atol=rtol * ATOL_PER_RTOL, progress=False)
+    free = _finished(simulate(sat, periods=cap / sat.period, model=spec.model, rtol=rtol,
+                              atol=rtol * ATOL_PER_RTOL, progress=False))
     lost, reentry = math.nan, math.nan
     if free.status == "ok":
         reentry = math.inf
@@ -191,7 +191,8 @@ def free_ends(spec: FeasibilitySpec, sat: Satellite, rtol: float) -> dict:
     elif free.status == "left-domain":
         lost = float(free.t[-1])
         if lost < cap:
-            t, _ = continue_released(free, cap)
+            t, cont = continue_released(free, cap)
+            _finished(cont)
             reentry = math.inf if t is None else t
         else:
             reentry = math.inf
@@ -202,15 +203,22 @@ def free_ends(spec: FeasibilitySpec, sat: Satellite, rtol: float) -> dict:
             "end_altitude": float(free.altitude[-1])}
 
 
+def _finished(res):
+    """The run, unless Ctrl-C stopped it: a truncated run is not recorded as an outcome."""
+    if res.status == "interrupted":
+        raise KeyboardInterrupt
+    return res
+
+
 def _decide(spec: FeasibilitySpec, h_km: float, a3: float, rtol: float) -> dict:
     """The verdict runs of a point at one tolerance: free, nominal and trims."""
     kw = dict(model=spec.model, progress=False, rtol=rtol, atol=rtol * ATOL_PER_RTOL)
     ends = free_ends(spec, spec.free(h_km, a3), rtol)
     sat = spec.circular(h_km, a3)
-    nominal = outcome(simulate(sat, periods=spec.periods, **kw), forces=False)
+    nominal = outcome(_finished(simulate(sat, periods=spec.periods, **kw)), forces=False)
     scales = solar_scales(h_km, spec.solar)
-    trims = {c: outcome(simulate(spec.circular(h_km, a3, k), periods=spec.periods, **kw),
-                        forces=False) for c, k in scales.items()}
+    trims = {c: outcome(_finished(simulate(spec.circular(h_km, a3, k), periods=spec.periods,
+                                           **kw)), forces=False) for c, k in scales.items()}
     v = verdict(ends["life"], nominal, trims.values(), run_s=spec.periods * sat.period,
                 cap_s=spec.max_lifetime_h * 3600, lost=math.isfinite(ends["lost"]))
     return {"ends": ends, "nominal": nominal, "trims": trims, "scales": scales,
@@ -232,7 +240,8 @@ def run_point(spec: FeasibilitySpec, h_km: float, a3: float) -> dict:
            "reentry_h": _hours(ends["reentry"], cap),
            "reentry_capped": ends["reentry"] == math.inf,
            "free_end": ends["end"], "end_altitude_km": ends["end_altitude"] / 1e3,
-           "settling_h": settling_time(nominal) / 3600, "nominal_class": nominal.class_name,
+           "settling_h": settling_time(nominal) / 3600, "nominal_status": nominal.status,
+           "nominal_class": nominal.class_name,
            "theta_ss_rad": _theta_ss(nominal), "drag_makeup_m_s_day": nominal.drag_makeup}
     for c, k in main["scales"].items():
         row[f"scale_{c}"] = k
