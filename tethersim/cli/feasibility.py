@@ -1,7 +1,7 @@
 """``tethersim feasibility``: does the design work in a real orbit?
 
-Per start altitude (and balloon area): the lifetime of the free, decaying orbit,
-the settling time of the thesis's held circular orbit, and whether the pitch
+Per start altitude (and balloon area): when the free, decaying orbit loses its
+balloon and when it re-enters, the settling time of the thesis's held circular orbit, and whether the pitch
 trim holds across the solar cycle's air (docs/feasibility.md).  Writes
 ``feasibility.csv``, ``feasibility.png`` and a resumable store under ``--out``.
 """
@@ -11,18 +11,22 @@ from pathlib import Path
 
 from tethersim.cli import options
 
-HELP = "lifetime, settling and trim across altitudes: does the design work in a real orbit?"
+HELP = ("balloon lost, re-entry, settling and trim across altitudes: does the design work in "
+        "a real orbit?")
 
 
 def add_parser(sub) -> None:
     """Declare ``feasibility`` and its options on the subparsers ``sub``."""
     p = sub.add_parser(
         "feasibility", help=HELP,
-        description="For each start altitude (and balloon area): the lifetime of the free "
-                    "orbit (run until re-entry, capped), the settling time of the held "
-                    "circular orbit, and whether the trim |theta_ss| <= 0.05 rad holds with "
-                    "the density scaled to NRLMSISE-00's solar minimum/mean/maximum; a "
-                    "verdict per point.  Resumable: run the same command again.")
+        description="For each start altitude (and balloon area): when the free orbit loses "
+                    "its balloon (a tether beyond its stretch limit) and when it re-enters "
+                    "(the boom alone, after the tether breaks; capped), the settling time of "
+                    "the held circular orbit, and whether the trim |theta_ss| <= 0.05 rad "
+                    "holds with the density scaled to NRLMSISE-00's solar minimum/mean/"
+                    "maximum; a verdict per point, decided at two tolerances ('sensitive' "
+                    "where they differ) and 'undecided: run longer' where --periods is too "
+                    "short to decide.  Resumable: run the same command again.")
     options.add_satellite(p)
     p.add_argument("--altitude", required=True, metavar="GRID",
                    help="start altitudes [km], START:STOP:COUNT or a comma list, e.g. "

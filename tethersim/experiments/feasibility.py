@@ -1,4 +1,4 @@
-"""Feasibility atlas: lifetime, settling and trim across altitudes (and balloon areas).
+"""Feasibility atlas: balloon lost, re-entry, settling and trim across altitudes (and areas).
 
 Per point (altitude h, balloon area A3), from the satellite with those two set:
 
