@@ -194,8 +194,9 @@ def estimate_error(run: SimResult) -> SimResult:
     -------
     SimResult
         A copy of ``run`` whose error_estimate holds |final state - final state
-        of the rerun| in (δx, δy, θ): RK4 reruns at half the step, the adaptive
-        method at rtol/100 and atol/100.  ``run`` itself (unchanged) when it did
+        of the rerun| in every generalized coordinate of the model, in its
+        layout order (``SimResult.errors`` names them): RK4 reruns at half the
+        step, the adaptive method at rtol/100 and atol/100.  ``run`` itself (unchanged) when it did
         not end with status "ok", when the rerun fails, or when it has no
         record of its length (``periods``).
     """
@@ -214,7 +215,10 @@ def _with_error(run: SimResult, fine: SimResult) -> SimResult:
     from dataclasses import replace
     if fine.status != "ok":
         return run
-    err = tuple(float(abs(a - b)) for a, b in zip(run.states[-1, :3], fine.states[-1, :3]))
+    # every generalized coordinate (the 3-D layout's θ is the fifth, φ and ψ beside it; a
+    # free orbit's r and ν follow): the first three alone never looked at the attitude
+    n = run.layout.n_coordinates
+    err = tuple(float(abs(a - b)) for a, b in zip(run.states[-1, :n], fine.states[-1, :n]))
     return replace(run, error_estimate=err)
 
 
@@ -287,12 +291,14 @@ def refined_grid(t_end: float, n_out: int, refine: int) -> np.ndarray:
 
 
 def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
-                  refine: int = 1) -> SimResult:
+                  refine: int = 1, start=None) -> SimResult:
     t_end = periods * sat.period
     m, air = _kernel_args(sat, model, t_end)
     p = parameter_vector(sat, model)
     pw = p.copy()
-    y = initial_state(m, initial_model_state(sat, model), sat.r0, sat.r0 * sat.omega)
+    # start: an integrated state to continue from (engine/release.py), else the satellite's
+    y = (initial_state(m, initial_model_state(sat, model), sat.r0, sat.r0 * sat.omega)
+         if start is None else np.array(start, dtype=float))
     out_t = refined_grid(t_end, n_out, refine)
     out_y = np.full((out_t.size, state_size(m)), np.nan)
     out_y[0] = y
