@@ -1,13 +1,13 @@
 """The thesis's printed equations, transcribed term by term (not derived).
 
 Eqs 3.28-3.30 (Lagrange left-hand sides) and 3.48-3.50 (equations of motion),
-as written out in shared/thesis/equations.md: **as printed, errors included**.
+as printed in the thesis (Maramba 2005, chapter III): **as printed, errors included**.
 Every tether force term is gathered on the right-hand side with the sign that
 follows from Eqs 3.43-3.47.  The expressions use the plain state symbols of
 ``symbols.STATE_SYMBOLS`` and the tether-length symbols λ1, λ2.
 
 Nothing here is computed from the mechanics objects: this module is the
-independent reference that tests/test_errata.py compares with the derivation.
+independent reference that tests/derive/test_errata.py compares with the derivation.
 """
 from __future__ import annotations
 

@@ -1,6 +1,6 @@
 """Public API contract: accelerations, generalized_forces, parameters, simulate, SimResult.
 
-Equation numbers: shared/thesis/equations.md (Maramba 2005, chapter III).
+Equation numbers: the thesis as printed (Maramba 2005, chapter III).
 """
 from __future__ import annotations
 

@@ -213,7 +213,7 @@ def test_free_balloon_has_the_hill_clohessy_wiltshire_modes(model):
 
     In L (ω ẑ, y up): δẍ = 2ω δẏ, δÿ = −2ω δẋ + 3ω² δy, so the characteristic
     polynomial is λ²(λ² + ω²): eigenvalues 0, 0 (along-track drift) and ±iω
-    (the epicycle).  The pitch (√3 ω, tests/test_jacobian.py) is decoupled.
+    (the epicycle).  The pitch (√3 ω, tests/derive/test_jacobian.py) is decoupled.
     """
     sat = ts.load_preset("satI").replace(CD=0.0, E1=0.0, E2=0.0, c1=0.0, c2=0.0)
     w = sat.omega

@@ -30,7 +30,7 @@ CIRCULAR_3D = [n for n, m in generated.MODELS.items()
 
 
 def sat_params(boxes=True, drag=True, dampers=True):
-    """SatI-like values (tethersim/presets/satI.toml) with Eq 4.4 boxes or point masses."""
+    """SatI-like values (tethersim/model/presets/satI.toml) with Eq 4.4 boxes or point masses."""
     v = dict(m1=10.0, m2=105.0, m3=1.0, A1=0.1, A2=1.05, A3=12.0, a=1.0, b=10.5, l10=6.0,
              l20=6.0, E1=0.004, E2=0.0427, c1=3e-4 if dampers else 0.0,
              c2=3e-4 if dampers else 0.0, CD=2.0 if drag else 0.0, r0=R0, mu=MU, omega=N,

@@ -41,7 +41,7 @@ def _lengths(y, p):
 
 
 def _draw(rng, taut):
-    """Random planar (y, p) as tests/test_generated.py, tether j taut or slack by ≥ 5 %."""
+    """Random planar (y, p) as tests/derive/test_generated.py, tether j taut or slack by ≥ 5 %."""
     u = rng.uniform
     par = dict(m1=u(5, 20), m2=u(50, 200), m3=u(0.5, 2), A1=u(0.1, 1), A2=u(0.1, 1),
                A3=u(5, 20), a=u(0.5, 2), b=u(5, 20), l10=0.0, l20=0.0, E1=u(1e-3, 0.1),

@@ -1,6 +1,6 @@
 """Printed equations of motion (Eqs 3.48-3.50) against the derivation, term by term.
 
-derive.printed is the transcription of 3.48-3.50 from shared/thesis/equations.md;
+derive.printed is the transcription of 3.48-3.50 from the thesis as printed;
 the derivation's families come from derive.forces via the pipeline.  Every
 disagreement is listed once, in ERRATA, and described in docs/errata.md.
 """

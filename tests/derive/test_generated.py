@@ -32,7 +32,7 @@ REL_TOL = 1e-12
 # to be > 1e3 · FLOOR, so the floor never relaxes a genuinely non-zero value.
 FLOOR = 1e-15
 
-# Environment (shared/thesis/facts.md: 200 km circular orbit, R_E = 6378.137 km).
+# Environment (docs/sources.md, "The thesis": 200 km circular orbit, R_E = 6378.137 km).
 R0 = 6.578e6  # m
 MU = 3.986004418e14  # m^3/s^2
 OMEGA = math.sqrt(MU / R0**3)  # Eq 3.14
@@ -195,7 +195,7 @@ def test_generated_family_forces_equal_symbolic_families_at_40_digits(sample, sy
 # ------------------------------------------------------- models among themselves
 
 # Two float64 evaluations of expressions that are symbolically equal
-# (tests/test_errata.py) but printed by different cse trees: a few hundred ulps.
+# (tests/derive/test_errata.py) but printed by different cse trees: a few hundred ulps.
 SAME_TOL = 1e-13
 
 
@@ -271,7 +271,7 @@ def _exact_minus_derived_acc(y, p):
 
 def _leading_acc_difference(y, p):
     """q̈_exact − q̈_derived to leading order = −M⁻¹ (LHS_exact − LHS_derived),
-    from EXACT_MINUS_DERIVED_LEADING in tests/test_derive_lagrange.py:
+    from EXACT_MINUS_DERIVED_LEADING in tests/derive/test_lagrange.py:
     δẍ: +3/2 ω² δx (δx² − 4 δy²)/r0², δÿ: −15/2 ω² δy²/r0,
     θ̈: −15/2 ω² (m2 a³ − m1 b³) sinθ cos²θ / (r0 (m1 b² + m2 a²))."""
     v = dict(zip(PARAMETER_NAMES, p))

@@ -1,6 +1,6 @@
 """Kinematics and gravity potential of the derivation (Eqs 3.10-3.25).
 
-References are to shared/thesis/equations.md (Maramba 2005, chapter III).
+References are to the thesis as printed (Maramba 2005, chapter III).
 """
 from __future__ import annotations
 
@@ -117,7 +117,7 @@ def test_binomial_inverse_distance_relative_error_scales_as_offset_over_r0_cubed
     x, y = STATE_SYMBOLS[:2]
     f_bin = sp.lambdify((x, y, r0), binomial, modules="mpmath")
     f_ex = sp.lambdify((x, y, r0), exact, modules="mpmath")
-    radius = 6.578e6  # m, the 200 km orbit (shared/thesis/facts.md)
+    radius = 6.578e6  # m, the 200 km orbit (docs/sources.md, "The thesis")
     phi = 0.7  # rad from +y; cos φ ≠ 0 so the (δy)³ term is present
     offsets = np.logspace(0, 4, 9)  # 1 m ... 10 km
     rel = []

@@ -1,6 +1,6 @@
 """Lagrange equations of the derivation against the printed ones (Eqs 3.26-3.31).
 
-References are to shared/thesis/equations.md (Maramba 2005, chapter III).
+References are to the thesis as printed (Maramba 2005, chapter III).
 """
 from __future__ import annotations
 

@@ -1,6 +1,6 @@
 """tethersim compare: experiments/compare.py, plot_compare.py (the command: tests/cli).
 
-tests/test_generated.py already checks the model variants against each other
+tests/derive/test_generated.py already checks the model variants against each other
 at single states (right-hand sides and force families).  Here the truths are
 checked on whole trajectories, through compare(): what the comparison adds.
 """

@@ -1,4 +1,4 @@
-"""The headline study (tethersim/experiments/headlines.py, docs/headlines.md): invariants, not our numbers."""
+"""The headline study (tethersim/experiments/headlines/, docs/headlines.md): invariants, not our numbers."""
 from __future__ import annotations
 
 import math

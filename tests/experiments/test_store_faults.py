@@ -1,6 +1,6 @@
 """Sweep stores under attack: truncated, deleted and altered chunks, damaged metadata,
 two writers; every resume equals an uninterrupted run.  SIGKILL mid-write, then
-resume: tests/test_sweep.py::test_killed_sweep_resumes_to_the_uninterrupted_data, whose
+resume: tests/experiments/test_sweep.py::test_killed_sweep_resumes_to_the_uninterrupted_data, whose
 resume also shows that a killed writer's lock does not block the next one."""
 from __future__ import annotations
 

@@ -1,6 +1,6 @@
 """Shipped presets and strict validation of satellite TOML files.
 
-Reference relations: shared/thesis/facts.md (Maramba 2005; page numbers are the
+Reference relations: docs/sources.md, "The thesis" (Maramba 2005; page numbers are the
 thesis's own).  Table 4.1's numbers were lost, so the presets are checked against
 the relations that survive, not against values.
 """

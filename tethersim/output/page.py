@@ -13,7 +13,7 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-FACTS_SOURCE = "shared/thesis/facts.md"
+FACTS_SOURCE = "docs/sources.md, The thesis: what survives"
 _ZERO = re.compile(r"^[+-]?(0(\.0*)?|—|nan|none|)( of \d+)?( ?%)?$", re.I)
 CSS = ("*{box-sizing:border-box}"
        "body{font-family:sans-serif;max-width:1200px;margin:auto;padding:1em}"

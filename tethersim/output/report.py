@@ -5,7 +5,7 @@ SatI's headline cases (moduli out of range, damping x 10) faithful and
 converged; force breakdowns (Figs 5.7-5.20); six stability maps (Figs 5.13,
 5.21-5.23, 5.27-5.28), each converged, faithful and predicted from the
 eigenvalues, with their agreement; the torque balance E2/E1 vs b/a; and a
-table that sets each surviving statement of the thesis (shared/thesis/facts.md)
+table that sets each surviving statement of the thesis (docs/sources.md, "The thesis")
 beside what this project computes; whether the design works in a real orbit
 (balloon lost and re-entry of the free orbit, settling, trim across the solar cycle:
 docs/feasibility.md);

@@ -111,7 +111,7 @@ def initial_scan(sat: Satellite | None = None, delta_x0=(0.0, 6.0, 12.0, 20.0, 2
                  models=("derived", "objective-damper")) -> list:
     """Converged (DOP853) outcome against the balloon's initial offset δx0 [m].
 
-    Table 4.2's δx0 and δy0 were lost (shared/thesis/facts.md); the preset starts
+    Table 4.2's δx0 and δy0 were lost (docs/sources.md, "The thesis"); the preset starts
     the balloon near its trail (29 m).  This checks that no headline hinges on it.
     """
     from tethersim.model.presets import load_preset
