@@ -32,7 +32,8 @@ def test_metrics_do_not_depend_on_the_output_sampling(sat):
 
 def test_outcome_of_a_finished_run_counts(sat):
     out = ts.outcome(ts.simulate(sat, periods=1, progress=False))
-    assert out.counts and out.status == "ok" and out.class_name in CLASSES[:FAILED]
+    # one orbit is too short to decide a class (docs/metrics.md): it counts, undecided
+    assert out.counts and out.status == "ok" and out.class_name != CLASSES[FAILED]
     assert abs(out.trail_delta_x - 28.9) < 0.2  # the SatI trail (README)
 
 

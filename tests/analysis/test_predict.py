@@ -203,7 +203,7 @@ def test_agreement_counts_hand_made_maps():
     with pytest.raises(ValueError, match="shape"):
         agreement(predicted, simulated[:, :2])
     with pytest.raises(ValueError, match="not a class"):
-        agreement(predicted, np.full((2, 3), 6))
+        agreement(predicted, np.full((2, 3), len(CLASSES)))
 
 
 # --- eigenvalues with no tethers and no drag (issue 5) --------------------------------

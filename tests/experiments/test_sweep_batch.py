@@ -37,7 +37,10 @@ def _specs():
         base = SAT.replace(initial=(SAT.initial[0], SAT.initial[1], theta0, 0.0, 0.0, 0.0))
         for name, axes in GRIDS.items():
             method = "faithful" if name == "faithful" else "adaptive"
-            yield SweepSpec(base, axes, periods=2.0, method=method)
+            # 3 orbits: long enough to decide a class (metrics.long_enough)
+            yield SweepSpec(base, axes, periods=3.0, method=method)
+    # and one too short to decide: undecided points, equal on both paths too
+    yield SweepSpec(SAT, GRIDS["adaptive"], periods=1.0)
 
 
 @pytest.fixture(scope="module")

@@ -9,27 +9,51 @@ Codes (stored in sweep data sets as CF flag_values / flag_meanings):
   3 upside_down  |θ_ss| > 3π/4 (Fig 5.14)
   4 tumbling     θ passed ±π and did not end upside down (Fig 5.4)
   5 failed       the integration failed (non-finite state, step too small)
+  6 undecided    the run is too short to decide (metrics.long_enough): run longer
 
 The order of the tests is the priority: a run that tumbled and ended upside
-down is "upside_down".  Definitions of the metrics: docs/metrics.md.
+down is "upside_down".  A run too short to decide is "tumbling" if θ passed ±π
+(that happened, whatever follows), else "undecided".  "undecided" comes last so
+that the stored codes of the other classes keep their numbers.  Definitions of the metrics: docs/metrics.md.
 """
 from __future__ import annotations
 
 import math
 
-from tethersim.analysis.metrics import SETTLING_TOL, PitchMetrics
+from tethersim.analysis.metrics import SETTLING_TOL, PitchMetrics, long_enough, min_run_orbits
 
-CLASSES = ("stable", "unsettled", "offset", "upside_down", "tumbling", "failed")
-STABLE, UNSETTLED, OFFSET, UPSIDE_DOWN, TUMBLING, FAILED = range(len(CLASSES))
-CLASS_COLORS = ("#2e7d32", "#9ccc65", "#fbc02d", "#c62828", "#6a1b9a", "#616161")
+CLASSES = ("stable", "unsettled", "offset", "upside_down", "tumbling", "failed", "undecided")
+STABLE, UNSETTLED, OFFSET, UPSIDE_DOWN, TUMBLING, FAILED, UNDECIDED = range(len(CLASSES))
+CLASS_COLORS = ("#2e7d32", "#9ccc65", "#fbc02d", "#c62828", "#6a1b9a", "#616161", "#90caf9")
 SETTLING_REQUIREMENT = 3 * 86400.0  # s: three days, thesis p. 5-6
 
 
 def classify(m: PitchMetrics | None, tol: float = SETTLING_TOL,
-             requirement: float = SETTLING_REQUIREMENT) -> int:
-    """Class code of a run from its metrics (None: the integration failed)."""
+             requirement: float = SETTLING_REQUIREMENT, run_orbits: float = math.inf) -> int:
+    """Class code of a run from its metrics (None: the integration failed).
+
+    Parameters
+    ----------
+    m : PitchMetrics or None
+        The run's pitch metrics; None when the integration failed.
+    tol : float, optional
+        Settling band [rad].
+    requirement : float, optional
+        Longest settling time that counts as stable [s].
+    run_orbits : float, optional
+        Length of the run [orbits]; below
+        :func:`tethersim.analysis.metrics.min_run_orbits` the class is
+        ``tumbling`` if θ passed ±π, else ``undecided``.
+
+    Returns
+    -------
+    int
+        Code in :data:`CLASSES`.
+    """
     if m is None:
         return FAILED
+    if not long_enough(run_orbits):
+        return TUMBLING if m.tumbled else UNDECIDED
     if m.upside_down:
         return UPSIDE_DOWN
     if m.tumbled:
@@ -39,6 +63,13 @@ def classify(m: PitchMetrics | None, tol: float = SETTLING_TOL,
     if not math.isfinite(m.settling_time) or m.settling_time > requirement:
         return UNSETTLED
     return STABLE
+
+
+def describe(code: int) -> str:
+    """The class name; for ``undecided``, with how long a run must be to decide."""
+    if code == UNDECIDED:
+        return f"undecided: run at least {min_run_orbits():.4g} orbits"
+    return CLASSES[code]
 
 
 def flag_attrs() -> dict:

@@ -13,8 +13,7 @@ A point (an altitude, a balloon area) has three kinds of runs
 
 :func:`verdict` turns them into one of :data:`VERDICTS`, in this priority:
 
-1. ``unstable`` -- the nominal run failed, tumbled or ended upside down, or did not
-   settle although the run could have seen a settling at any time up to the cap;
+1. ``unstable`` -- the nominal run failed, tumbled or ended upside down;
 2. ``balloon lost before settling`` / ``re-enters before settling`` -- the usable
    life ended before the nominal settling time (or the run could have seen a
    settling before it ended and saw none);
@@ -26,7 +25,13 @@ A point (an altitude, a balloon area) has three kinds of runs
    to see.  The settling criterion (docs/metrics.md) looks at the last
    ``SS_FRACTION`` of a run, so a run of T sees a settling only up to
    (1 − SS_FRACTION) T: deciding "did not settle in time" needs
-   (1 − SS_FRACTION) T ≥ the usable life (or the cap), :func:`periods_to_decide`.
+   (1 − SS_FRACTION) T ≥ the usable life, :func:`periods_to_decide`; a run shorter
+   than :func:`tethersim.analysis.metrics.min_run_orbits` has no class yet
+   (``undecided``, tethersim.analysis.classify) and decides nothing but a tumble;
+6. ``undecided: raise the lifetime cap`` -- the free orbit outlived the cap
+   (``max_lifetime_h``), so its life is not known, and the answer turns on it:
+   the runs did not settle (or a trim did not) within the cap.  A capped life is
+   never used as if the life ended there.
 
 A point is decided at two integrator tolerances (experiments/feasibility.py); a
 verdict that differs between them is reported as :data:`SENSITIVE`
@@ -37,15 +42,17 @@ from __future__ import annotations
 import math
 
 from tethersim.analysis.classify import FAILED, TUMBLING, UPSIDE_DOWN
-from tethersim.analysis.metrics import SETTLING_TOL, SS_FRACTION
+from tethersim.analysis.classify import UNDECIDED as UNDECIDED_CLASS
+from tethersim.analysis.metrics import SETTLING_TOL, SS_FRACTION, min_run_orbits
 from tethersim.analysis.outcome import Outcome
 
 VERDICTS = ("feasible", "balloon lost before settling", "re-enters before settling",
-            "trim lost as the air varies", "unstable", "undecided: run longer", "sensitive")
-FEASIBLE, LOST, REENTERS, TRIM_LOST, UNSTABLE, UNDECIDED, SENSITIVE = VERDICTS
+            "trim lost as the air varies", "unstable", "undecided: run longer", "sensitive",
+            "undecided: raise the lifetime cap")
+FEASIBLE, LOST, REENTERS, TRIM_LOST, UNSTABLE, UNDECIDED, SENSITIVE, CAPPED = VERDICTS
 VERDICT_COLORS = {FEASIBLE: "#2e7d32", LOST: "#ef6c00", REENTERS: "#c62828",
                   TRIM_LOST: "#fbc02d", UNSTABLE: "#6a1b9a", UNDECIDED: "#ffffff",
-                  SENSITIVE: "#9e9e9e"}
+                  SENSITIVE: "#9e9e9e", CAPPED: "#e0e0e0"}
 _LOST = (FAILED, TUMBLING, UPSIDE_DOWN)
 
 
@@ -65,9 +72,11 @@ def periods_to_decide(horizon_s: float, period_s: float) -> int:
     """Fewest orbits of a circular run that can see a settling up to ``horizon_s`` [s].
 
     The settling criterion needs the run's last ``SS_FRACTION`` inside the band, so
-    a run of T [s] sees a settling up to (1 − SS_FRACTION) T.
+    a run of T [s] sees a settling up to (1 − SS_FRACTION) T; and no run shorter
+    than :func:`~tethersim.analysis.metrics.min_run_orbits` has a class at all.
     """
-    return math.ceil(horizon_s / ((1 - SS_FRACTION) * period_s) - 1e-9)
+    return max(math.ceil(horizon_s / ((1 - SS_FRACTION) * period_s) - 1e-9),
+               math.ceil(min_run_orbits()))
 
 
 def verdict(lifetime_s: float, nominal: Outcome, trims, tol: float = SETTLING_TOL, *,
@@ -78,7 +87,7 @@ def verdict(lifetime_s: float, nominal: Outcome, trims, tol: float = SETTLING_TO
     ----------
     lifetime_s : float
         When the free orbit's usable life ended [s] (``math.inf`` if it outlived
-        the cap).
+        the cap: then a verdict that turns on the life is :data:`CAPPED`).
     nominal : Outcome
         Outcome of the nominal circular run.
     trims : iterable of Outcome
@@ -98,23 +107,31 @@ def verdict(lifetime_s: float, nominal: Outcome, trims, tol: float = SETTLING_TO
         One of :data:`VERDICTS` other than :data:`SENSITIVE`.
     """
     seen = (1 - SS_FRACTION) * run_s  # the latest settling the runs can show
-    horizon = lifetime_s if math.isfinite(lifetime_s) else cap_s
+    capped = not math.isfinite(lifetime_s)  # the life outlived the cap: its end is unknown
+    horizon = cap_s if capped else lifetime_s
     ended = LOST if lost else REENTERS
+    trims = tuple(trims)
     settle = settling_time(nominal)
     if not nominal.counts or nominal.stability_class in _LOST:
         return UNSTABLE
+    if nominal.stability_class == UNDECIDED_CLASS:  # too short for any class
+        return UNDECIDED
     if not math.isfinite(settle):
         if seen < horizon:
             return UNDECIDED
-        return ended if math.isfinite(lifetime_s) else UNSTABLE
+        return CAPPED if capped else ended
     if lifetime_s < settle:
         return ended
     for o in (nominal, *trims):
+        if o.counts and o.stability_class == UNDECIDED_CLASS:
+            return UNDECIDED
         if not trim_held(o, tol):
             return TRIM_LOST
     for o in trims:  # a held trim that has not settled yet: does it settle in time?
         if not math.isfinite(settling_time(o)):
-            return UNDECIDED if seen < horizon else TRIM_LOST
+            if seen < horizon:
+                return UNDECIDED
+            return CAPPED if capped else TRIM_LOST
     return FEASIBLE
 
 

@@ -7,6 +7,10 @@ settling time      first time after which |θ − θ_ss| stays within ``tol``; N
                    criterion: ±0.05 rad, within three days ≈ 50 orbits, p. 5-6, 5-18)
 tumbled            θ left the interval (−π, π): the boom went over the top
 upside down        steady-state pitch within π/4 of ±π (tip-mass pointing down)
+
+How long a run must be for these to mean anything (:func:`long_enough`): the
+steady-state window must hold at least one pitch libration period, else θ_ss is a
+point on the initial libration and "settled" a moment of it.
 """
 from __future__ import annotations
 
@@ -17,6 +21,9 @@ import numpy as np
 
 SETTLING_TOL = 0.05  # rad, thesis stability criterion (p. 5-18)
 SS_FRACTION = 0.2  # last fifth of the run defines the steady state
+# The gravity-gradient pitch librates at √3 ω (thesis Eq 4.5 with point masses,
+# tethersim.analysis.validation): its period is 1/√3 of an orbit.
+LIBRATION_ORBITS = 1 / math.sqrt(3)
 
 
 @dataclass(frozen=True)
@@ -29,6 +36,33 @@ class PitchMetrics:
 
     def to_dict(self) -> dict:
         return asdict(self)
+
+
+def check_tol(tol) -> float:
+    """The settling band ``tol`` [rad] if it is a finite number in (0, π); else ValueError."""
+    if isinstance(tol, bool) or not isinstance(tol, (int, float, np.floating, np.integer)) \
+            or not (0 < tol < math.pi):
+        raise ValueError(f"tol = {tol!r}: the settling band must be a finite number of "
+                         f"radians in (0, pi)")
+    return float(tol)
+
+
+def min_run_orbits(ss_fraction: float = SS_FRACTION) -> float:
+    """Fewest orbits whose steady-state window holds one pitch libration period.
+
+    The window is the last ``ss_fraction`` of the run, so the run needs
+    ``LIBRATION_ORBITS / ss_fraction`` orbits (≈ 2.89 with the last fifth).
+    """
+    return LIBRATION_ORBITS / ss_fraction
+
+
+def long_enough(run_orbits: float, ss_fraction: float = SS_FRACTION) -> bool:
+    """Whether a run of ``run_orbits`` orbits is long enough to decide its class.
+
+    The one test of run length, used by :func:`tethersim.analysis.outcome.outcome`
+    and the compiled sweep blocks (tethersim.experiments.sweep.batch) alike.
+    """
+    return run_orbits >= min_run_orbits(ss_fraction)
 
 
 def wrap(angle):
@@ -51,6 +85,7 @@ def pitch_metrics(t, theta, tol: float = SETTLING_TOL,
     theta = np.asarray(theta, dtype=float)
     if t.size < 2:
         raise ValueError("pitch_metrics needs at least two samples")
+    tol = check_tol(tol)
     if not 0 < ss_fraction <= 1:
         raise ValueError(f"ss_fraction = {ss_fraction}: allowed range (0, 1]")
     tail = steady_state_window(t, ss_fraction)

@@ -23,7 +23,13 @@ from dataclasses import asdict, dataclass, field, replace
 import numpy as np
 
 from tethersim.analysis.classify import CLASSES, FAILED, classify
-from tethersim.analysis.metrics import SETTLING_TOL, PitchMetrics, pitch_metrics, steady_state_window
+from tethersim.analysis.metrics import (
+    SETTLING_TOL,
+    PitchMetrics,
+    check_tol,
+    pitch_metrics,
+    steady_state_window,
+)
 from tethersim.engine.evaluate import family_force_peaks
 from tethersim.engine.result import SimResult, dominant_error
 
@@ -151,6 +157,14 @@ def finite_prefix(res: SimResult) -> int:
     return int(bad[0]) if bad.size else res.t.size
 
 
+def run_orbits(res: SimResult) -> float:
+    """Length of a run [orbits]: the length asked for (a run that counts ran all of it),
+    as a sweep's compiled blocks take it, else the span of its samples."""
+    if res.periods is not None:
+        return float(res.periods)
+    return float(res.t[-1] - res.t[0]) / res.satellite.period if res.t.size else 0.0
+
+
 def outcome(res: SimResult, tol: float = SETTLING_TOL, forces: bool = True) -> Outcome:
     """The :class:`Outcome` of a run.
 
@@ -159,7 +173,7 @@ def outcome(res: SimResult, tol: float = SETTLING_TOL, forces: bool = True) -> O
     res : SimResult
         A finished (or stopped) run.
     tol : float, optional
-        Settling band [rad] (thesis ±0.05 rad, p. 5-18).
+        Settling band [rad] (thesis ±0.05 rad, p. 5-18): finite, in (0, π).
     forces : bool, optional
         Also find the largest force of a single family on each coordinate
         (evaluates the force kernels at every sample).
@@ -167,6 +181,9 @@ def outcome(res: SimResult, tol: float = SETTLING_TOL, forces: bool = True) -> O
     Returns
     -------
     Outcome
+        A run that counts but is shorter than
+        :func:`tethersim.analysis.metrics.min_run_orbits` is ``undecided`` (or
+        ``tumbling`` if θ passed ±π): :func:`run_orbits`.
 
     Examples
     --------
@@ -175,6 +192,7 @@ def outcome(res: SimResult, tol: float = SETTLING_TOL, forces: bool = True) -> O
     >>> ts.outcome(res).status
     'ok'
     """
+    check_tol(tol)
     if res.fine_t is not None:  # metrics on the metrics grid, not the output sampling
         res = replace(res, t=res.fine_t, states=res.fine_states, fine_t=None, fine_states=None)
     n = finite_prefix(res)
@@ -192,7 +210,7 @@ def outcome(res: SimResult, tol: float = SETTLING_TOL, forces: bool = True) -> O
         with warnings.catch_warnings(), np.errstate(all="ignore"):
             warnings.simplefilter("ignore", RuntimeWarning)  # a diverging run's huge values
             m = pitch_metrics(t, states[:, ith], tol=tol)
-    cls = FAILED if reason else classify(m, tol=tol)
+    cls = FAILED if reason else classify(m, tol=tol, run_orbits=run_orbits(res))
     trail = (math.nan, math.nan)
     if n >= 2:
         tail = steady_state_window(t)

@@ -5,7 +5,8 @@ from dataclasses import replace
 
 import numpy as np
 
-from tethersim.analysis.metrics import steady_state_window, wrap
+from tethersim.analysis.classify import UNDECIDED
+from tethersim.analysis.metrics import min_run_orbits, steady_state_window, wrap
 from tethersim.analysis.outcome import Outcome, finite_prefix, outcome
 from tethersim.engine.result import SimResult
 
@@ -45,6 +46,8 @@ def run_summary(res: SimResult, out: Outcome | None = None) -> dict:
     return {
         "label": res.label,
         "class": out.class_name,
+        **({"run at least [orbits] to decide the class": min_run_orbits()}
+           if out.stability_class == UNDECIDED else {}),
         "mean pitch [rad]": m.mean_pitch if m else nan,
         "steady-state pitch [rad]": m.steady_state_pitch if m else nan,
         "settling time [orbits]": m.settling_time / period if m else nan,

@@ -47,6 +47,7 @@ def run(args) -> int:
         0; a failed or interrupted variant raises :class:`options.RunFailed` or
         :class:`options.Interrupted` after the output is written.
     """
+    from tethersim.analysis.classify import CLASSES, describe
     from tethersim.experiments.compare import (
         COLUMNS,
         compare,
@@ -76,7 +77,8 @@ def run(args) -> int:
     print(heading)
     print(how.describe(sat.period, args.periods))
     print(format_table(rows))
-    print("\n".join(notes) if notes else f"all variants end {rows[0]['class']}")
+    print("\n".join(notes) if notes else "all variants end "
+          + describe(CLASSES.index(rows[0]["class"])))
     print("wrote " + ", ".join(str(p) for p in written))
     if any(r["status"] == "interrupted" for r in rows):
         raise options.Interrupted("the output holds the runs finished so far")

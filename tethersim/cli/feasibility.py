@@ -25,8 +25,10 @@ def add_parser(sub) -> None:
                     "the held circular orbit, and whether the trim |theta_ss| <= 0.05 rad "
                     "holds with the density scaled to NRLMSISE-00's solar minimum/mean/"
                     "maximum; a verdict per point, decided at two tolerances ('sensitive' "
-                    "where they differ) and 'undecided: run longer' where --periods is too "
-                    "short to decide.  Resumable: run the same command again.")
+                    "where they differ), 'undecided: run longer' where --periods is too "
+                    "short to decide and 'undecided: raise the lifetime cap' where the "
+                    "answer turns on a life longer than --max-lifetime.  Resumable: run "
+                    "the same command again.")
     options.add_satellite(p)
     p.add_argument("--altitude", required=True, metavar="GRID",
                    help="start altitudes [km], START:STOP:COUNT or a comma list, e.g. "
@@ -39,7 +41,8 @@ def add_parser(sub) -> None:
                                 "verdict that needs a longer run says 'undecided: run "
                                 "longer' and the periods_to_decide column says how long")
     p.add_argument("--max-lifetime", type=options.positive_float, default=240.0, metavar="H",
-                   help="cap on the free run [h] (default 240: ten days)")
+                   help="cap on the free run [h] (default 240: ten days); a verdict that "
+                        "turns on a longer life says 'undecided: raise the lifetime cap'")
     p.add_argument("--workers", type=options.positive_int, default=None, metavar="N",
                    help="threads (default 1)")
     p.add_argument("--rtol", type=options.rtol_float, default=1e-10,
@@ -112,6 +115,8 @@ def _verdict_text(r: dict) -> str:
     if r["verdict"] == "sensitive":
         return (f"sensitive: {r['verdict_rtol']} at rtol {r['rtol']:g}, "
                 f"{r['verdict_check_rtol']} at rtol {r['check_rtol']:g}")
+    if r["verdict"] == "undecided: raise the lifetime cap":
+        return f"{r['verdict']} (the free orbit outlived --max-lifetime {r['reentry_h']:g} h)"
     if r["verdict"].startswith("undecided"):
         return f"{r['verdict']} (--periods >= {r['periods_to_decide']})"
     return r["verdict"]

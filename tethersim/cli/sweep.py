@@ -73,9 +73,15 @@ def run(args) -> int:
     """
     import math
 
+    from tethersim.analysis.classify import UNDECIDED, describe
     from tethersim.engine.guards import check_sweep
     from tethersim.experiments.sweep import SweepSpec, run_sweep
-    from tethersim.experiments.sweep.analysis import band_slope, class_counts, status_counts
+    from tethersim.experiments.sweep.analysis import (
+        band_slope,
+        class_counts,
+        class_names,
+        status_counts,
+    )
     from tethersim.experiments.sweep.store import status_names
     from tethersim.model import params
     from tethersim.output.plots.sweep import plot_stability_map
@@ -112,6 +118,8 @@ def run(args) -> int:
                     for n in (*table.dims, *table.data_vars))
     # the status by the engine's name (ok, diverged, left-domain ...), not its code
     table["status"] = (table.status.dims, status_names(ds))
+    table["class"] = (table.stability_class.dims, class_names(ds))  # the code's name
+    columns += (("class", "class"),)
     write_table(out / "sweep.csv", table.to_dataframe().reset_index().to_dict("records"), columns)
     written = [out / "sweep.zarr", out / "sweep.csv"]
     slope = band_slope(ds) if spec.names == ("E1", "E2") else float("nan")
@@ -121,7 +129,8 @@ def run(args) -> int:
                                           band_slope=slope))
     written.append(options.write_provenance(out, record))
     for name, n in class_counts(ds).items():
-        print(f"  {name:<12} {n}")
+        hint = describe(UNDECIDED)[len(name):] if name == "undecided" and n else ""
+        print(f"  {name:<12} {n}{hint}")
     not_ok = {s: n for s, n in status_counts(ds).items() if s != "ok" and n}
     if not_ok:  # their NaN metrics have a reason: say it, and how to see the message
         print(f"  {sum(not_ok.values())} point(s) did not finish ok "

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from tethersim.analysis.classify import CLASSES, STABLE, TUMBLING, UPSIDE_DOWN
-from tethersim.analysis.metrics import SETTLING_TOL
+from tethersim.analysis.metrics import SETTLING_TOL, long_enough, min_run_orbits
 from tethersim.experiments.sweep.point import run_point
 from tethersim.experiments.sweep.runner import map_points
 from tethersim.experiments.sweep.spec import SweepSpec
@@ -48,6 +48,14 @@ class TuneResult:
     runs: int
 
 
+def check_periods(periods: float) -> None:
+    """Refuse runs too short to decide a class (tethersim.analysis.metrics.long_enough):
+    every point of a tuning would be ``undecided``."""
+    if not long_enough(periods):
+        raise ValueError(f"periods = {periods!r}: too short to decide a stability class; "
+                         f"tuning needs at least {min_run_orbits():.4g} orbits")
+
+
 def _run(sat: Satellite, name: str, value_si: float, periods: float, model: str) -> dict:
     spec = SweepSpec(sat, ((name, [from_si(name, value_si)]),), periods=periods, model=model)
     return run_point(spec, 0)
@@ -62,6 +70,7 @@ def _theta_ss(rec: dict) -> float:
 def stable_band_E2(sat: Satellite, periods: float = 50.0, model: str = "derived",
                    tol: float = SETTLING_TOL, workers: int | None = None) -> tuple:
     """(E2 low, E2 high, runs) [N]: the E2 interval with |θ_ss| <= tol at the satellite's E1."""
+    check_periods(periods)
     guess = sat.E1 * sat.b / sat.a  # torque balance about the COM (docs/torque-balance.md)
     if guess <= 0:
         raise ValueError(f"E1 = {sat.E1} N: tuning E2 needs E1 > 0")
@@ -101,6 +110,7 @@ def tune(sat: Satellite, E1: float | None = None, periods: float = 50.0, model: 
     shifts the trim: the damping is chosen with the pitch trimmed within half the
     band (|θ_ss| <= tol/2), and E2 is then centred again at the chosen damping.
     """
+    check_periods(periods)
     if E1 is not None:
         sat = sat.replace(E1=E1)
     lo, hi, runs = stable_band_E2(sat, periods, model, workers=workers)

@@ -139,7 +139,8 @@ def section_nominal(page: Page, periods: float) -> dict:
 
 
 def _yes_no(d: dict) -> str:
-    return ", ".join(f"{m} {'yes' if ok else 'no'}" for m, ok in d.items()) or "—"
+    from tethersim.experiments.headlines import yes_no
+    return yes_no(d) or "—"
 
 
 def section_headlines(page: Page) -> list:
@@ -169,7 +170,8 @@ def section_headlines(page: Page) -> list:
         holds = v["converged_claim_holds"]
         # the four "modulus 10 % off" cases share a claim: the case names the statement
         page.fact(f"{v['case']}: {v['claim']}", v["page"], v["converged_outcome"],
-                  {"survives": "yes", "does not survive": "no"}.get(v["verdict"], "partly"),
+                  {"survives": "yes", "does not survive": "no",
+                   "undecided: run longer": "undecided"}.get(v["verdict"], "partly"),
                   f"{v['verdict']}" + (f"; {v['step_notes']}" if v["step_notes"] else "")
                   + "; models: " + _yes_no(holds))
     return rows

@@ -23,6 +23,7 @@ from tethersim.experiments.headlines.cases import (
                                                   VERDICTS,
                                                   Headline,
                                                   claim_holds,
+                                                  yes_no,
 )
 from tethersim.experiments.headlines.runs import case_analysis, row_of, run_case, run_headlines
 from tethersim.experiments.headlines.scans import (
@@ -36,6 +37,6 @@ from tethersim.experiments.headlines.verdicts import format_verdicts, verdicts
 
 __all__ = ["AGREE_TOL", "BY_NAME", "CONTINUATION_JUMP", "DAMPING_FACTORS", "HEADLINES", "MODELS",
            "MODULI_RUN", "NEAR", "SCHEMES", "SETTLES_IN", "STEP_DIVISORS", "TRENDS", "UNDAMPED",
-           "VERDICTS", "Headline", "case_analysis", "claim_holds", "damper_torque_at_rest",
+           "VERDICTS", "Headline", "case_analysis", "claim_holds", "yes_no", "damper_torque_at_rest",
            "damping_scan", "format_verdicts", "initial_scan", "row_of", "run_case",
            "run_headlines", "step_scan", "verdicts"]

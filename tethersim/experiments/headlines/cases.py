@@ -17,7 +17,8 @@ CONTINUATION_JUMP = 0.7  # rad: a continued branch that jumps further is counted
 AGREE_TOL = 0.05  # rad: two schemes agree if θ differs by less than the ±0.05 band (p. 5-18)
 SETTLES_IN = (36 * 3600.0, 72 * 3600.0)  # s: "a little over two days" (p. 5-7), <= 3 days (p. 5-6)
 
-VERDICTS = ("survives", "does not survive", "depends on the damper model", "artefact of the step")
+VERDICTS = ("survives", "does not survive", "depends on the damper model", "artefact of the step",
+            "undecided: run longer")
 
 
 @dataclass(frozen=True)
@@ -87,7 +88,13 @@ TRENDS = (
 
 
 # --- the claims as tests on a row ---------------------------------------------------
-def claim_holds(check: str, row: dict) -> bool:
+def yes_no(holds: dict) -> str:
+    """{model: claim holds (True, False, None: undecided)} as "derived yes, printed no"."""
+    word = {True: "yes", False: "no", None: "undecided"}
+    return ", ".join(f"{m} {word[None if ok is None else bool(ok)]}" for m, ok in holds.items())
+
+
+def claim_holds(check: str, row: dict) -> bool | None:
     """Whether a run (its row) shows what the thesis claims.
 
     settles      class "stable", settling time in SETTLES_IN (36-72 h) and
@@ -96,9 +103,15 @@ def claim_holds(check: str, row: dict) -> bool:
     tumbles      at least one full revolution: max θ − min θ >= 2π (p. 5-4)
     quarter      π/4 <= |mean pitch| <= 3π/4, "about ninety degrees off" (p. 5-5)
     upside_down  class "upside_down", |θ_ss| > 3π/4 (p. 5-13: 3.18 rad)
+
+    Returns None (undecided) for a run too short to decide its class
+    (``row["decided"]`` false, tethersim.analysis.metrics.long_enough), unless
+    what it already shows decides the claim.
     """
     if row["class"] == CLASSES[FAILED]:
         return False
+    if not row.get("decided", True):  # too short to decide (metrics.long_enough)
+        return _short_run_claim(check, row)
     mean = row["mean_pitch"]
     if check == "settles":
         return (row["class"] == "stable" and SETTLES_IN[0] / 3600 <= row["settling_h"]
@@ -112,3 +125,16 @@ def claim_holds(check: str, row: dict) -> bool:
     if check == "upside_down":
         return row["class"] == CLASSES[UPSIDE_DOWN]
     raise ValueError(f"unknown claim check {check!r}")
+
+
+def _short_run_claim(check: str, row: dict) -> bool | None:
+    """A claim on a run too short to decide: only what already happened decides it.
+
+    A full turn shows "tumbles" and refutes "bounded"; every other claim (and
+    those two, when nothing happened yet) waits for a run long enough: None.
+    """
+    if check == "tumbles" and row["revolutions"] >= 1.0:
+        return True
+    if check == "bounded" and row["tumbled"]:
+        return False
+    return None

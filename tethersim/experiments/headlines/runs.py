@@ -31,8 +31,8 @@ import numpy as np
 
 from tethersim.analysis.classify import CLASSES
 from tethersim.analysis.equilibrium import find_equilibrium
-from tethersim.analysis.metrics import wrap
-from tethersim.analysis.outcome import finite_prefix, outcome
+from tethersim.analysis.metrics import long_enough, wrap
+from tethersim.analysis.outcome import finite_prefix, outcome, run_orbits
 from tethersim.engine.linearise import rk4_amplification, rk4_max_step
 from tethersim.engine.simulate import simulate
 from tethersim.experiments.headlines.cases import (
@@ -114,7 +114,8 @@ def row_of(res, case: Headline, model: str, scheme: str) -> dict:
            "revolutions": float((th.max() - th.min()) / (2 * math.pi)) if th.size else 0.0,
            "theta_end": float(th[-1]) if th.size else math.nan,
            "err_theta": res.errors["theta"] if res.errors else math.nan,
-           "converged": res.converged, "wall_s": res.wall_time}
+           "converged": res.converged, "wall_s": res.wall_time,
+           "decided": long_enough(run_orbits(res))}
     row["claim_holds"] = claim_holds(case.check, row)
     # private: the series for plots (not written to CSV)
     row["_period"] = period

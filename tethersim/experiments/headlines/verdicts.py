@@ -7,7 +7,17 @@ import numpy as np
 
 from tethersim.analysis.classify import CLASSES, FAILED
 from tethersim.analysis.metrics import wrap
-from tethersim.experiments.headlines.cases import AGREE_TOL, BY_NAME, SCHEMES, STEP_DIVISORS, TRENDS
+from tethersim.experiments.headlines.cases import (
+    AGREE_TOL,
+    BY_NAME,
+    SCHEMES,
+    STEP_DIVISORS,
+    TRENDS,
+    VERDICTS,
+    yes_no,
+)
+
+UNDECIDED = VERDICTS[-1]
 
 
 # --- verdicts ---------------------------------------------------------------------------
@@ -24,7 +34,9 @@ def _outcome(row: dict) -> str:
 
 
 def _decide(converged: dict, faithful: dict, step_dependent: bool) -> str:
-    """converged/faithful: {model: claim holds}."""
+    """converged/faithful: {model: claim holds (None: the run was too short to decide)}."""
+    if any(v is None for v in converged.values()):
+        return UNDECIDED
     if step_dependent and any(faithful.values()) and not any(converged.values()):
         return "artefact of the step"
     if converged and all(converged.values()):
@@ -102,7 +114,10 @@ def _trend_verdicts(rows: list) -> list:
                 if a is None or b is None:
                     continue
                 d = b["mean_pitch"] - a["mean_pitch"]
-                res[(m, sch)] = (d, bool(math.isfinite(d) and np.sign(d) == sign))
+                holds = bool(math.isfinite(d) and np.sign(d) == sign)
+                if not (a.get("decided", True) and b.get("decided", True)):
+                    holds = None  # the mean pitch of a run too short to decide
+                res[(m, sch)] = (d, holds)
         if not res:
             continue
         conv = {m: v[1] for (m, sch), v in res.items() if sch == "dop853"}
@@ -124,8 +139,8 @@ def _trend_verdicts(rows: list) -> list:
 def format_verdicts(vs: list) -> str:
     lines = []
     for v in vs:
-        conv = ", ".join(f"{m} {'yes' if ok else 'no'}" for m, ok in v["converged_claim_holds"].items())
-        faith = ", ".join(f"{m} {'yes' if ok else 'no'}" for m, ok in v["faithful_reproduces"].items())
+        conv = yes_no(v["converged_claim_holds"])
+        faith = yes_no(v["faithful_reproduces"])
         lines += [f"{v['case']} (p. {v['page']}; {v['change']}): {v['verdict'].upper()}",
                   f"    thesis:    {v['claim']}",
                   f"    converged: {v['converged_outcome']} ({v['converged_model']})",

@@ -14,6 +14,15 @@ def class_counts(ds: xr.Dataset) -> dict:
     return {name: int(np.sum(c == i)) for i, name in enumerate(CLASSES)}
 
 
+def class_names(ds: xr.Dataset) -> np.ndarray:
+    """The class of each grid point by name (tethersim.analysis.classify.CLASSES;
+    "" where not computed)."""
+    codes = ds["stability_class"].values.astype(np.int64)
+    names = np.array(CLASSES + ("",), dtype=object)
+    known = ds["done"].values & (codes >= 0) & (codes < len(CLASSES))
+    return np.where(known, names[np.where(known, codes, len(CLASSES))], "")
+
+
 def status_counts(ds: xr.Dataset) -> dict:
     """{engine status name: number of computed points} (tethersim.engine.result.STATUSES)."""
     from tethersim.experiments.sweep.store import status_names

@@ -116,10 +116,12 @@ def _compiled(sats: list, spec: SweepSpec) -> list:
     specialised(sweep_block, m, args)(m, *args)  # releases the GIL
     amps = rk4_amplifications(sats, [s.period / FAITHFUL_STEPS_PER_PERIOD for s in sats],
                               spec.model)
-    return [_record(rec_f[j], rec_i[j], amps[j], spec.tol) for j in range(n)]
+    # the run length outcome.run_orbits gives the per-point path: the orbits asked for
+    return [_record(rec_f[j], rec_i[j], amps[j], spec.tol, periods) for j in range(n)]
 
 
-def _record(f: np.ndarray, i: np.ndarray, amplification: float, tol: float) -> dict:
+def _record(f: np.ndarray, i: np.ndarray, amplification: float, tol: float,
+            run_orbits: float) -> dict:
     status, nfev = int(i[_I["status"]]), int(i[_I["nfev"]])
     if not i[_I["counts"]]:
         return record(status, nfev, amplification, classify(None), None)
@@ -129,4 +131,5 @@ def _record(f: np.ndarray, i: np.ndarray, amplification: float, tol: float) -> d
                      tumbled=bool(i[_I["tumbled"]]), upside_down=bool(i[_I["upside_down"]]))
     measured = {name: float(f[_F[name]]) for name in F_FIELDS}
     measured.update(tumbled=int(m.tumbled), upside_down=int(m.upside_down))
-    return record(status, nfev, amplification, classify(m, tol=tol), measured)
+    return record(status, nfev, amplification, classify(m, tol=tol, run_orbits=run_orbits),
+                  measured)

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from tethersim.analysis.metrics import SETTLING_TOL
+from tethersim.analysis.metrics import SETTLING_TOL, check_tol
 from tethersim.engine.simulate import FAITHFUL_STEPS_PER_PERIOD
 from tethersim.model import params
 from tethersim.model.registry import DEFAULT_MODEL, model_index
@@ -89,6 +89,7 @@ class SweepSpec:
             v = getattr(self, key)
             if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
                 raise ValueError(f"{key} = {v!r}: must be a finite number > 0")
+        check_tol(self.tol)  # the settling band: (0, pi) rad, as outcome() takes it
         if self.rtol < 1e-14:
             raise ValueError(f"rtol = {self.rtol:g}: allowed range >= 1e-14")
         for key in ("steps_per_period", "samples_per_period"):

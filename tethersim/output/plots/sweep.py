@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from tethersim.analysis.classify import CLASS_COLORS, CLASSES, STABLE
+from tethersim.analysis.classify import CLASS_COLORS, CLASSES, STABLE, UNDECIDED
 from tethersim.analysis.metrics import SETTLING_TOL
 from tethersim.experiments.sweep.store import status_names
 from tethersim.output.plots.run import FAST_PNG
@@ -101,7 +101,9 @@ def plot_stability_map(ds, path, *, title: str = "", nominal: dict | None = None
     fig.subplots_adjust(left=0.07, right=0.97, top=0.9, bottom=0.27, wspace=0.2)
     ax.pcolormesh(_edges(x), _edges(y), cls, cmap=cmap, norm=norm)
     # the steady pitch itself shows the band even where it is narrower than the grid
-    ss = np.where(ds.done.values & (ds.tumbled.values == 0), ds.steady_state_pitch.values, np.nan)
+    # an undecided point's θ_ss is a moment of the first libration, not a steady pitch
+    shown = ds.done.values & (ds.tumbled.values == 0) & (ds.stability_class.values != UNDECIDED)
+    ss = np.where(shown, ds.steady_state_pitch.values, np.nan)
     norm, label, extend = pitch_scale(ss)
     im = ax2.pcolormesh(_edges(x), _edges(y), ss, cmap="coolwarm", norm=norm)
     cbar = fig.colorbar(im, ax=ax2, extend=extend, ticks=_pitch_ticks(norm))
@@ -111,8 +113,8 @@ def plot_stability_map(ds, path, *, title: str = "", nominal: dict | None = None
         cbar.ax.axhline(edge, color="k", lw=1.5)
     if np.nanmin(ss, initial=np.inf) < 0 < np.nanmax(ss, initial=-np.inf) and min(x.size, y.size) > 1:
         ax2.contour(x, y, np.nan_to_num(ss, nan=np.pi), levels=[0.0], colors="k", linewidths=1.0)
-    ax2.set_title(f"steady-state pitch (blank: tumbled); black line: θ_ss = 0\ncolours: {label}; "
-                  f"bar lines: the ±{SETTLING_TOL:g} rad band", fontsize=8)
+    ax2.set_title(f"steady-state pitch (blank: tumbled or undecided); black line: θ_ss = 0\n"
+                  f"colours: {label}; bar lines: the ±{SETTLING_TOL:g} rad band", fontsize=8)
     handles = [Patch(color=c, label=n.replace("_", " ")) for n, c in zip(CLASSES, CLASS_COLORS)]
     if predicted is not None:
         pred = (np.asarray(predicted) == STABLE).astype(float)
