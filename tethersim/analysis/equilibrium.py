@@ -16,6 +16,7 @@ from scipy.optimize import root
 
 from tethersim.analysis.metrics import SETTLING_TOL, wrap
 from tethersim.engine.bodies import bodies_from_states
+from tethersim.engine.domain import state_violation
 from tethersim.engine.linearise import attitude_jacobian, rk4_max_step
 from tethersim.model.inputs import parameter_vector
 from tethersim.model.registry import DEFAULT_MODEL, KERNELS, MODELS, get_model
@@ -54,6 +55,12 @@ class Equilibrium:
     coordinates : dict
         Every coordinate of the model by name (3-D: also δz [m], roll φ and
         yaw ψ [rad]), rates zero.
+    outside_domain : str
+        Why the equilibrium lies outside the model's domain (a tether stretched
+        beyond ``MAX_STRETCH`` x its rest length, the balloon beyond
+        ``BALLOON_REACH``: tethersim.engine.domain), or "" inside it.  A run
+        there would stop as ``left-domain``: such an equilibrium is a root of the
+        equations, not a configuration the model describes.
     """
 
     satellite: Satellite
@@ -65,6 +72,12 @@ class Equilibrium:
     residual: float
     eigenvalues: np.ndarray  # 1/s
     coordinates: dict = field(default_factory=dict, compare=False)
+    outside_domain: str = ""
+
+    @property
+    def in_domain(self) -> bool:
+        """Whether the equilibrium lies inside the model's domain (engine/domain.py)."""
+        return not self.outside_domain
 
     @property
     def state(self) -> np.ndarray:
@@ -91,13 +104,24 @@ class Equilibrium:
         return bool(np.all(ev.real < 0))
 
     def modes(self) -> list:
-        """(frequency [rad/s], damping ratio, decay time [s]) of each oscillatory pair."""
+        """(frequency [rad/s], damping ratio, decay time [s]) of each oscillatory pair.
+
+        A real eigenvalue is no pair: :meth:`real_modes` lists those.
+        """
         out = []
         for lam in self.eigenvalues:
             if lam.imag > 0 and abs(lam) >= NEUTRAL_TOL:
                 w = abs(lam)
                 out.append((lam.imag, -lam.real / w, math.inf if lam.real >= 0 else -1 / lam.real))
         return sorted(out)
+
+    def real_modes(self) -> list:
+        """(rate λ [1/s], e-folding time 1/|λ| [s]) of each real, non-neutral eigenvalue,
+        fastest growing first: λ > 0 grows (a divergence: what makes a saddle
+        unstable without any oscillation), λ < 0 decays without oscillating."""
+        lams = [float(lam.real) for lam in self.eigenvalues
+                if lam.imag == 0 and abs(lam) >= NEUTRAL_TOL]
+        return [(lam, 1 / abs(lam)) for lam in sorted(lams, reverse=True)]
 
     def predicted_settling_time(self, amplitude: float) -> float:
         """Time [s] for the slowest mode to decay from ``amplitude`` to ±0.05 rad."""
@@ -200,12 +224,17 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     ev = np.linalg.eigvals(attitude_jacobian(sat, y, model))
     return Equilibrium(sat, model, coords["delta_x"], coords["delta_y"], coords["theta"],
                        (bool(lam1 > sat.l10), bool(lam2 > sat.l20)), res, ev,
-                       coords if n > 3 else {})
+                       coords if n > 3 else {}, state_violation(sat, model, y))
 
 
 def format_equilibrium(eq: Equilibrium) -> str:
     s = eq.satellite
-    lines = [f"{s.name}, model {eq.model}: equilibrium in the rotating frame",
+    lines = [f"{s.name}, model {eq.model}: equilibrium in the rotating frame"]
+    if eq.outside_domain:
+        lines.append(f"  OUTSIDE THE MODEL'S DOMAIN: {eq.outside_domain}; a run there stops "
+                     f"as left-domain, so this is a root of the equations, not a "
+                     f"configuration the model describes (docs/limits.md)")
+    lines += [
              f"  delta_x {eq.delta_x:.6g} m   delta_y {eq.delta_y:.6g} m   "
              f"theta {eq.theta:.6g} rad ({math.degrees(eq.theta):.4g} deg)"
              + "".join(f"   {k} {v:.6g}" for k, v in eq.coordinates.items()
@@ -214,10 +243,15 @@ def format_equilibrium(eq: Equilibrium) -> str:
              f"{'taut' if eq.taut[1] else 'slack'}; residual {eq.residual:.2g}",
              f"  linearly {'stable' if eq.stable else 'UNSTABLE'}"
              + (f" ({eq.neutral} neutral eigenvalues: yaw about the boom)" if eq.neutral else "")
-             + "; modes "
+             + "; oscillatory modes "
              "(frequency [rad/s], period [s], damping ratio, decay time [h]):"]
     for w, zeta, tau in eq.modes():
         lines.append(f"    {w:.5g}  {2 * math.pi / w:10.5g}  {zeta:.3g}  {tau / 3600:.4g}")
+    real = eq.real_modes()
+    if real:
+        lines.append("  real modes, no oscillation (rate [1/s], e-folding time [h]):")
+        for lam, tau in real:
+            lines.append(f"    {lam:+.5g}  {tau / 3600:.4g}  {'GROWS' if lam > 0 else 'decays'}")
     ts_ = eq.predicted_settling_time(s.initial[2] - eq.theta)
     lines.append(f"  predicted settling from theta0 to +-{SETTLING_TOL} rad: "
                  f"{ts_ / 3600:.4g} h ({ts_ / s.period:.4g} orbits)")

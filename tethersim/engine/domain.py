@@ -79,6 +79,48 @@ def reach(sat) -> float:
     return BALLOON_REACH * max(sat.l10 + sat.b, sat.l20 + sat.a)
 
 
+def state_violation(sat, model: str, y) -> str:
+    """Why one state of ``model`` lies outside the model's domain, or "" if inside.
+
+    The same limits as :func:`first_violation` (balloon reach, tether stretch, the
+    3-D roll), for a state no run produced, e.g. an equilibrium.
+
+    Parameters
+    ----------
+    sat : Satellite
+        The satellite.
+    model : str
+        Model name (tethersim.model.registry).
+    y : array_like
+        The model's state (coordinates then rates).
+
+    Returns
+    -------
+    str
+        One line naming the limit passed (empty: inside the domain).
+    """
+    from tethersim.model.inputs import parameter_vector
+    from tethersim.model.registry import get_model
+
+    lay = get_model(model)
+    names = lay.state
+    Y = np.ascontiguousarray(np.asarray(y, dtype=float).reshape(1, -1))
+    _, i_far, d_far, i_over, j_over, s_over = domain_scan(
+        lay.index, Y, parameter_vector(sat, model), names.index("delta_x"),
+        names.index("delta_y"), names.index("delta_z") if "delta_z" in names else -1,
+        sat.l10, sat.l20, sat.a, sat.b, reach(sat) ** 2, MAX_STRETCH)
+    if i_over >= 0:
+        return (f"tether {j_over + 1} stretched to {s_over:.3g} x its rest length (allowed "
+                f"<= {MAX_STRETCH:g} x)")
+    if i_far >= 0:
+        return (f"balloon {np.sqrt(d_far):.4g} m from the COM (allowed <= {reach(sat):.4g} m, "
+                f"{BALLOON_REACH:g} x the longest tether path)")
+    if "phi" in names and abs(Y[0, names.index("phi")]) > ROLL_LIMIT:
+        return (f"roll |phi| = {np.degrees(abs(Y[0, names.index('phi')])):.1f} deg (allowed "
+                f"<= {ROLL_LIMIT_DEG:g} deg)")
+    return ""
+
+
 def first_violation(res, altitude=None) -> Violation | None:
     """The first sample of ``res`` outside the model's domain, or None.
 
