@@ -87,3 +87,12 @@ def test_sweep_blocks_and_single_runs_draw_the_same_line(method):
             assert (rec["stability_class"] == UNDECIDED) == (not decided and not rec["tumbled"])
             seen.add(rec["stability_class"])
     assert UNDECIDED in seen and len(seen) > 1
+
+
+def test_a_prediction_for_a_run_too_short_to_decide_is_undecided_too():
+    from tethersim.analysis.predict import predicted_class
+    short = 0.99 * min_run_orbits()
+    assert predicted_class(SAT, periods=short)[0] == UNDECIDED
+    assert predicted_class(SAT, periods=50)[0] != UNDECIDED
+    # nothing predicted at all stays "failed" at any length
+    assert predicted_class(SAT.replace(E1=0.0, E2=0.0), periods=short)[0] == FAILED

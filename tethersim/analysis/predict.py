@@ -47,6 +47,7 @@ simulated classifier):
                  its whole last fifth stays in the band.  A marginal equilibrium
                  (max Re λ within ±MARGINAL_RATE) never settles.
   0 stable       otherwise
+  6 undecided    a run shorter than metrics.min_run_orbits (no simulated class either)
 
 The predicted settling time is Equilibrium.predicted_settling_time (ln(A/tol) over the
 slowest decay rate, amplitude A = |θ0 − θ_eq|).  It ignores the first nonlinear swings
@@ -92,12 +93,13 @@ from tethersim.analysis.classify import (
     SETTLING_REQUIREMENT,
     STABLE,
     TUMBLING,
+    UNDECIDED,
     UNSETTLED,
     UPSIDE_DOWN,
     flag_attrs,
 )
 from tethersim.analysis.equilibrium import find_equilibrium
-from tethersim.analysis.metrics import SETTLING_TOL, SS_FRACTION
+from tethersim.analysis.metrics import SETTLING_TOL, SS_FRACTION, long_enough, min_run_orbits
 from tethersim.analysis.torque_balance import PitchTorque
 from tethersim.model import params
 from tethersim.model.registry import DEFAULT_MODEL, THESIS_VARIANTS, model_index
@@ -201,7 +203,17 @@ def _settling_limit(sat: Satellite, periods: float) -> float:
 
 
 def _predict(sat: Satellite, model: str, periods: float, trail=None, swing: bool = True):
-    """(code, info, balloon trail at θ = 0 or None) of one satellite."""
+    """(code, info, balloon trail at θ = 0 or None) of one satellite (a run too short
+    for a class, metrics.long_enough, has no predicted class either: undecided)."""
+    code, info, trail0 = _predict_class(sat, model, periods, trail, swing)
+    if code != FAILED and not long_enough(periods):
+        info["reason"] = f"too short to decide (>= {min_run_orbits():.4g} orbits); " \
+                         f"longer: {info['reason']}"
+        return UNDECIDED, info, trail0
+    return code, info, trail0
+
+
+def _predict_class(sat: Satellite, model: str, periods: float, trail=None, swing: bool = True):
     info = {"theta_eq": math.nan, "delta_x": math.nan, "delta_y": math.nan,
             "max_real_eigenvalue": math.nan, "predicted_settling_time": math.nan,
             "settling_limit": _settling_limit(sat, periods), "taut": (False, False),
