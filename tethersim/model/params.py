@@ -224,10 +224,18 @@ def parse_assignment(text: str, option: str = "--set") -> tuple:
     try:
         return name, _float(value.strip(), f"{option} {_shown(text)}")
     except ValueError as exc:  # say what a good value looks like
+        raise ValueError(f"{exc} (expected {_expected(name, option)})") from None
+
+
+def _expected(name: str, option: str) -> str:
+    """What a good ``option NAME=VALUE`` value is: a factor, or the name's unit and range
+    (the plausible range of :data:`PARAMETERS`; the 3-D start has none, any finite value)."""
+    if option == "--scale":
+        return "a factor"
+    if name in PARAMETERS:
         p = PARAMETERS[name]
-        expected = ("a factor" if option == "--scale" else
-                    f"{name} in {p.unit}, plausible range {p.low:g}..{p.high:g}")
-        raise ValueError(f"{exc} (expected {expected})") from None
+        return f"{name} in {p.unit}, plausible range {p.low:g}..{p.high:g}"
+    return f"{name} in {_ALL_UNITS[name][0]}, a finite number"
 
 
 def apply_overrides(sat: Satellite, sets=(), scales=()) -> Satellite:
