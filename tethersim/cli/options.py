@@ -373,8 +373,9 @@ def claim_folder(out: Path, args, sat) -> dict:
 
 def write_provenance(out: Path, record: dict) -> Path:
     """Write ``out/satellite.json`` (whose results the folder holds)."""
+    from tethersim.output.files import write_text
     path = out / "satellite.json"
-    path.write_text(json.dumps(record, indent=2) + "\n")
+    write_text(path, json.dumps(record, indent=2) + "\n")
     return path
 
 

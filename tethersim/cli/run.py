@@ -51,6 +51,7 @@ def run(args) -> int:
     """
     from tethersim.analysis.summary import run_summary
     from tethersim.engine.simulate import simulate
+    from tethersim.output.files import write_text
     from tethersim.output.plots.run import plot_result
     from tethersim.output.tables import write_netcdf, write_timeseries
 
@@ -73,7 +74,7 @@ def run(args) -> int:
               for k, v in summary.items()}  # NaN is not JSON: null means "never settled"
     strict["integrator"] = how.describe(sat.period, args.periods)
     strict.update(record)  # whose results these are: checked by the next run into `out`
-    (out / "summary.json").write_text(json.dumps(strict, indent=2, default=str) + "\n")
+    write_text(out / "summary.json", json.dumps(strict, indent=2, default=str) + "\n")
     written.append(out / "summary.json")
     print(how.describe(sat.period, args.periods) + f"; {args.periods:g} orbits")
     for k, v in summary.items():

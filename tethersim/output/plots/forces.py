@@ -14,6 +14,7 @@ import numpy as np
 from tethersim.analysis.force_peaks import SMALL_FRACTION, coordinates, peaks, small_families
 from tethersim.engine.result import SimResult
 from tethersim.generated.layout import FAMILIES
+from tethersim.output.files import save_figure
 from tethersim.output.plots.run import FAST_PNG, _hours_on_top
 
 # one colour per tether / body, solid drag, dashed spring, dotted damper
@@ -72,7 +73,7 @@ def plot_forces(res: SimResult, out_dir, Q: np.ndarray | None = None) -> list:
         ax.set_title(f"{res.satellite.name}: forces on {symbol} by family{thesis}\n"
                      f"{res.label}", fontsize=9)
         p = out_dir / file_name(name)
-        fig.savefig(p, dpi=110, pil_kwargs=FAST_PNG)
+        save_figure(fig, p, dpi=110, pil_kwargs=FAST_PNG)
         plt.close(fig)
         paths.append(p)
     return paths

@@ -15,6 +15,7 @@ import numpy as np
 
 from tethersim.analysis.classify import CLASS_COLORS, CLASSES, STABLE
 from tethersim.analysis.metrics import SETTLING_TOL
+from tethersim.output.files import save_figure
 from tethersim.output.plots.run import FAST_PNG
 
 
@@ -139,6 +140,6 @@ def plot_stability_map(ds, path, *, title: str = "", nominal: dict | None = None
               facecolor="0.85", ncol=4)
     ax.set_title(title or ds.attrs.get("title", ""), fontsize=9)
     path = Path(path)
-    fig.savefig(path, dpi=110, pil_kwargs=FAST_PNG)
+    save_figure(fig, path, dpi=110, pil_kwargs=FAST_PNG)
     plt.close(fig)
     return path
