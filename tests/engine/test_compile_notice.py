@@ -85,6 +85,20 @@ def test_a_models_first_uncached_compile_is_announced_once_with_its_estimate(
     assert (rough > select.COLD_COMPILE_S[("planar", "circular")]) == (name != "derived")
 
 
+def test_a_series_kernels_first_compile_says_nothing_but_counts_for_an_announced_model(
+        tmp_path, monkeypatch):
+    monkeypatch.setattr(numba.config, "CACHE_DIR", str(tmp_path / "key"))
+    monkeypatch.setattr(select, "_compiling", {})
+    monkeypatch.setattr(select, "_in_cache", lambda dispatcher, sig: False)
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err):
+        select._compile(_FakeDispatcher(), _sig(4), 4, loud=False)  # short: a series kernel
+        assert err.getvalue() == "" and select._compiling == {}
+        select._compile(_FakeDispatcher(), _sig(4), 4)  # the run loop: announced
+        select._compile(_FakeDispatcher(), _sig(4), 4, loud=False)
+    assert err.getvalue().count("compiling") == 1 and list(select._compiling) == [4]
+
+
 def test_a_cached_models_compile_says_nothing(tmp_path, monkeypatch):
     monkeypatch.setattr(numba.config, "CACHE_DIR", str(tmp_path / "key"))
     monkeypatch.setattr(select, "_compiling", {})

@@ -82,10 +82,10 @@ def announce(model: int) -> None:
           f"{os.path.dirname(numba.config.CACHE_DIR)}", file=sys.stderr, flush=True)
 
 
-def _compile(dispatcher, sig, model: int) -> None:
+def _compile(dispatcher, sig, model: int, loud: bool = True) -> None:
     with _lock:
         timed = model in _compiling
-        if not timed and not _in_cache(dispatcher, sig):
+        if loud and not timed and not _in_cache(dispatcher, sig):
             _compiling[model] = 0.0
             timed = True
             announce(model)
@@ -103,7 +103,7 @@ def _compile(dispatcher, sig, model: int) -> None:
                 pass  # the estimate is a courtesy, a read-only cache folder is fine
 
 
-def specialised(dispatcher, model: int, args: tuple):
+def specialised(dispatcher, model: int, args: tuple, loud: bool = True):
     """Compiled entry point of ``dispatcher`` for a literal model index.
 
     Parameters
@@ -115,6 +115,10 @@ def specialised(dispatcher, model: int, args: tuple):
     args : tuple
         The remaining arguments as they will be passed (their types select
         the signature).
+    loud : bool
+        Announce a first compile of this model (the run loops, tens of seconds);
+        False for the short series kernels, which only add to an announced
+        model's timing.
 
     Returns
     -------
@@ -130,7 +134,7 @@ def specialised(dispatcher, model: int, args: tuple):
     if entry is None:
         sig = (types.literal(int(model)),) + tuple(dispatcher.typeof_pyval(a) for a in args)
         if sig not in dispatcher.overloads:
-            _compile(dispatcher, sig, int(model))
+            _compile(dispatcher, sig, int(model), loud)
         entry = _entries[key] = dispatcher.get_overload(sig)
     return entry
 
@@ -150,4 +154,4 @@ def call(dispatcher, model: int, *args):
     tethersim.engine.evaluate, dynamics.parameters_at): a plain call would go
     through numba's type inference on every call (~10 ms for a series kernel).
     """
-    return specialised(dispatcher, model, args)(model, *args)
+    return specialised(dispatcher, model, args, loud=False)(model, *args)
