@@ -12,9 +12,9 @@ import matplotlib
 import pytest
 
 import tethersim as ts
+from tests.cli.conftest import call
 from tethersim.output import files, tables
 from tethersim.output.files import TEMPORARY_MARK, replacing, save_figure, write_text
-from tests.cli.conftest import call
 
 matplotlib.use("Agg")
 

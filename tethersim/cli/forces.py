@@ -73,7 +73,7 @@ def run(args) -> int:
     rows = largest_forces(res)
     written = [write_table(out / "forces.csv", table_rows(rows), COLUMNS)]
     written += plot_forces(res, out, Q=res.forces)
-    written.append(options.write_provenance(out, record))
+    written.append(options.write_provenance(out, record, written))
     print(res.label)
     print(how.describe(sat.period, args.periods))
     print(format_table(rows))

@@ -3,11 +3,11 @@
 Writes timeseries.csv, timeseries.nc (NetCDF), the theta/delta_x/delta_y/overview
 PNGs and summary.json into ``results/<satellite>/`` (or ``--out``).  summary.json
 also records whose results the folder holds, so a run of another satellite (or
-other --set/--scale) into the same folder is refused unless ``--force``.
+other --set/--scale, or another model) into the same folder is refused unless
+``--force``, and the files it wrote, so a later run removes those it does not write.
 """
 from __future__ import annotations
 
-import json
 import math
 from pathlib import Path
 
@@ -51,7 +51,6 @@ def run(args) -> int:
     """
     from tethersim.analysis.summary import run_summary
     from tethersim.engine.simulate import simulate
-    from tethersim.output.files import write_text
     from tethersim.output.plots.run import plot_result
     from tethersim.output.tables import write_netcdf, write_timeseries
 
@@ -74,8 +73,7 @@ def run(args) -> int:
               for k, v in summary.items()}  # NaN is not JSON: null means "never settled"
     strict["integrator"] = how.describe(sat.period, args.periods)
     strict.update(record)  # whose results these are: checked by the next run into `out`
-    write_text(out / "summary.json", json.dumps(strict, indent=2, default=str) + "\n")
-    written.append(out / "summary.json")
+    written.append(options.write_record(out, "summary.json", strict, written))
     print(how.describe(sat.period, args.periods) + f"; {args.periods:g} orbits")
     for k, v in summary.items():
         print(f"  {k:<32} {v:.6g}" if isinstance(v, float) else f"  {k:<32} {v}")
