@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 from dataclasses import dataclass
 
 from tethersim.model.registry import DEFAULT_MODEL
@@ -300,12 +301,23 @@ def check_status(res) -> None:
         raise RunFailed(res.message)
 
 
+# an interrupted run with more output samples than this says, before writing them, that a
+# second Ctrl-C stops the writing (a million samples: ~20 s of CSV and ~10 s of plots)
+WRITE_NOTICE_SAMPLES = 100_000
+
+
 def interrupted_early(res) -> None:
     """Raise :class:`Interrupted` for Ctrl-C before a second output sample: nothing to
-    summarise or write (call right after the run)."""
+    summarise or write (call right after the run).  An interrupted run with a long
+    output says on stderr that it writes it, and that Ctrl-C again stops that: every
+    file is written whole under a temporary name, so the folder keeps complete files."""
     if res.status == "interrupted" and res.t.size < 2:
         raise Interrupted(f"at t = {res.t[-1]:.6g} s, before the first output sample: "
                           f"nothing written")
+    if res.status == "interrupted" and res.t.size > WRITE_NOTICE_SAMPLES:
+        print(f"tethersim: interrupted at t = {res.t[-1]:.6g} s: writing the {res.t.size} "
+              f"samples finished; Ctrl-C again to stop writing (files are complete or absent)",
+              file=sys.stderr, flush=True)
 
 
 # the output folders (tethersim.cli.folders), used by every command as options.<name>
