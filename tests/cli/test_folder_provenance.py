@@ -12,12 +12,14 @@ import pytest
 from tests.cli.conftest import call
 
 QUICK = ["--periods", "0.05", "--quiet", "--no-check"]
-PLANAR_RUN_FILES = {"timeseries.csv", "timeseries.nc", "theta.png", "delta_x.png",
-                    "delta_y.png", "overview.png", "summary.json"}
+DATA = {"timeseries.csv", "timeseries.nc", "summary.json"}
+PLANAR_RUN_FILES = DATA | {"theta.png", "delta_x.png", "delta_y.png", "overview.png"}
 
 
-def _run(out, *extra):
-    return call(["run", "satI", *QUICK, "--out", str(out), *extra])
+def _run(out, *extra, plots=False):
+    """``tethersim run satI`` into ``out`` (without plots unless asked: they cost ~1 s)."""
+    return call(["run", "satI", *QUICK, "--out", str(out), *extra,
+                 *([] if plots else ["--no-plots"])])
 
 
 def _as_if(out, **changes):
@@ -29,7 +31,7 @@ def _as_if(out, **changes):
 
 
 def test_a_run_records_the_model_and_exactly_the_files_it_wrote(tmp_path):
-    code, out, err = _run(tmp_path / "o")
+    code, out, err = _run(tmp_path / "o", plots=True)
     assert code == 0, err
     record = json.loads((tmp_path / "o" / "summary.json").read_text())
     assert record["model"] == "derived"
@@ -53,17 +55,16 @@ def test_forcing_a_run_over_another_models_removes_only_that_runs_own_leftovers(
     # what a 3-D run wrote besides the planar files, and a file of the user's own
     for name in ("roll.png", "yaw.png", "delta_z.png", "notes.txt"):
         (out / name).write_bytes(b"x")
-    _as_if(out, model="3d", files=sorted(PLANAR_RUN_FILES | {"roll.png", "yaw.png",
-                                                             "delta_z.png"}))
+    _as_if(out, model="3d", files=sorted(DATA | {"roll.png", "yaw.png", "delta_z.png"}))
     code, _, err = _run(out, "--force")
     assert code == 0, err
-    assert {p.name for p in out.iterdir()} == PLANAR_RUN_FILES | {"notes.txt"}
+    assert {p.name for p in out.iterdir()} == DATA | {"notes.txt"}
 
 
 def test_a_rerun_of_the_same_question_with_other_numerics_replaces_the_folders_run(tmp_path):
     out = tmp_path / "o"
-    assert _run(out)[0] == 0
-    code, _, err = _run(out, "--faithful", "--no-plots")  # same satellite, model, overrides
+    assert _run(out, plots=True)[0] == 0
+    code, _, err = _run(out, "--faithful")  # same satellite, model, overrides; no plots
     assert code == 0, err
     # its summary says which integrator made the results; the previous run's plots are gone
     record = json.loads((out / "summary.json").read_text())
@@ -91,7 +92,7 @@ def test_a_record_from_before_the_model_was_recorded_is_taken_as_this_model(tmp_
     (out / "summary.json").write_text(json.dumps(record))
     code, _, err = _run(out)
     assert code == 0, err  # and with no file list, nothing is removed but what it rewrote
-    assert {p.name for p in out.iterdir()} == PLANAR_RUN_FILES
+    assert {p.name for p in out.iterdir()} == DATA
 
 
 def test_forces_into_a_folder_of_another_model_is_refused_too(tmp_path):
@@ -109,11 +110,11 @@ def test_forces_into_a_folder_of_another_model_is_refused_too(tmp_path):
 @pytest.mark.slow
 def test_a_planar_run_forced_over_a_3d_run_leaves_no_roll_or_yaw_plot(tmp_path):
     out = tmp_path / "o"
-    code, _, err = _run(out, "--model", "3d")
+    code, _, err = _run(out, "--model", "3d", plots=True)
     assert code == 0, err
     three_d = {p.name for p in out.iterdir()}
     assert {"roll.png", "yaw.png", "delta_z.png"} <= three_d
-    code, _, err = _run(out)
+    code, _, err = _run(out, plots=True)
     assert code == 2 and "model 3d" in err
-    assert _run(out, "--force")[0] == 0
+    assert _run(out, "--force", plots=True)[0] == 0
     assert {p.name for p in out.iterdir()} == PLANAR_RUN_FILES
