@@ -343,9 +343,13 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
                     t_pause = t + span if t + span > t else math.inf
         except KeyboardInterrupt:
             status, message = "interrupted", f"interrupted at t = {t:.6g} s"
-    fine_t, fine_y = out_t[:i_out].copy(), out_y[:i_out].copy()
-    keep = slice(None, None, refine)
-    return SimResult(sat, model, "adaptive", fine_t[keep].copy(), fine_y[keep].copy(),
+    # one copy of the rows written (none for a whole run): an interrupted long run's
+    # millions of rows were copied twice, seconds between Ctrl-C and the first file
+    fine_t, fine_y = ((out_t, out_y) if i_out == out_t.size
+                      else (out_t[:i_out].copy(), out_y[:i_out].copy()))
+    t_out, y_out = ((fine_t, fine_y) if refine == 1
+                    else (fine_t[::refine].copy(), fine_y[::refine].copy()))
+    return SimResult(sat, model, "adaptive", t_out, y_out,
                      fine_t=fine_t if refine > 1 else None,
                      fine_states=fine_y if refine > 1 else None,
                      periods=periods,
