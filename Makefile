@@ -4,7 +4,7 @@ VENV   ?= .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-stamp
 
-.PHONY: install run test test-slow test-fast derive check-generated lint bench clean
+.PHONY: install run test test-slow test-fast test-generic check-bitwise derive check-generated lint bench clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -53,6 +53,20 @@ test-slow: $(STAMP)
 ## Tests without the slow tier and without the contract and regeneration checks.
 test-fast: $(STAMP)
 	$(PY) -m pytest -q -m "not slow"
+
+## The fast tier on a generic x86-64 CPU: numba compiles for no particular CPU and numpy's
+## CPU-dispatched kernels are switched off, so a test that only passes on the CPU it was
+## written on fails here first (CI runs it; its kernels go to their own cache folder).
+test-generic: $(STAMP)
+	NUMBA_CPU_NAME=generic TETHERSIM_CACHE_DIR=$${TMPDIR:-/tmp}/tethersim-generic-cache \
+	NPY_DISABLE_CPU_FEATURES="$$($(PY) -c 'import numpy._core._multiarray_umath as m; \
+	  print(" ".join(f for f in m.__cpu_dispatch__ if m.__cpu_features__.get(f)))')" \
+	  $(PY) -m pytest -q -m "not slow"
+
+## Bit identity on this machine: the reference runs at BASE and in the working tree, to the
+## last bit (tests compare stored numbers to stated tolerances instead: tests/reference.py).
+check-bitwise: $(STAMP)
+	$(PY) tools/bitwise.py $(or $(BASE),HEAD)
 
 ## Speed figures (medians of repeats, ratios in the same run).
 bench: $(STAMP)

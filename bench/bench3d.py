@@ -40,7 +40,7 @@ def setup(log):
     p = parameter_vector(sat, MODEL)
     y0 = initial_state(m.index, initial_model_state(sat, MODEL), sat.r0, sat.r0 * sat.omega)
     air = uniform_air()
-    rk4 = specialised(rk4_run, m.index, (air, 0.0, y0.copy(), 1.0, 1, 1, p, p.copy(), False,
+    rk4 = specialised(rk4_run, m.index, (air, 0, y0.copy(), 1.0, 1, 1, p, p.copy(), False,
                                          np.empty(1), np.empty((1, y0.size)), 0))
     dop = specialised(dop853_run, m.index, (air, 0.0, 1.0, y0.copy(), 0.0, p, p.copy(), RTOL,
                                             ATOL, True, np.empty(1), np.empty((1, y0.size)), 0,

@@ -24,11 +24,11 @@ SAMPLES_PER_PERIOD = 200  # simulate()'s adaptive output grid
 
 
 def rk4_entry(S):
-    """rk4_run(model, air, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0)."""
+    """rk4_run(model, air, k0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0)."""
     from tethersim.engine.integrators.rk4 import rk4_run
     from tethersim.engine.integrators.select import specialised
     y, p = S["y0"].copy(), S["p"]
-    args = (uniform_air(), 0.0, y, 1.0, 1, 1, p, p.copy(), False, np.empty(1), np.empty((1, y.size)), 0)
+    args = (uniform_air(), 0, y, 1.0, 1, 1, p, p.copy(), False, np.empty(1), np.empty((1, y.size)), 0)
     return specialised(rk4_run, MODEL, args)
 
 

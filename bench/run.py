@@ -321,7 +321,7 @@ def bench_rk4(rep: Report, S, q):
         return t
 
     res = interleave({
-        "numba": timer("numba", lambda y, ot, oy: rk4_run(0, AIR, 0.0, y, h, N, 1, p, pw, False,
+        "numba": timer("numba", lambda y, ot, oy: rk4_run(0, AIR, 0, y, h, N, 1, p, pw, False,
                                                            ot, oy, 0)),
         "c": timer("c", lambda y, ot, oy: S["c"].rk4_run(0.0, y, h, N, 1, p, ot, oy, 0)),
         "c_native": timer("c_native", lambda y, ot, oy: S["c_native"].rk4_run(

@@ -1,68 +1,109 @@
-"""Runs equal, bit for bit, the numbers recorded before the regroup and the engine rewrite.
+"""Runs reproduce the numbers recorded before the regroup and the engine rewrite.
 
-tests/data/reference_af5dd73.json holds final states and counters written with
-``repr`` (round-trip exact) by the code at commit af5dd73, the last commit
-before the package regroup and the reference-count-free engine.  Every run here
-must reproduce them exactly: the refactors moved and re-plumbed the code, they
-must not change a single floating-point operation of the trajectories.
+tests/data/reference_af5dd73.json holds final states, counters and sweep records
+written with ``repr`` by the code at commit af5dd73, the last commit before the
+package regroup and the reference-count-free engine.  They were written on one
+machine; here they are compared to the tolerances of tests/reference.py, which
+say why a CPU's rounding stays inside them and a change of the model or the
+scheme does not.  That the refactors changed no floating-point operation at all
+is a same-machine property: ``make check-bitwise BASE=af5dd73`` runs both here.
 """
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import tethersim as ts
+from tests.reference import (
+    ADAPTIVE_RTOL,
+    EIGEN_RTOL,
+    RK4_RTOL,
+    assert_count_close,
+    assert_state_close,
+    state_scales,
+)
 from tethersim.experiments.sweep import SweepSpec
 from tethersim.experiments.sweep.runner import map_points
 
 REF = json.loads((Path(__file__).parents[1] / "data" / "reference_af5dd73.json").read_text())
 
 
-def _final(res):
-    return [repr(float(v)) for v in res.states[-1]]
+def _run(sat, **kwargs):
+    return ts.simulate(sat, check=False, progress=False, **kwargs)
 
 
-def test_rk4_thesis_scheme_is_bit_identical():
-    res = ts.simulate(ts.load_preset("satI"), periods=2, steps=400, method="rk4",
-                      check=False, progress=False)
+def test_rk4_thesis_scheme_matches_the_reference():
+    res = _run(ts.load_preset("satI"), periods=2, steps=400, method="rk4")
     ref = REF["rk4_satI_2orbits_400steps"]
-    assert _final(res) == ref["final"]
-    assert res.nfev == ref["nfev"]
+    assert_state_close(res, res.states[-1], ref["final"])
+    assert res.nfev == ref["nfev"]  # fixed steps: four evaluations each, whatever the CPU
 
 
-def test_dop853_with_switch_location_is_bit_identical():
-    res = ts.simulate(ts.load_preset("satI"), periods=2, check=False, progress=False)
+def test_dop853_with_switch_location_matches_the_reference():
+    res = _run(ts.load_preset("satI"), periods=2)
     ref = REF["dop853_satI_2orbits"]
-    assert _final(res) == ref["final"]
-    assert (res.nfev, res.n_accepted, res.n_rejected, res.n_switches) == (
-        ref["nfev"], ref["n_accepted"], ref["n_rejected"], ref["n_switches"])
+    assert_state_close(res, res.states[-1], ref["final"])
+    for got, key in ((res.nfev, "nfev"), (res.n_accepted, "n_accepted")):
+        assert_count_close(got, ref[key])
+    assert res.n_switches == ref["n_switches"]
 
 
-def test_rk4_with_switch_location_is_bit_identical():
-    res = ts.simulate(ts.load_preset("satII"), periods=1, steps=300, method="rk4",
-                      locate_switches=True, model="objective-damper", check=False,
-                      progress=False)
+def test_rk4_with_switch_location_matches_the_reference():
+    res = _run(ts.load_preset("satII"), periods=1, steps=300, method="rk4",
+               locate_switches=True, model="objective-damper")
     ref = REF["rk4_located_satII_objective_1orbit"]
-    assert _final(res) == ref["final"]
+    assert_state_close(res, res.states[-1], ref["final"])
     assert (res.nfev, res.n_switches) == (ref["nfev"], ref["n_switches"])
 
 
 @pytest.mark.parametrize("model", ["derived", "printed", "exact-gravity", "objective-damper"])
-def test_every_model_is_bit_identical(model):
-    res = ts.simulate(ts.load_preset("dumbsat"), periods=1, check=False, progress=False,
-                      model=model)
+def test_every_model_matches_the_reference(model):
+    res = _run(ts.load_preset("dumbsat"), periods=1, model=model)
     ref = REF[f"dop853_dumbsat_{model}_1orbit"]
-    assert _final(res) == ref["final"]
-    assert res.nfev == ref["nfev"]
+    assert_state_close(res, res.states[-1], ref["final"])
+    assert_count_close(res.nfev, ref["nfev"])
 
 
-def test_sweep_records_are_bit_identical():
+@pytest.mark.parametrize("method, kwargs, rtol", [
+    ("rk4", dict(periods=2, steps=400, method="rk4"), RK4_RTOL),
+    ("adaptive", dict(periods=2), ADAPTIVE_RTOL),
+])
+def test_one_ulp_moves_a_run_by_less_than_its_tolerance(method, kwargs, rtol):
+    # the tolerances' premise (tests/reference.py): a last-bit change, as another CPU's
+    # rounding makes, moves the final state by well under the tolerance
+    sat = ts.load_preset("satI")
+    start = list(sat.initial)
+    start[2] = float(np.nextafter(start[2], 1.0))
+    a, b = _run(sat, **kwargs), _run(sat.replace(initial=tuple(start)), **kwargs)
+    moved = np.max(np.abs(a.states[-1] - b.states[-1]) / state_scales(a))
+    assert 0 < moved < rtol / 10
+
+
+# metrics that are counts or classes must agree exactly; the others to the trajectory's
+# tolerance (they are smooth functions of the run), the RK4 amplification to LAPACK's
+EXACT = ("stability_class", "tumbled", "upside_down", "status")
+
+
+def test_sweep_records_match_the_reference():
     # at 200 samples per orbit, the metrics grid (docs/metrics.md): a coarser sweep output
     # now has its metrics computed on a refined grid, which changes them on purpose
     spec = SweepSpec(ts.load_preset("satI"), (("E1", (0.003, 0.004)), ("E2", (0.04, 0.043))),
                      periods=2, samples_per_period=200)
     recs = map_points(spec, workers=1)
-    got = [{k: repr(float(v)) for k, v in rec.items()} for rec in recs]
-    assert got == REF["sweep_satI_2x2_2orbits_200_samples"]
+    refs = REF["sweep_satI_2x2_2orbits_200_samples"]
+    assert len(recs) == len(refs)
+    for rec, ref in zip(recs, refs):
+        assert set(rec) == set(ref)
+        for key, text in ref.items():
+            got, want = float(rec[key]), float(text)
+            if key in EXACT or math.isnan(want):
+                assert got == want or (math.isnan(got) and math.isnan(want)), key
+            elif key == "nfev":
+                assert_count_close(got, want)
+            else:
+                rtol = EIGEN_RTOL if key == "rk4_amplification" else ADAPTIVE_RTOL
+                assert got == pytest.approx(want, rel=rtol, abs=rtol), key

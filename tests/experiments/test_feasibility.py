@@ -12,6 +12,7 @@ from tethersim.analysis.classify import FAILED, OFFSET, STABLE, TUMBLING, UNSETT
 from tethersim.analysis.feasibility import VERDICTS, verdict
 from tethersim.analysis.metrics import PitchMetrics
 from tethersim.analysis.outcome import Outcome
+from tethersim.output.plots.feasibility import usable_life_h
 
 NAN3 = (math.nan,) * 3
 
@@ -38,7 +39,9 @@ H = 3600.0
     (100, _out(), [_out(status="diverged", cls=FAILED)], "trim lost as the air varies"),
     (100, _out(), [_out(0.0, cls=TUMBLING, tumbled=True)], "trim lost as the air varies"),
     (100, _out(0.3, cls=OFFSET), [_out()], "trim lost as the air varies"),
-    (100, _out(settling_h=math.nan, cls=UNSETTLED), [_out()], "unstable"),
+    # never settles in a run as long as the life: a fact, named by how the life ends
+    (100, _out(settling_h=math.nan, cls=UNSETTLED), [_out()], "re-enters before settling"),
+    (math.inf, _out(settling_h=math.nan, cls=UNSETTLED), [_out()], "unstable"),
     (100, _out(3.0, cls=UPSIDE_DOWN), [_out()], "unstable"),
     (100, _out(status="diverged", cls=FAILED), [_out()], "unstable"),
     (1, _out(cls=TUMBLING, tumbled=True), [_out(0.3, cls=OFFSET)], "unstable"),  # priority
@@ -58,16 +61,18 @@ def test_atlas_runs_resumes_and_writes_the_csv(tmp_path, capsys):
     with (out / "feasibility.csv").open() as fh:
         rows = list(csv.DictReader(fh))
     assert [float(r["altitude_km"]) for r in rows] == [200.0, 300.0]
-    for key in ("altitude_km", "lifetime_h", "settling_h", "verdict"):
+    for key in ("altitude_km", "balloon_lost_h", "reentry_h", "settling_h", "verdict"):
         assert key in rows[0]
     assert all(r["verdict"] in VERDICTS for r in rows)
-    # 200 km: the free run ends before the 3 h cap; 300 km outlives it (capped)
-    assert rows[0]["lifetime_capped"] == "false" and float(rows[0]["lifetime_h"]) < 3
-    assert rows[1]["lifetime_capped"] == "true" and float(rows[1]["lifetime_h"]) == 3.0
-    # the solar-cycle lifetimes are free runs in MSIS air: denser air, shorter life
-    life = {c: float(rows[0][f"lifetime_{c}_h"]) for c in ("min", "mean", "max")}
+    # 200 km: the balloon is lost before the 3 h cap; 300 km outlives it (capped)
+    assert float(rows[0]["balloon_lost_h"]) < 3 and rows[0]["free_end"] == "left-domain"
+    assert rows[1]["reentry_capped"] == "true" and float(rows[1]["reentry_h"]) == 3.0
+    assert rows[1]["balloon_lost_h"] == ""  # not lost: NaN, written empty
+    # the solar-cycle runs are free runs in MSIS air: denser air, shorter usable life
+    life = {c: usable_life_h({k: _number(v) for k, v in rows[0].items()}, c)
+            for c in ("min", "mean", "max")}
     assert life["max"] < life["mean"] < life["min"] <= 3.0
-    assert rows[0]["lifetime_max_capped"] == "false"
+    assert rows[0]["balloon_lost_max_h"] != ""
     assert (out / "feasibility.png").stat().st_size > 10_000
     # resumable: a finished store is not rerun (its lines are kept byte for byte)
     store = out / "store" / "points.jsonl"
@@ -79,6 +84,15 @@ def test_atlas_runs_resumes_and_writes_the_csv(tmp_path, capsys):
     assert main(argv[:-3] + ["--periods", "3", "--out", str(out), "--quiet"]) != 0
     err = capsys.readouterr().err.strip()
     assert "holds a feasibility atlas of other settings" in err and "\n" not in err
+
+
+def _number(text: str):
+    if text in ("true", "false"):
+        return text == "true"
+    try:
+        return float(text) if text else math.nan
+    except ValueError:
+        return text
 
 
 def test_density_scales_are_msis_over_vallado():

@@ -132,6 +132,9 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     NoEquilibrium
         If no tether holds the balloon, or the solver finds no state with all
         accelerations below ``RESIDUAL_TOL`` (a RuntimeError and a ValueError).
+    ValueError
+        A satellite on a free orbit (one line): the equilibrium is that of the
+        orbit held circular at ``altitude``; a free orbit decays and has none.
 
     Examples
     --------
@@ -144,6 +147,12 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     (0.0, 2, True)
     """
     mdl = get_model(model, CIRCULAR, "find_equilibrium")
+    if sat.orbit != "circular":
+        # the free orbit's r, ν never stand still: the circular answer would be a
+        # silent stand-in for an equilibrium that does not exist
+        raise ValueError(f"orbit = {sat.orbit!r}: the equilibrium is that of the orbit held "
+                         f"circular at altitude {sat.altitude / 1e3:g} km (a free orbit decays "
+                         f"and has none); use orbit = 'circular' (drop --set orbit=free)")
     m, n = mdl.index, mdl.n_coordinates
     names = mdl.state[:n]
     if sat.E1 == 0 and sat.E2 == 0:

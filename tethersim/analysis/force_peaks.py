@@ -143,6 +143,13 @@ def largest_forces_from(t, Q, period: float, coords: tuple = COORDINATES) -> lis
     return rows
 
 
+def in_plane_forces(res: SimResult) -> np.ndarray:
+    """(n, families, 3): the run's generalized forces on δx, δy, θ only (a 3-D or
+    free-orbit model also has roll, yaw, δz or r, ν coordinates)."""
+    names = res.layout.state
+    return res.forces[:, :, [names.index(c) for c, _, _ in COORDINATES]]
+
+
 def largest_forces(res: SimResult) -> list:
     """The largest single-family generalized force on each coordinate of a run (thesis
     p. 5-8: δx, δy, θ; a 3-D model adds δz, φ, ψ, a free orbit r and ν)."""

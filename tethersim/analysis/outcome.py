@@ -18,14 +18,14 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import asdict, dataclass, replace
+from dataclasses import asdict, dataclass, field, replace
 
 import numpy as np
 
 from tethersim.analysis.classify import CLASSES, FAILED, classify
 from tethersim.analysis.metrics import SETTLING_TOL, PitchMetrics, pitch_metrics, steady_state_window
 from tethersim.engine.evaluate import family_force_peaks
-from tethersim.engine.result import SimResult
+from tethersim.engine.result import SimResult, dominant_error
 
 NAN3 = (math.nan, math.nan, math.nan)
 
@@ -49,10 +49,14 @@ class Outcome:
     max_force : tuple of float
         Largest |Q| of a single force family on (δx [N], δy [N], θ [N m]);
         NaN when not computed.
-    error_estimate : tuple or None
-        Estimated final error (δx [m], δy [m], θ [rad]) if the run was checked.
+    error_estimate : dict or None
+        Estimated final error of every generalized coordinate, {name: SI value}
+        (``SimResult.errors``), if the run was checked.
     converged : bool or None
-        Whether that estimate is within the convergence bounds.
+        Whether every coordinate's estimate is within its unit's bound
+        (``tethersim.engine.result.CONVERGED_TOLERANCE``).
+    units : dict
+        {coordinate name: SI unit} of the model's generalized coordinates.
     drag_makeup : float
         Velocity per day that holds a circular orbit against the run's drag
         [m/s/day] (tethersim.analysis.orbit_life); NaN for a free orbit.
@@ -67,10 +71,11 @@ class Outcome:
     trail_delta_x: float
     trail_delta_y: float
     max_force: tuple
-    error_estimate: tuple | None
+    error_estimate: dict | None
     converged: bool | None
     drag_makeup: float = math.nan
     reentry_time: float | None = None
+    units: dict = field(default_factory=dict)
 
     @property
     def class_name(self) -> str:
@@ -100,9 +105,16 @@ class Outcome:
             "max_force_delta_y": self.max_force[1],
             "max_force_theta": self.max_force[2],
             "converged": self.converged,
-            "error_theta": err[2] if err else math.nan,
-            "error_position": max(err[0], err[1]) if err else math.nan,
+            "error_theta": err["theta"] if err else math.nan,
+            "error_position": self._largest_error("m"),
+            "error_angle": self._largest_error("rad"),
+            "error_largest_in": dominant_error(err, self.units)[0] if err else "",
         }
+
+    def _largest_error(self, unit: str) -> float:
+        """Largest estimated final error among the coordinates in ``unit`` (NaN: none)."""
+        err = self.error_estimate or {}
+        return max((e for k, e in err.items() if self.units.get(k) == unit), default=math.nan)
 
     def to_dict(self) -> dict:
         """All fields as plain Python values (metrics nested)."""
@@ -128,6 +140,8 @@ ROW_COLUMNS = (
     ("converged", "converged"),
     ("error_theta", "estimated final error theta [rad]"),
     ("error_position", "estimated final error position [m]"),
+    ("error_angle", "estimated final error, largest angle [rad]"),
+    ("error_largest_in", "estimated final error largest in"),
 )
 
 
@@ -192,5 +206,6 @@ def outcome(res: SimResult, tol: float = SETTLING_TOL, forces: bool = True) -> O
         makeup = drag_makeup(res) if n >= 2 else math.nan
     return Outcome(status=res.status, reason=reason, stability_class=int(cls), metrics=m,
                    trail_delta_x=trail[0], trail_delta_y=trail[1], max_force=peak,
-                   error_estimate=res.error_estimate, converged=res.converged,
-                   drag_makeup=makeup, reentry_time=lifetime(res))
+                   error_estimate=res.errors, converged=res.converged,
+                   drag_makeup=makeup, reentry_time=lifetime(res),
+                   units=res.units)

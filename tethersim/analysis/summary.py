@@ -1,8 +1,11 @@
 """The summary of one run that ``tethersim run`` prints and writes (summary.json)."""
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 
+from tethersim.analysis.metrics import steady_state_window, wrap
 from tethersim.analysis.outcome import Outcome, finite_prefix, outcome
 from tethersim.engine.result import SimResult
 
@@ -59,8 +62,45 @@ def run_summary(res: SimResult, out: Outcome | None = None) -> dict:
         "final delta_x [m]": float(res.x[n - 1]),
         "final delta_y [m]": float(res.y[n - 1]),
         "status": res.status,
+        **out_of_plane_summary(res),
         **orbit_summary(res, out),
         **implausible_summary(res.satellite),
+    }
+
+
+def out_of_plane_summary(res: SimResult) -> dict:
+    """Roll φ, yaw ψ and the balloon's sideways δz of a 3-D run (empty for a planar model).
+
+    Parameters
+    ----------
+    res : SimResult
+        The run; its metrics grid (``fine_t``) when it has one, up to the last
+        finite sample (a diverged run).
+
+    Returns
+    -------
+    dict
+        Largest |φ|, |ψ| [rad] and |δz| [m]; steady-state roll and yaw [rad]
+        (mean over the steady-state window, as the steady-state pitch,
+        docs/metrics.md); final roll, yaw [rad] and δz [m].
+    """
+    if res.layout.geometry != "3d":
+        return {}
+    if res.fine_t is not None:  # the metrics grid, as the pitch metrics (outcome.py)
+        res = replace(res, t=res.fine_t, states=res.fine_states, fine_t=None, fine_states=None)
+    n = max(1, finite_prefix(res))
+    t = res.t[:n]
+    tail = steady_state_window(t)
+    phi, psi, dz = (res.series(k)[:n] for k in ("phi", "psi", "delta_z"))
+    return {
+        "largest |roll phi| [rad]": float(np.max(np.abs(phi))),
+        "largest |yaw psi| [rad]": float(np.max(np.abs(psi))),
+        "steady-state roll [rad]": float(wrap(np.mean(phi[tail]))),
+        "steady-state yaw [rad]": float(wrap(np.mean(psi[tail]))),
+        "final roll phi [rad]": float(phi[-1]),
+        "final yaw psi [rad]": float(psi[-1]),
+        "largest |delta_z| [m]": float(np.max(np.abs(dz))),
+        "final delta_z [m]": float(dz[-1]),
     }
 
 
@@ -76,6 +116,11 @@ def orbit_summary(res: SimResult, out: Outcome) -> dict:
         rt = out.reentry_time
         d["re-entry time [h]"] = rt / 3600 if rt is not None else float("nan")
         d["final altitude [km]"] = float(res.altitude[-1] / 1e3)
+        # which limit ended the run, and when: re-entry, the model's domain, or its length
+        d["run ended at [h]"] = float(res.t[-1] / 3600)
+        d["run ended by"] = (f"its length, {res.t[-1] / res.satellite.period:.4g} orbits, "
+                             f"without re-entry" if res.status == "ok"
+                             else res.message or res.status)
     return d
 
 

@@ -74,6 +74,9 @@ def run(args) -> int:
     if unknown:
         raise options.UsageError(f"--cases {' '.join(unknown)}: allowed values "
                                  f"{', '.join(hl.BY_NAME)}")
+    repeated = sorted({c for c in args.cases or () if args.cases.count(c) > 1})
+    if repeated:  # as compare's --models: each case runs once (the list is then bounded)
+        raise options.UsageError(f"--cases {' '.join(repeated)}: given more than once")
     out = Path(args.out) if args.out else options.default_out(args, "headlines")
     record = options.claim_folder(out, args, sat)
     progress = not args.quiet

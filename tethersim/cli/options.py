@@ -213,12 +213,15 @@ def overrides(args) -> list:
 
 
 def satellite(args):
-    """The satellite of ``args.satellite`` with --set/--scale applied (edge units)."""
+    """The satellite of ``args.satellite`` with --set/--scale applied (edge units), in the
+    orbit its ``--model``/``--models`` run (:func:`tethersim.cli.orbit.orbit_of_models`)."""
     from tethersim.model.params import apply_overrides
     from tethersim.model.presets import resolve
     sat = resolve(args.satellite, getattr(args, "allow_implausible", False))
-    return apply_overrides(sat, getattr(args, "set", None) or (),
-                           getattr(args, "scale", None) or ())
+    sat = apply_overrides(sat, getattr(args, "set", None) or (),
+                          getattr(args, "scale", None) or ())
+    from tethersim.cli.orbit import orbit_of_models
+    return orbit_of_models(args, sat)
 
 
 @dataclass(frozen=True)

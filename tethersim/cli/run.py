@@ -14,6 +14,9 @@ from pathlib import Path
 from tethersim.cli import options
 
 HELP = "simulate a satellite, write time series, plots and a summary"
+PERIODS = 50.0  # default run length [orbits]
+# --until reentry: the default cap [h] (feasibility's --max-lifetime default too)
+REENTRY_CAP_H = 240.0
 
 
 def add_parser(sub) -> None:
@@ -23,7 +26,13 @@ def add_parser(sub) -> None:
         description="Simulate a satellite; write timeseries.csv, timeseries.nc (NetCDF), "
                     "theta/delta_x/delta_y/overview PNGs and summary.json.")
     options.add_satellite(p)
-    options.add_periods(p)
+    options.add_periods(p, default=None,
+                        help=f"orbits to simulate (default {PERIODS:g}); with --until reentry "
+                             f"the most orbits to run (default {REENTRY_CAP_H:g} h worth)")
+    p.add_argument("--until", choices=("periods", "reentry"), default="periods",
+                   help="periods: run --periods orbits (default); reentry (free orbits): run "
+                        "until the orbit re-enters (or the run leaves the model's domain), "
+                        "at most --periods orbits")
     options.add_integrator(p)
     options.add_model(p, "; see docs/errata.md")
     options.add_out(p, "results/<satellite>, e.g. results/satI")
@@ -55,6 +64,7 @@ def run(args) -> int:
     from tethersim.output.tables import write_netcdf, write_timeseries
 
     sat = options.satellite(args)
+    cap = _resolve_periods(args, sat)
     how = options.integrator(args)
     out = Path(args.out) if args.out else options.default_out(args)
     record = options.claim_folder(out, args, sat)
@@ -72,11 +82,32 @@ def run(args) -> int:
     strict = {k: (None if isinstance(v, float) and not math.isfinite(v) else v)
               for k, v in summary.items()}  # NaN is not JSON: null means "never settled"
     strict["integrator"] = how.describe(sat.period, args.periods)
+    if args.until == "reentry":
+        strict["until"] = cap
     strict.update(record)  # whose results these are: checked by the next run into `out`
     written.append(options.write_record(out, "summary.json", strict, written))
-    print(how.describe(sat.period, args.periods) + f"; {args.periods:g} orbits")
+    print(how.describe(sat.period, args.periods)
+          + (f"; until re-entry, {cap}" if args.until == "reentry" else f"; {args.periods:g} orbits"))
     for k, v in summary.items():
         print(f"  {k:<32} {v:.6g}" if isinstance(v, float) else f"  {k:<32} {v}")
     print("wrote " + ", ".join(str(p) for p in written))
+    if args.until == "reentry" and res.status == "re-entered":
+        return 0  # the end asked for
     options.check_status(res)
     return 0
+
+
+def _resolve_periods(args, sat) -> str:
+    """Set ``args.periods`` (the run length, or --until reentry's cap) and return the cap's
+    description; refuse --until reentry on a circular orbit (it never re-enters)."""
+    if args.until != "reentry":
+        args.periods = PERIODS if args.periods is None else args.periods
+        return ""
+    if sat.orbit != "free":
+        raise options.UsageError("--until reentry: needs a free orbit (--set orbit=free or a "
+                                 "free-orbit --model); the circular orbit is held at its "
+                                 "altitude and never re-enters")
+    if args.periods is None:
+        args.periods = REENTRY_CAP_H * 3600 / sat.period
+        return f"at most {REENTRY_CAP_H:g} h ({args.periods:.4g} orbits)"
+    return f"at most {args.periods:g} orbits ({args.periods * sat.period / 3600:.4g} h)"

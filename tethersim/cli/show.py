@@ -22,6 +22,9 @@ def add_parser(sub) -> None:
                     "the 3-D models, then its initial state and derived orbit (SI).")
     options.add_satellite(p)
     options.add_overrides(p)
+    p.add_argument("--toml", metavar="FILE", default=None,
+                   help="also write the satellite (with --set/--scale) as a preset TOML file, "
+                        "to edit and run: tethersim run FILE")
     p.set_defaults(func=run)
 
 
@@ -71,9 +74,29 @@ def run(args) -> int:
     for n, v in zip(names, sat.initial):
         print(f"  {n:<18} {v:.6g}")
     print(f"  r0 {sat.r0:.6g} m, omega {sat.omega:.6g} rad/s, period {sat.period:.6g} s, "
-          f"rho {sat.rho:.4g} kg/m^3, density {sat.density_mode}")
+          f"rho {sat.rho:.4g} kg/m^3, density {sat.density_mode}"
+          + (" (follows the orbit)" if sat.density_auto else ""))
     from tethersim.model.options import density_text
     print(f"  air density of a run: {density_text(sat)}")
     for line in (sat.implausible if sat.allow_implausible else ()):
         print(f"  implausible (allowed): {line}")
+    if args.toml:
+        _write_toml(sat, args)
     return 0
+
+
+def _write_toml(sat, args) -> None:
+    """Write ``sat`` to ``args.toml`` in the preset layout (tethersim.model.presets.write)."""
+    from pathlib import Path
+
+    from tethersim.model.presets.write import dumps
+    path = Path(args.toml)
+    if path.suffix != ".toml":
+        raise ValueError(f"--toml {args.toml}: the file name must end in .toml")
+    header = f"{sat.name}: written by tethersim show {args.satellite} " + " ".join(
+        options.overrides(args))
+    try:
+        path.write_text(dumps(sat, header=header.strip()))
+    except OSError as exc:
+        raise ValueError(f"--toml {args.toml}: cannot write the file: {exc.strerror}") from None
+    print(f"wrote {path}")

@@ -75,7 +75,8 @@ def run(args) -> int:
 
     from tethersim.engine.guards import check_sweep
     from tethersim.experiments.sweep import SweepSpec, run_sweep
-    from tethersim.experiments.sweep.analysis import band_slope, class_counts
+    from tethersim.experiments.sweep.analysis import band_slope, class_counts, status_counts
+    from tethersim.experiments.sweep.store import status_names
     from tethersim.model import params
     from tethersim.output.plots.sweep import plot_stability_map
     from tethersim.output.tables import write_table
@@ -107,8 +108,10 @@ def run(args) -> int:
                       restart=args.restart, progress=options.progress(args))
     ds = store.dataset()
     table = ds.drop_vars("done")
-    columns = tuple((n, f"{n} [{table[n].attrs.get('units', '1')}]")
+    columns = tuple((n, f"{n} [{table[n].attrs.get('units', '1')}]" if n != "status" else n)
                     for n in (*table.dims, *table.data_vars))
+    # the status by the engine's name (ok, diverged, left-domain ...), not its code
+    table["status"] = (table.status.dims, status_names(ds))
     write_table(out / "sweep.csv", table.to_dataframe().reset_index().to_dict("records"), columns)
     written = [out / "sweep.zarr", out / "sweep.csv"]
     slope = band_slope(ds) if spec.names == ("E1", "E2") else float("nan")
@@ -119,10 +122,11 @@ def run(args) -> int:
     written.append(options.write_provenance(out, record, written))
     for name, n in class_counts(ds).items():
         print(f"  {name:<12} {n}")
-    failed = int((ds.status.values[ds.done.values] != 0).sum())
-    if failed:  # their NaN metrics have a reason: say it, and how to see the message
-        print(f"  {failed} point(s) failed (status attribute: diverged or integrator_failed; "
-              f"metrics NaN): 'tethersim run' one with --set for its message")
+    not_ok = {s: n for s, n in status_counts(ds).items() if s != "ok" and n}
+    if not_ok:  # their NaN metrics have a reason: say it, and how to see the message
+        print(f"  {sum(not_ok.values())} point(s) did not finish ok "
+              f"({', '.join(f'{n} {s}' for s, n in not_ok.items())}; metrics NaN): "
+              f"'tethersim run' one with --set for its message")
     if math.isfinite(slope):
         print(f"  stable band centre: {spec.names[1]} = {slope:.4g} x {spec.names[0]}")
     print("wrote " + ", ".join(str(p) for p in written))

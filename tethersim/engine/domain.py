@@ -105,22 +105,9 @@ def first_violation(res, altitude=None) -> Violation | None:
         names.index("delta_z") if "delta_z" in names else -1, sat.l10, sat.l20, sat.a, sat.b,
         reach(sat) ** 2, MAX_STRETCH)
     candidates = []
-    h_min = getattr(sat, "reentry_altitude", REENTRY_ALTITUDE)
-    # a circular orbit is held at its altitude (checked at load time): only a free orbit falls
-    if lay.orbit == "free" or altitude is not None:
-        h = res.altitude if altitude is None else altitude
-        below = np.nonzero(h[:last] < h_min)[0]
-    else:
-        below = np.array([], dtype=int)
-    if below.size:
-        i = int(below[0])
-        t = float(res.t[i])
-        if i > 0:  # linear interpolation to the crossing
-            h0, h1 = h[i - 1], h[i]
-            t = float(res.t[i - 1] + (res.t[i] - res.t[i - 1]) * (h0 - h_min) / (h0 - h1))
-        candidates.append(Violation(i, t, "re-entered",
-                                    f"re-entered: altitude {h[i] / 1e3:.1f} km fell below "
-                                    f"{h_min / 1e3:g} km at t = {t:.6g} s ({t / 3600:.3g} h)"))
+    reentry = reentry_violation(res, last, altitude)
+    if reentry is not None:
+        candidates.append(reentry)
     if i_far >= 0:
         i = i_far
         candidates.append(Violation(i, float(res.t[i]), "left-domain",
@@ -137,6 +124,40 @@ def first_violation(res, altitude=None) -> Violation | None:
                                     f"{s_over:.3g} x its rest length at t = "
                                     f"{res.t[i]:.6g} s (allowed <= {MAX_STRETCH:g} x)"))
     return min(candidates, key=lambda v: v.index) if candidates else None
+
+
+def reentry_violation(res, last: int | None = None, altitude=None) -> Violation | None:
+    """The first sample of ``res`` below the re-entry altitude, or None.
+
+    Parameters
+    ----------
+    res : SimResult
+        A run; a circular orbit is held at its altitude (checked at load time), so
+        only a free orbit's (or a given ``altitude``) can fall below.
+    last : int, optional
+        Samples to look at (default all).
+    altitude : numpy.ndarray, optional
+        The reference point's altitude per sample [m] (default ``res.altitude``).
+
+    Returns
+    -------
+    Violation or None
+        Status ``"re-entered"``, the time interpolated linearly to the crossing.
+    """
+    if res.layout.orbit != "free" and altitude is None:
+        return None
+    h_min = getattr(res.satellite, "reentry_altitude", REENTRY_ALTITUDE)
+    h = res.altitude if altitude is None else altitude
+    below = np.nonzero(h[:last] < h_min)[0]
+    if not below.size:
+        return None
+    i = int(below[0])
+    t = float(res.t[i])
+    if i > 0:  # linear interpolation to the crossing
+        h0, h1 = h[i - 1], h[i]
+        t = float(res.t[i - 1] + (res.t[i] - res.t[i - 1]) * (h0 - h_min) / (h0 - h1))
+    return Violation(i, t, "re-entered", f"re-entered: altitude {h[i] / 1e3:.1f} km fell below "
+                                         f"{h_min / 1e3:g} km at t = {t:.6g} s ({t / 3600:.3g} h)")
 
 
 def _roll_violation(res, last: int) -> list:

@@ -8,7 +8,8 @@ stated in the messages and can be raised with environment variables:
 ``TETHERSIM_MAX_OUTPUT_BYTES``
     largest time-series output of one simulate() call (default 2 GiB).
 ``TETHERSIM_MAX_SWEEP_POINTS``
-    largest sweep grid (default 1,000,000 points).
+    largest sweep grid (default 1,000,000 points); also the most runs of a grid whose
+    points are several runs each (``feasibility``: points x runs per point).
 ``TETHERSIM_MAX_STORE_BYTES``
     largest sweep store, in memory and on disk (default 2 GiB).
 """
@@ -165,3 +166,35 @@ def check_sweep(shape, names=()) -> None:
             f"sweep grid {axes} = {points:.6g} points (store about {human(nbytes)}): allowed "
             f"at most {max_points:.6g} points (TETHERSIM_MAX_SWEEP_POINTS) and "
             f"{human(max_bytes)} (TETHERSIM_MAX_STORE_BYTES); use fewer grid points")
+
+
+def check_runs(points: int, runs_per_point: int, what: str, option: str) -> None:
+    """Refuse a grid whose runs (points x runs per point) exceed the sweep's point limit.
+
+    A sweep point is one run; a command whose point is several runs (``feasibility``)
+    is capped on its runs by the same limit, before any point is validated or run.
+
+    Parameters
+    ----------
+    points : int
+        Grid points.
+    runs_per_point : int
+        Simulations per point.
+    what : str
+        The grid, for the message (e.g. ``"feasibility grid"``).
+    option : str
+        The options that set the grid (e.g. ``"--altitude"``).
+
+    Raises
+    ------
+    SizeLimitError
+        One line naming the grid, its runs, the limit (``TETHERSIM_MAX_SWEEP_POINTS``)
+        and the option.
+    """
+    runs = int(points) * int(runs_per_point)
+    max_runs = _limit("TETHERSIM_MAX_SWEEP_POINTS", DEFAULT_SWEEP_POINTS)
+    if runs > max_runs:
+        raise SizeLimitError(
+            f"{what} of {points:.6g} points x {runs_per_point} runs = {runs:.6g} runs: allowed "
+            f"at most {max_runs:.6g} runs (TETHERSIM_MAX_SWEEP_POINTS, the sweep's cap); "
+            f"use fewer points in {option}")

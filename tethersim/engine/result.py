@@ -24,7 +24,44 @@ ORBIT_COLUMNS = ("X", "Y", "VX", "VY")
 ORBIT_UNITS = ("m", "m", "m/s", "m/s")
 CONVERGED_THETA = 1e-3  # rad: 1/50 of the thesis's ±0.05 rad stability band
 CONVERGED_POSITION = 1e-2  # m
+# the convergence bound of a coordinate, by its unit: every generalized coordinate of
+# every model is an angle or a length (registry state_units)
+CONVERGED_TOLERANCE = {"rad": CONVERGED_THETA, "m": CONVERGED_POSITION}
+#: every status a run can end with (simulate); a stored status code is its index here
+STATUSES = ("ok", "diverged", "failed", "re-entered", "left-domain", "interrupted")
 DISSIPATIVE = ("drag1", "drag2", "drag3", "damper1", "damper2")
+
+
+def errors_converged(errors: dict | None, units: dict) -> bool | None:
+    """Whether each estimated final error is within its unit's bound.
+
+    Parameters
+    ----------
+    errors : dict or None
+        {coordinate name: estimated final error} in SI (``SimResult.errors``).
+    units : dict
+        {coordinate name: SI unit} (``SimResult.units``).
+
+    Returns
+    -------
+    bool or None
+        None when there is no estimate.  Bounds: :data:`CONVERGED_TOLERANCE`.
+    """
+    if errors is None:
+        return None
+    return all(e <= CONVERGED_TOLERANCE[units[k]] for k, e in errors.items())
+
+
+def dominant_error(errors: dict, units: dict) -> tuple:
+    """(name, error, unit) of the coordinate whose error is largest against its bound."""
+    name = max(errors, key=lambda k: errors[k] / CONVERGED_TOLERANCE[units[k]])
+    return name, errors[name], units[name]
+
+
+def error_phrase(errors: dict, units: dict) -> str:
+    """"estimated final error largest in phi: 3e-07 rad" (largest against its bound)."""
+    name, err, unit = dominant_error(errors, units)
+    return f"estimated final error largest in {name}: {err:.2g} {unit}"
 
 
 @dataclass(frozen=True)
@@ -54,11 +91,14 @@ class SimResult:
     nfev, n_accepted, n_rejected, n_switches : int
         Right-hand-side evaluations, accepted and rejected steps, switches located.
     status : str
-        ``"ok"``, ``"diverged"``, ``"failed"`` or ``"interrupted"``.
+        One of :data:`STATUSES`: ``"ok"``, ``"diverged"``, ``"failed"``,
+        ``"re-entered"``, ``"left-domain"`` or ``"interrupted"``.
     message : str
         What happened, for a status other than ok.
     error_estimate : tuple or None
-        Estimated error of the final state in (δx [m], δy [m], θ [rad]): step
+        Estimated error of the final state in every generalized coordinate, in
+        the layout's order (planar: δx [m], δy [m], θ [rad]; 3-D: δx, δy, δz,
+        φ, θ, ψ; a free orbit adds r [m], ν [rad]; ``errors`` names them): step
         halving for RK4, a tighter-tolerance rerun for the adaptive method;
         None if not checked (``estimate_error()``).
     wall_time : float
@@ -155,12 +195,26 @@ class SimResult:
         return self.method == "rk4" and not self.locate_switches
 
     @property
-    def converged(self) -> bool | None:
-        """Whether the estimated final error is within CONVERGED_THETA and CONVERGED_POSITION."""
+    def units(self) -> dict:
+        """{coordinate name: SI unit} of the model's generalized coordinates."""
+        m = self.layout
+        return dict(zip(m.state[:m.n_coordinates], m.state_units[:m.n_coordinates]))
+
+    @property
+    def errors(self) -> dict | None:
+        """{coordinate name: estimated final error} in SI (None if not checked)."""
         if self.error_estimate is None:
             return None
-        ex, ey, eth = self.error_estimate
-        return bool(eth <= CONVERGED_THETA and ex <= CONVERGED_POSITION and ey <= CONVERGED_POSITION)
+        return dict(zip(self.layout.state, self.error_estimate))
+
+    @property
+    def converged(self) -> bool | None:
+        """Whether every coordinate's estimated final error is within its bound.
+
+        The bound is CONVERGED_TOLERANCE by the coordinate's unit: 1e-3 rad for
+        an angle (θ, φ, ψ, ν), 1 cm for a length (δx, δy, δz, r).
+        """
+        return errors_converged(self.errors, self.units)
 
     @property
     def label(self) -> str:
@@ -174,7 +228,7 @@ class SimResult:
         else:
             # what was checked is the final state (estimate_error), not every sample
             conv = "final state converged" if self.converged else "final state NOT converged"
-            conv += f" (estimated final error in θ {self.error_estimate[2]:.2g} rad)"
+            conv += f" ({error_phrase(self.errors, self.units)})"
         return f"{self.satellite.name}, model {self.model}: {kind}; {conv}"
 
     def estimate_error(self) -> SimResult:

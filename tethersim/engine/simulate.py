@@ -39,8 +39,8 @@ CHUNKS = 100  # at least this many pauses in a long run: the progress bar's gran
 # run used to pause every 500 orbits), so Ctrl-C stops a run within a fraction of a second.
 PAUSE_S = 0.2
 # RK4 pauses every RK4_PAUSE_STEPS steps (~0.1-0.25 s on one core for the planar to the
-# 3-D free-orbit loops): a count of steps, never of seconds, because where an RK4 run
-# pauses enters its times (t0 + k h), and a result must not depend on the machine's speed
+# 3-D free-orbit loops), with or without a bar: a fixed count, so the pauses are the same
+# on every machine (the step times (k0 + k) h do not depend on them either)
 RK4_PAUSE_STEPS = 50_000
 # a DOP853 run whose first call projects a total under this finishes in one more call
 # (its bar, delayed by a second, would never show)
@@ -202,8 +202,9 @@ def estimate_error(run: SimResult) -> SimResult:
     -------
     SimResult
         A copy of ``run`` whose error_estimate holds |final state - final state
-        of the rerun| in (δx, δy, θ): RK4 reruns at half the step, the adaptive
-        method at rtol/100 and atol/100.  ``run`` itself (unchanged) when it did
+        of the rerun| in every generalized coordinate of the model, in its
+        layout order (``SimResult.errors`` names them): RK4 reruns at half the
+        step, the adaptive method at rtol/100 and atol/100.  ``run`` itself (unchanged) when it did
         not end with status "ok", when the rerun fails, or when it has no
         record of its length (``periods``).
     """
@@ -222,7 +223,10 @@ def _with_error(run: SimResult, fine: SimResult) -> SimResult:
     from dataclasses import replace
     if fine.status != "ok":
         return run
-    err = tuple(float(abs(a - b)) for a, b in zip(run.states[-1, :3], fine.states[-1, :3]))
+    # every generalized coordinate (the 3-D layout's θ is the fifth, φ and ψ beside it; a
+    # free orbit's r and ν follow): the first three alone never looked at the attitude
+    n = run.layout.n_coordinates
+    err = tuple(float(abs(a - b)) for a, b in zip(run.states[-1, :n], fine.states[-1, :n]))
     return replace(run, error_estimate=err)
 
 
@@ -254,13 +258,13 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
     done = 0
     # this model's compiled loop, chosen (compiled or loaded) once, before the bar
     # starts: its rate, hence its ETA, then counts integration only
-    loop = specialised(rk4_run, m, (air, 0.0, y, h, chunk, 1, p, pw, locate, out_t, out_y,
+    loop = specialised(rk4_run, m, (air, 0, y, h, chunk, 1, p, pw, locate, out_t, out_y,
                                     row))
     with _bar(periods, f"{sat.name} RK4", progress) as bar:
         try:
             while done < steps:
                 n = min(chunk, steps - done)
-                rows, sw, st = loop(m, air, done * h, y, h, n, 1, p, pw, locate, out_t,
+                rows, sw, st = loop(m, air, done, y, h, n, 1, p, pw, locate, out_t,
                                     out_y, row)
                 row += rows
                 switches += sw
@@ -292,12 +296,14 @@ def refined_grid(t_end: float, n_out: int, refine: int) -> np.ndarray:
 
 
 def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
-                  refine: int = 1) -> SimResult:
+                  refine: int = 1, start=None) -> SimResult:
     t_end = periods * sat.period
     m, air = _kernel_args(sat, model, t_end)
     p = parameter_vector(sat, model)
     pw = p.copy()
-    y = initial_state(m, initial_model_state(sat, model), sat.r0, sat.r0 * sat.omega)
+    # start: an integrated state to continue from (engine/release.py), else the satellite's
+    y = (initial_state(m, initial_model_state(sat, model), sat.r0, sat.r0 * sat.omega)
+         if start is None else np.array(start, dtype=float))
     out_t = refined_grid(t_end, n_out, refine)
     out_y = np.full((out_t.size, state_size(m)), np.nan)
     out_y[0] = y

@@ -25,7 +25,7 @@ import numpy as np
 from tethersim.analysis.metrics import SS_FRACTION, steady_state_window
 from tethersim.analysis.outcome import ROW_COLUMNS, outcome
 from tethersim.engine.result import SimResult
-from tethersim.model.registry import NAMES, THESIS_VARIANTS
+from tethersim.model.registry import NAMES, THESIS_VARIANTS, model_for_orbit
 from tethersim.model.satellite import Satellite
 
 # (key, header with unit) of each table column, in order: the model, the one
@@ -72,10 +72,21 @@ def compare(sat: Satellite, models=THESIS_VARIANTS, **simulate_kwargs) -> list:
     if "model" in simulate_kwargs:
         raise TypeError("compare() takes the models as `models`, not `model`")
     models = parse_models(models)
+    # on a free orbit a circular model runs its free twin: two names running one model
+    # would be two identical rows under different labels; a free model on a circular
+    # orbit is refused by model_for_orbit (one line)
+    runs = {}
+    for m in models:
+        runs.setdefault(model_for_orbit(m, sat.orbit), []).append(m)
+    same = next((names for names in runs.values() if len(names) > 1), None)
+    if same:
+        raise ValueError(f"models: {', '.join(same)} all run model "
+                         f"{model_for_orbit(same[0], sat.orbit)!r} on orbit = {sat.orbit!r}; "
+                         f"give each once")
     results = []
     for m in models:
         res = simulate(sat, model=m, **simulate_kwargs)
-        results.append((m, res))
+        results.append((res.model, res))  # the model that ran: its twin on a free orbit
         if res.status == "interrupted":
             break
     return results

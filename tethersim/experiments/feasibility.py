@@ -1,25 +1,35 @@
-"""Feasibility atlas: lifetime, settling and trim across altitudes (and balloon areas).
+"""Feasibility atlas: balloon lost, re-entry, settling and trim across altitudes (and areas).
 
 Per point (altitude h, balloon area A3), from the satellite with those two set:
 
-* **lifetime** -- a free orbit (``orbit = "free"``, ``density = "per-body"``: each
-  body in Vallado's air at its own altitude, so the decay speeds up as the orbit
-  falls), run until it re-enters or for ``max_lifetime_h`` at most.  The run also
-  ends when the balloon leaves the model's domain (a tether stretched 20x as the
-  air thickens, engine/domain.py); that end counts as the end of life;
+* **balloon lost, re-entry** -- a free orbit (``orbit = "free"``, ``density =
+  "per-body"``: each body in Vallado's air at its own altitude, so the decay speeds
+  up as the orbit falls), run until it re-enters or for ``max_lifetime_h`` at most.
+  The run ends earlier when the balloon leaves the model's domain (a tether stretched
+  20x as the air thickens, engine/domain.py): the balloon is lost there
+  (``balloon_lost_h``), and the tether, beyond any elastic tether, is taken to break:
+  the boom alone continues from that state until it re-enters (``reentry_h``,
+  tethersim.engine.release).  The usable life, which the verdict uses, ends at
+  whichever comes first;
 * **settling** -- the nominal circular run (thesis: orbit held, uniform Vallado
   density at h, ``periods`` orbits);
 * **trim** -- circular runs with ``density_scale`` = ρ_MSIS(case) / ρ_Vallado(h) for
   each solar case (min, mean, max of tethersim.model.air.SOLAR_CYCLE; MSIS averaged
   over 24 local times on the equator at the March equinox).
 
-* **lifetime across the solar cycle** -- the same free orbit in NRLMSISE-00 air per
-  body (altitude, longitude and time of each body, in the compiled loop) with each
-  solar case's indices, from the same epoch (``lifetime_<case>_h`` columns).
+* **across the solar cycle** -- the same free orbit in NRLMSISE-00 air per body
+  (altitude, longitude and time of each body, in the compiled loop) with each solar
+  case's indices, from the same epoch (``balloon_lost_<case>_h``, ``reentry_<case>_h``).
 
-Why not the sweep store: a point here is up to eight runs of three kinds (free,
-nominal, scaled), not one run of one kind, and its row mixes their results.  A
-small resumable store of its own (one JSON line per finished point, a lock as
+Every run that decides the verdict (free, nominal, trims) runs at the spec's ``rtol``
+and again at ``rtol / CHECK_FACTOR`` (the convergence check's factor): a verdict that
+differs between the two is ``sensitive`` (tethersim.analysis.feasibility.combine).
+The runs of a point and the points of a grid are capped as a sweep's grid is
+(:func:`tethersim.engine.guards.check_runs`, ``TETHERSIM_MAX_SWEEP_POINTS``).
+
+Why not the sweep store: a point here is up to eighteen runs of four kinds (free,
+released, nominal, scaled; two tolerances), not one run of one kind, and its row
+mixes their results.  A small resumable store of its own (one JSON line per finished point, a lock as
 the sweep stores take, the spec beside it) keeps finished points across an
 interruption; points run on threads (the compiled loops release the GIL).
 """
@@ -31,10 +41,17 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
-from tethersim.analysis.feasibility import settling_time, verdict
+from tethersim.analysis.feasibility import (
+    combine,
+    periods_to_decide,
+    settling_time,
+    verdict,
+)
 from tethersim.analysis.outcome import outcome
+from tethersim.engine.release import continue_released
 from tethersim.engine.simulate import simulate
 from tethersim.experiments.sweep.lock import StoreLock
+from tethersim.experiments.sweep.spec import ATOL_PER_RTOL
 from tethersim.model import atmosphere
 from tethersim.model.air import solar_cycle_densities
 from tethersim.model.air.model import SOLAR_CYCLE, SOLAR_CYCLE_EPOCH
@@ -42,6 +59,8 @@ from tethersim.model.satellite import Satellite
 
 SOLAR_CASES = ("min", "mean", "max")
 POINTS_FILE = "points.jsonl"
+CHECK_FACTOR = 100  # the second tolerance is rtol / this (as SimResult.estimate_error)
+MIN_RTOL = 1e-14  # simulate's floor: below CHECK_FACTOR x this the check runs coarser
 SPEC_FILE = "spec.json"
 
 
@@ -65,6 +84,9 @@ class FeasibilitySpec:
         Cap on the free run [h].
     model : str
         Thesis model (the free run uses its free twin).
+    rtol : float
+        Adaptive tolerance of every run; the verdict's runs are repeated at
+        :attr:`check_rtol`.
     """
 
     satellite: Satellite
@@ -74,8 +96,15 @@ class FeasibilitySpec:
     periods: float = 50.0
     max_lifetime_h: float = 240.0
     model: str = "derived"
+    rtol: float = 1e-10
 
     def __post_init__(self):
+        from tethersim.engine.guards import check_runs  # before validating 10^5 points
+        check_runs(len(self.altitudes_km) * max(1, len(self.areas)),
+                   self.runs_per_point(), "feasibility grid",
+                   "--altitude and --A3" if self.areas else "--altitude")
+        if not (MIN_RTOL <= self.rtol < 1):
+            raise ValueError(f"rtol = {self.rtol!r}: allowed range {MIN_RTOL:g} <= rtol < 1")
         if not self.areas:
             object.__setattr__(self, "areas", (self.satellite.A3,))
         bad = [s for s in self.solar if s not in SOLAR_CASES]
@@ -89,6 +118,18 @@ class FeasibilitySpec:
                 self.circular(h, a3)
                 for case in (None, *self.solar):
                     self.free(h, a3, case)
+
+    def runs_per_point(self) -> int:
+        """Simulations of one point: free, nominal and trims at two tolerances, the MSIS
+        free runs, and a continuation after each free run that loses its balloon."""
+        n = len(self.solar)
+        return 2 * (3 + n) + 2 * n  # (free, release, nominal, n trims) x 2; n MSIS + release
+
+    @property
+    def check_rtol(self) -> float:
+        """The second tolerance: rtol / CHECK_FACTOR, or x CHECK_FACTOR near the floor."""
+        finer = self.rtol / CHECK_FACTOR
+        return finer if finer >= MIN_RTOL else self.rtol * CHECK_FACTOR
 
     def points(self) -> list:
         """(altitude_km, A3) of every point, altitude fastest."""
@@ -126,39 +167,95 @@ def solar_scales(h_km: float, cases=SOLAR_CASES) -> dict:
     return {c: rho[c] / nominal for c in cases}
 
 
-def _lifetime(spec: FeasibilitySpec, sat: Satellite) -> tuple:
-    """(lifetime [s] or inf when capped, how the free run ended, the run)."""
-    free = simulate(sat, periods=spec.max_lifetime_h * 3600 / sat.period, model=spec.model,
-                    progress=False)
+def free_ends(spec: FeasibilitySpec, sat: Satellite, rtol: float) -> dict:
+    """How a point's free orbit ends: balloon lost and re-entry [s], and how.
+
+    Returns
+    -------
+    dict
+        ``lost`` (when the balloon left the domain [s], NaN if it did not),
+        ``reentry`` (when the COM re-entered [s], after the release if the
+        balloon was lost first; inf past the cap; NaN if the run failed),
+        ``life`` (the usable life: the first of the two, inf past the cap, the
+        run's end for a failed run), ``end`` (the free run's status, or
+        ``"capped"``) and ``end_altitude`` [m] (where the free run ended).
+    """
+    cap = spec.max_lifetime_h * 3600
+    free = _finished(simulate(sat, periods=cap / sat.period, model=spec.model, rtol=rtol,
+                              atol=rtol * ATOL_PER_RTOL, progress=False))
+    lost, reentry = math.nan, math.nan
     if free.status == "ok":
-        return math.inf, "capped", free
-    return (free.reentry_time if free.reentry_time is not None else float(free.t[-1]),
-            free.status, free)
+        reentry = math.inf
+    elif free.status == "re-entered":
+        reentry = free.reentry_time
+    elif free.status == "left-domain":
+        lost = float(free.t[-1])
+        if lost < cap:
+            t, cont = continue_released(free, cap)
+            _finished(cont)
+            reentry = math.inf if t is None else t
+        else:
+            reentry = math.inf
+    life = (lost if math.isfinite(lost) else reentry if not math.isnan(reentry)
+            else float(free.t[-1]))
+    return {"lost": lost, "reentry": reentry, "life": life,
+            "end": "capped" if free.status == "ok" else free.status,
+            "end_altitude": float(free.altitude[-1])}
+
+
+def _finished(res):
+    """The run, unless Ctrl-C stopped it: a truncated run is not recorded as an outcome."""
+    if res.status == "interrupted":
+        raise KeyboardInterrupt
+    return res
+
+
+def _decide(spec: FeasibilitySpec, h_km: float, a3: float, rtol: float) -> dict:
+    """The verdict runs of a point at one tolerance: free, nominal and trims."""
+    kw = dict(model=spec.model, progress=False, rtol=rtol, atol=rtol * ATOL_PER_RTOL)
+    ends = free_ends(spec, spec.free(h_km, a3), rtol)
+    sat = spec.circular(h_km, a3)
+    nominal = outcome(_finished(simulate(sat, periods=spec.periods, **kw)), forces=False)
+    scales = solar_scales(h_km, spec.solar)
+    trims = {c: outcome(_finished(simulate(spec.circular(h_km, a3, k), periods=spec.periods,
+                                           **kw)), forces=False) for c, k in scales.items()}
+    v = verdict(ends["life"], nominal, trims.values(), run_s=spec.periods * sat.period,
+                cap_s=spec.max_lifetime_h * 3600, lost=math.isfinite(ends["lost"]))
+    return {"ends": ends, "nominal": nominal, "trims": trims, "scales": scales,
+            "verdict": v, "period": sat.period}
+
+
+def _hours(t_s: float, cap_s: float) -> float:
+    return min(t_s, cap_s) / 3600
 
 
 def run_point(spec: FeasibilitySpec, h_km: float, a3: float) -> dict:
     """Every run of one point and its row (keys name their units)."""
-    kw = dict(model=spec.model, progress=False)
-    life, end, free = _lifetime(spec, spec.free(h_km, a3))
-    nominal = outcome(simulate(spec.circular(h_km, a3), periods=spec.periods, **kw),
-                      forces=False)
-    scales = solar_scales(h_km, spec.solar)
-    trims = {c: outcome(simulate(spec.circular(h_km, a3, k), periods=spec.periods, **kw),
-                        forces=False) for c, k in scales.items()}
-    cap = spec.max_lifetime_h * 3600
-    row = {"altitude_km": h_km, "A3_m2": a3, "lifetime_h": min(life, cap) / 3600,
-           "lifetime_capped": not math.isfinite(life), "free_end": end,
-           "end_altitude_km": float(free.altitude[-1] / 1e3),
-           "settling_h": settling_time(nominal) / 3600, "nominal_class": nominal.class_name,
+    main = _decide(spec, h_km, a3, spec.rtol)
+    check = _decide(spec, h_km, a3, spec.check_rtol)
+    ends, nominal, cap = main["ends"], main["nominal"], spec.max_lifetime_h * 3600
+    horizon = ends["life"] if math.isfinite(ends["life"]) else cap
+    row = {"altitude_km": h_km, "A3_m2": a3,
+           "balloon_lost_h": ends["lost"] / 3600,
+           "reentry_h": _hours(ends["reentry"], cap),
+           "reentry_capped": ends["reentry"] == math.inf,
+           "free_end": ends["end"], "end_altitude_km": ends["end_altitude"] / 1e3,
+           "settling_h": settling_time(nominal) / 3600, "nominal_status": nominal.status,
+           "nominal_class": nominal.class_name,
            "theta_ss_rad": _theta_ss(nominal), "drag_makeup_m_s_day": nominal.drag_makeup}
-    for c, k in scales.items():
+    for c, k in main["scales"].items():
         row[f"scale_{c}"] = k
-        row[f"theta_ss_{c}_rad"] = _theta_ss(trims[c])
-        row[f"class_{c}"] = trims[c].class_name
-        life_c, _, _ = _lifetime(spec, spec.free(h_km, a3, c))
-        row[f"lifetime_{c}_h"] = min(life_c, cap) / 3600
-        row[f"lifetime_{c}_capped"] = not math.isfinite(life_c)
-    row["verdict"] = verdict(life, nominal, trims.values())
+        row[f"theta_ss_{c}_rad"] = _theta_ss(main["trims"][c])
+        row[f"class_{c}"] = main["trims"][c].class_name
+        e = free_ends(spec, spec.free(h_km, a3, c), spec.rtol)
+        row[f"balloon_lost_{c}_h"] = e["lost"] / 3600
+        row[f"reentry_{c}_h"] = _hours(e["reentry"], cap)
+        row[f"reentry_{c}_capped"] = e["reentry"] == math.inf
+    row.update({"rtol": spec.rtol, "verdict_rtol": main["verdict"],
+                "check_rtol": spec.check_rtol, "verdict_check_rtol": check["verdict"],
+                "theta_ss_check_rad": _theta_ss(check["nominal"]),
+                "periods_to_decide": periods_to_decide(horizon, main["period"]),
+                "verdict": combine((main["verdict"], check["verdict"]))})
     return row
 
 
@@ -171,7 +268,7 @@ def _key(row) -> tuple:
 
 
 def run_feasibility(spec: FeasibilitySpec, out, workers: int | None = None,
-                    log=print) -> list:
+                    log=print, progress: bool | None = None) -> list:
     """Run (or resume) every point into ``out``; the rows in point order.
 
     Parameters
@@ -184,6 +281,9 @@ def run_feasibility(spec: FeasibilitySpec, out, workers: int | None = None,
         Threads (default 1).
     log : callable, optional
         One line per finished point.
+    progress : bool or None, optional
+        A progress bar over the points (None: when the run takes over a second;
+        False: none).  With a bar, pass ``log=tqdm.write`` to keep the lines apart.
 
     Returns
     -------
@@ -213,8 +313,15 @@ def run_feasibility(spec: FeasibilitySpec, out, workers: int | None = None,
                     continue
                 done[_key(row)] = row
         todo = [p for p in spec.points() if _key({"altitude_km": p[0], "A3_m2": p[1]}) not in done]
-        with ThreadPoolExecutor(max_workers=workers or 1) as pool, points_path.open("a") as fh:
+        from tqdm.auto import tqdm
+
+        bar = tqdm(total=len(spec.points()), initial=len(spec.points()) - len(todo),
+                   desc="feasibility", unit="point", disable=progress is False,
+                   delay=0.0 if progress else 1.0, leave=False)
+        with ThreadPoolExecutor(max_workers=workers or 1) as pool, points_path.open("a") as fh, \
+                bar:
             for row in pool.map(lambda p: run_point(spec, *p), todo):
+                bar.update(1)
                 fh.write(json.dumps(row) + "\n")
                 fh.flush()
                 done[_key(row)] = row

@@ -17,11 +17,12 @@ edge units and ranges in :data:`tethersim.model.params.PARAMETERS` and
   values for the epoch's day;
 * ``density_scale`` -- multiplies the air density (solar-cycle studies).
 
-Which density a run uses: ``density = "uniform"`` (the thesis) takes one density
-for the whole run (:func:`uniform_density`); ``density = "per-body"`` gives each
-body the density at its own altitude, longitude and time inside the compiled loop
-(Vallado's table, or NRLMSISE-00 interpolated from a grid:
-tethersim.model.air.vector), times ``density_scale`` either way.
+Which density a run uses: ``density = "uniform"`` (the thesis, and the default of
+a circular orbit) takes one density for the whole run (:func:`uniform_density`);
+``density = "per-body"`` (the default of a free orbit) gives each body the density
+at its own altitude, longitude and time inside the compiled loop (Vallado's table,
+or NRLMSISE-00 interpolated from a grid: tethersim.model.air.vector), times
+``density_scale`` either way.
 """
 from __future__ import annotations
 
@@ -52,6 +53,43 @@ def _number(sat, name, value, unit=""):
         _fail(sat, f"{name} = {v}: must be a finite number")
     object.__setattr__(sat, name, v)
     return v
+
+
+def body_reach(sat) -> float:
+    """How far [m] a body may be from the boom COM in the air checks: the boom, and the
+    balloon at up to twice the longer tether (or its start)."""
+    return max(sat.a, sat.b) + 2 * max(sat.l10, sat.l20, math.hypot(*sat.initial[:2]))
+
+
+def air_range(sat) -> tuple:
+    """(lowest, highest) altitude [m] of the satellite's air model (Vallado's table:
+    0-1000 km; NRLMSISE-00: its grid)."""
+    from tethersim.model import atmosphere
+    from tethersim.model.air.model import ALTITUDE_RANGE
+    # an unknown atmosphere is refused later in check(), naming the allowed values
+    return ALTITUDE_RANGE.get(sat.atmosphere, (atmosphere.H_MIN, atmosphere.H_MAX))
+
+
+def apogee_altitude(sat) -> float:
+    """Apogee altitude [m] of the initial free orbit: the run starts at perigee
+    r_p = R_E + altitude, so a = r_p / (1 - e) and the apogee is a (1 + e) - R_E."""
+    from tethersim.model.constants import R_EARTH
+    return (R_EARTH + sat.altitude) * (1 + sat.eccentricity) / (1 - sat.eccentricity) - R_EARTH
+
+
+def _check_apogee(sat) -> None:
+    """Refuse an eccentric orbit whose apogee leaves the air model's altitude range."""
+    from tethersim.model.constants import R_EARTH
+    top = air_range(sat)[1] - (body_reach(sat) if sat.density_mode == "per-body" else 0.0)
+    h_a = apogee_altitude(sat)
+    if h_a > top:
+        r_p, r_top = R_EARTH + sat.altitude, R_EARTH + top
+        e_max = (r_top - r_p) / (r_top + r_p)
+        _fail(sat, f"eccentricity = {sat.eccentricity:g}: the apogee at {h_a / 1e3:.1f} km "
+                   f"leaves the air model ({sat.atmosphere}, up to {top / 1e3:g} km"
+                   f"{' for every body' if sat.density_mode == 'per-body' else ''}); from "
+                   f"perigee altitude {sat.altitude / 1e3:g} km the allowed range is "
+                   f"0 <= e <= {math.floor(e_max * 1e4) / 1e4:.4f}")
 
 
 def check(sat) -> None:
@@ -89,6 +127,8 @@ def check(sat) -> None:
                    f"{sat.altitude / 1e3:g} km of a free orbit")
     if sat.atmosphere not in ATMOSPHERES:
         _fail(sat, f"atmosphere = {sat.atmosphere!r}: allowed values {', '.join(ATMOSPHERES)}")
+    if e > 0:
+        _check_apogee(sat)
     k = _number(sat, "density_scale", sat.density_scale)
     if not DENSITY_SCALE_RANGE[0] <= k <= DENSITY_SCALE_RANGE[1]:
         _fail(sat, f"density_scale = {k:g}: allowed range {DENSITY_SCALE_RANGE[0]:g}.."
@@ -157,8 +197,25 @@ def uniform_density(sat) -> float:
     return rho * sat.density_scale
 
 
+#: said of a free orbit run in the uniform density: what a user who asked for it should know
+CONSTANT_AIR_NOTE = ("constant air at the start altitude on a free orbit: the decay does not "
+                     "speed up as the orbit sinks (the default density = 'per-body' follows "
+                     "the altitude)")
+
+
 def density_text(sat) -> str:
-    """One line saying which density a run of ``sat`` uses (run summary, docs/air.md)."""
+    """One line saying which density a run of ``sat`` uses (run summary, docs/air.md).
+
+    A free orbit in the uniform density (asked for explicitly: the free orbit's
+    default is per-body) ends with :data:`CONSTANT_AIR_NOTE`.
+    """
+    text = _density_text(sat)
+    if sat.orbit == "free" and sat.density_mode == "uniform":
+        text += f"; NOTE: {CONSTANT_AIR_NOTE}"
+    return text
+
+
+def _density_text(sat) -> str:
     scale = f" x density_scale {sat.density_scale:g}" if sat.density_scale != 1.0 else ""
     if sat.density_mode == "per-body":
         if sat.atmosphere == "nrlmsise00":

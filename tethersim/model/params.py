@@ -75,7 +75,7 @@ OPTIONS = {
     "atmosphere": Option("atmosphere.atmosphere", ("vallado", "nrlmsise00"), "air model"),
     "epoch": Option("atmosphere.epoch", "ISO UTC date-time", "instant of t = 0 (MSIS)"),
     "density": Option("environment.density", ("uniform", "per-body"),
-                      "one density, or each body's own altitude"),
+                      "one density, or each body's own altitude (default: by orbit)"),
     "inertia": Option("satellite.inertia", ("boxes", "points"),
                       "end-body moments of the 3-D models: Eq 4.4 boxes or point masses"),
     "I1": Option("satellite.I1", _MOMENTS, "tip-mass principal moments (3-D models)"),

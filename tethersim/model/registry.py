@@ -160,9 +160,17 @@ def model_for_orbit(name: str, orbit: str = "circular") -> str:
     Raises
     ------
     ValueError
-        One line: a model with no free twin (``printed``, ``3d-exact-gravity``).
+        One line: a model with no free twin (``printed``, ``3d-exact-gravity``), or
+        a free-orbit model asked to run a circular orbit (the run would decay while
+        its satellite, summary and files said "circular").
     """
     m = get_model(name)
+    if m.orbit == "free" and orbit != "free":
+        twin = {v: k for k, v in FREE_VARIANTS.items()}.get(name)
+        raise ValueError(f"model = {name!r} is a free-orbit model but the satellite's orbit = "
+                         f"{orbit!r}: give the satellite orbit = 'free' "
+                         f"(sat.replace(orbit='free'), --set orbit=free)"
+                         + (f" or use model = {twin!r}" if twin else ""))
     if orbit != "free" or m.orbit == "free":
         return name
     if name not in FREE_VARIANTS:

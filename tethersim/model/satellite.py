@@ -17,6 +17,8 @@ _POSITIVE = ("m1", "m2", "m3", "A1", "A2", "A3", "a", "b", "l10", "l20")
 _NON_NEGATIVE = ("E1", "E2", "c1", "c2", "CD")
 COM_RTOL = 1e-6  # relative tolerance of the COM-on-the-boom condition m1 b = m2 a
 DENSITY_MODES = ("uniform", "per-body")
+# density_mode chosen by the orbit when none is given (docs/air.md)
+DENSITY_BY_ORBIT = {"circular": "uniform", "free": "per-body"}
 # out-of-plane initial state of the 3-D models (docs/roll.md): name -> unit
 INITIAL_3D = {"delta_z": "m", "phi": "rad", "psi": "rad", "delta_z_dot": "m/s",
               "phi_dot": "rad/s", "psi_dot": "rad/s"}
@@ -66,7 +68,12 @@ class Satellite:
         Drag coefficient of every body.
     density_mode : str
         "uniform" (thesis: ρ at the orbit altitude for every body) or
-        "per-body" (each body at its own altitude).
+        "per-body" (each body at its own altitude).  Given as None (the default),
+        it follows the orbit: "uniform" on a circular orbit, "per-body" on a free
+        one (whose air must thicken as it sinks); ``density_auto`` records that.
+    density_auto : bool
+        True when ``density_mode`` was not given but chosen by the orbit (it
+        follows the orbit again in ``replace``); not an argument.
     initial_3d : dict
         The out-of-plane start of the 3-D models, {name: value} with names in
         ``INITIAL_3D`` (δz [m], roll φ [rad], |φ| <= ``ROLL_LIMIT_DEG``, yaw ψ [rad]
@@ -102,7 +109,7 @@ class Satellite:
     altitude: float
     initial: tuple = (0.0, 0.0, math.pi / 6, 0.0, 0.0, 0.0)
     CD: float = CD_DEFAULT
-    density_mode: str = "uniform"
+    density_mode: str | None = None  # None: follows the orbit (DENSITY_BY_ORBIT)
     source: str = field(default="", compare=False)
     allow_implausible: bool = False  # run outside tethersim.model.plausibility's ranges knowingly
     initial_3d: dict = field(default_factory=dict, hash=False)
@@ -121,6 +128,7 @@ class Satellite:
     inertia: str = "boxes"
     I1: tuple | None = None
     I2: tuple | None = None
+    density_auto: bool = field(default=False, init=False, compare=False, repr=False)
 
     def __post_init__(self):
         for f in fields(self):
@@ -163,21 +171,25 @@ class Satellite:
                                  f"allowed range -180 to 180 deg")
         object.__setattr__(self, "initial", init)
         object.__setattr__(self, "initial_3d", self._checked_initial_3d())
+        auto = self.density_mode is None
+        object.__setattr__(self, "density_auto", auto)
+        if auto:
+            # the thesis's uniform air on its held circular orbit; a free orbit's air
+            # follows each body's altitude (a uniform 200-km density would not re-enter)
+            object.__setattr__(self, "density_mode", DENSITY_BY_ORBIT.get(self.orbit, "uniform"))
         if self.density_mode not in DENSITY_MODES:
             raise SatelliteError(f"{self._where()}density = {self.density_mode!r}: "
                                  f"allowed values {DENSITY_MODES}")
         if self.density_mode == "per-body":
-            # every body must stay inside the atmosphere model: allow the boom and
-            # the balloon at up to twice the longer tether (or its start) from the COM
-            reach = max(self.a, self.b) + 2 * max(self.l10, self.l20, math.hypot(*init[:2]))
-            from tethersim.model.air.model import ALTITUDE_RANGE
-            h_min, h_max = ALTITUDE_RANGE.get(self.atmosphere, (atmosphere.H_MIN, atmosphere.H_MAX))
+            reach = options.body_reach(self)
+            h_min, h_max = options.air_range(self)
             lo, hi = h_min + reach, h_max - reach
             if not lo <= self.altitude <= hi:
+                why = " (the free orbit's default)" if auto else ""
                 raise SatelliteError(
                     f"{self._where()}altitude = {self.altitude / 1e3:g} km with density = "
-                    f"'per-body': allowed range {lo / 1e3:.3f}-{hi / 1e3:.3f} km, so that every "
-                    f"body (within {reach:.4g} m of the COM) stays inside "
+                    f"'per-body'{why}: allowed range {lo / 1e3:.3f}-{hi / 1e3:.3f} km, so that "
+                    f"every body (within {reach:.4g} m of the COM) stays inside "
                     f"{h_min / 1e3:g}-{h_max / 1e3:g} km ({self.atmosphere})")
         options.check(self)
         inertia.check(self)
@@ -254,11 +266,16 @@ class Satellite:
         """A copy with fields changed (validated again)."""
         if self.source and "source" not in changes and not self.source.endswith("(modified)"):
             changes["source"] = f"{self.source} (modified)"
+        if self.density_auto and "density_mode" not in changes:
+            changes["density_mode"] = None  # still follows the (maybe changed) orbit
         return replace(self, **changes)
 
     def to_dict(self) -> dict:
         d = asdict(self)
         d.pop("source")
+        d.pop("density_auto")
+        if self.density_auto:  # chosen by the orbit: absent, so it follows it when read back
+            d.pop("density_mode")
         for f in fields(self):  # options at their defaults are absent: store JSON unchanged
             if f.name in _OPTIONAL and d[f.name] == f.default:
                 d.pop(f.name)

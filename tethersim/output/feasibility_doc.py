@@ -3,7 +3,7 @@
 Prints the SatI answer at 200 km and a small altitude scan as Markdown, computed
 with :mod:`tethersim.experiments.feasibility` (the same runs as ``tethersim
 feasibility satI``); docs/feasibility.md pastes the output unchanged and
-tests/orbit/test_feasibility_doc.py checks its 200 km row.
+tests/output/test_feasibility_doc.py checks its 200 km row.
 """
 from __future__ import annotations
 
@@ -32,19 +32,22 @@ def scan_rows(altitudes=SCAN_KM, sat_name: str = "satI", workers: int = 2) -> li
 
 def table_line(r: dict) -> str:
     """One Markdown row of the scan."""
-    life = ("≥ " if r["lifetime_capped"] else "") + _f(r["lifetime_h"])
+    reentry = ("≥ " if r["reentry_capped"] else "") + _f(r["reentry_h"])
     trims = " / ".join(_f(r[k], "+.3f") for k in ("theta_ss_min_rad", "theta_ss_mean_rad",
                                                    "theta_ss_max_rad"))
     scales = " / ".join(_f(r[f"scale_{c}"], ".2f") for c in ("min", "mean", "max"))
-    return (f"| {r['altitude_km']:g} | {life} | {r['free_end']} at "
-            f"{r['end_altitude_km']:.0f} km | {_f(r['settling_h'])} | "
-            f"{_f(r['theta_ss_rad'], '+.3f')} | {scales} | {trims} | "
-            f"{_f(r['drag_makeup_m_s_day'])} | {r['verdict']} |")
+    verdicts = (r["verdict"] if r["verdict"] != "sensitive" else
+                f"sensitive ({r['verdict_rtol']} / {r['verdict_check_rtol']})")
+    return (f"| {r['altitude_km']:g} | {_f(r['balloon_lost_h'])} | {reentry} | "
+            f"{r['free_end']} at {r['end_altitude_km']:.0f} km | {_f(r['settling_h'])} | "
+            f"{_f(r['theta_ss_rad'], '+.3f')} / {_f(r['theta_ss_check_rad'], '+.3f')} | "
+            f"{scales} | {trims} | {_f(r['drag_makeup_m_s_day'])} | {verdicts} |")
 
 
-HEADER = ("| start altitude [km] | lifetime [h] | free run ended | settling [h] | "
-          "θ_ss nominal [rad] | density scale min / mean / max | θ_ss min / mean / max [rad] "
-          "| drag make-up [m/s/day] | verdict |\n|---|---|---|---|---|---|---|---|---|")
+HEADER = ("| start altitude [km] | balloon lost [h] | re-entry [h] | free run ended | "
+          "settling [h] | θ_ss nominal, rtol 1e-10 / 1e-12 [rad] | density scale min / mean / "
+          "max | θ_ss min / mean / max [rad] | drag make-up [m/s/day] | verdict (1e-10 / "
+          "1e-12 if sensitive) |\n|---|---|---|---|---|---|---|---|---|---|")
 
 
 def main() -> None:

@@ -7,7 +7,8 @@ converged; force breakdowns (Figs 5.7-5.20); six stability maps (Figs 5.13,
 eigenvalues, with their agreement; the torque balance E2/E1 vs b/a; and a
 table that sets each surviving statement of the thesis (shared/thesis/facts.md)
 beside what this project computes; whether the design works in a real orbit
-(free-orbit lifetime, settling, trim across the solar cycle: docs/feasibility.md);
+(balloon lost and re-entry of the free orbit, settling, trim across the solar cycle:
+docs/feasibility.md);
 and whether the balloon makes the satellite resist rolling (the 3-D models:
 linear roll and yaw modes against the boom alone, two disturbed runs;
 docs/roll.md).

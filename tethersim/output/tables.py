@@ -89,11 +89,21 @@ def write_rows(path, rows) -> Path:
 
 def timeseries_columns(res: SimResult) -> tuple:
     """(name, unit) of every column of a run's time series, time first."""
+    return tuple((n, u) for n, _, u in _columns(res))
+
+
+def _columns(res: SimResult) -> list:
+    """[(name, values, unit)] of a run's time series: t, the integrated state (and the
+    COM orbit of a circular-orbit model), then, for a free orbit, the derived altitude,
+    osculating elements and air densities (tethersim.analysis.free_orbit)."""
+    from tethersim.analysis.free_orbit import free_orbit_series  # numba: only when writing one
+
     lay = res.layout
-    cols = tuple(zip(lay.state, lay.state_units))
+    names = tuple(zip(lay.state, lay.state_units))
     if res.states.shape[1] > lay.n_state:  # the COM orbit of a circular-orbit model
-        cols += tuple(zip(ORBIT_COLUMNS, ORBIT_UNITS))
-    return (("t", "s"),) + cols
+        names += tuple(zip(ORBIT_COLUMNS, ORBIT_UNITS))
+    return ([("t", res.t, "s")] + [(n, res.states[:, i], u) for i, (n, u) in enumerate(names)]
+            + free_orbit_series(res))
 
 
 def write_timeseries(res: SimResult, path) -> Path:
@@ -110,7 +120,10 @@ def write_timeseries(res: SimResult, path) -> Path:
     -------
     Path
         The file: a column ``t [s]``, one per state of the model, and for a
-        circular-orbit model the COM's X, Y [m], VX, VY [m/s].
+        circular-orbit model the COM's X, Y [m], VX, VY [m/s]; for a free orbit
+        the COM's altitude [m], osculating semi_major_axis [m] and eccentricity [1]
+        and the air density at each body, rho_tip_mass, rho_bus, rho_balloon
+        [kg/m^3] (tethersim.analysis.free_orbit).
 
     Examples
     --------
@@ -120,17 +133,16 @@ def write_timeseries(res: SimResult, path) -> Path:
     >>> p.read_text().splitlines()[0][:30]
     't [s],delta_x [m],delta_y [m],'
     """
-    names = timeseries_columns(res)
-    data = np.column_stack([res.t, res.states])
-    rows = ({n: v for (n, _), v in zip(names, row)} for row in data)
-    return write_table(path, rows, tuple((n, f"{n} [{u}]") for n, u in names))
+    columns = _columns(res)
+    data = np.column_stack([v for _, v, _ in columns])
+    rows = ({n: v for (n, _, _), v in zip(columns, row)} for row in data)
+    return write_table(path, rows, tuple((n, f"{n} [{u}]") for n, _, u in columns))
 
 
 def _series(res: SimResult, attrs: dict | None = None) -> tuple:
     """(columns, global attributes) of a run's time series: [(name, values, units)] with
     ``t`` first, and the run's and satellite's metadata; what to_xarray and write_netcdf hold."""
-    names = timeseries_columns(res)
-    columns = [(n, res.t if i == 0 else res.states[:, i - 1], u) for i, (n, u) in enumerate(names)]
+    columns = _columns(res)
     found = res.satellite.implausible if res.satellite.allow_implausible else ()
     meta = {"satellite": res.satellite.name, "model": res.model, "method": res.method,
             "label": res.label, "status": res.status, "message": res.message,
@@ -142,6 +154,8 @@ def _series(res: SimResult, attrs: dict | None = None) -> tuple:
             meta[f"sat_{k}"] = v
         elif k in ("I1", "I2"):  # end-body moments [roll, pitch, yaw] kg m^2, where set
             meta[f"sat_{k}"] = np.asarray(v, dtype=float)
+    # the density the run used, also when the orbit chose it (to_dict leaves it out then)
+    meta["sat_density_mode"] = res.satellite.density_mode
     meta.update(attrs or {})
     return columns, meta
 

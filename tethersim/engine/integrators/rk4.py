@@ -58,7 +58,7 @@ def rk4_advance(model, air, t, y, h, p, pw, work, y_new, g0, g1, g):
 
 
 @njit(cache=True, nogil=True)
-def _rk4_loop(model, air, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0,
+def _rk4_loop(model, air, k0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0,
               work, y_new, g):
     # every array is borrowed here, once: nothing below counts references
     y, p, pw, out_t, out_y = borrow(y), borrow(p), borrow(pw), borrow(out_t), borrow(out_y)
@@ -68,7 +68,9 @@ def _rk4_loop(model, air, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y
     row = row0
     switches = 0
     for k in range(1, n_steps + 1):
-        t = t0 + (k - 1) * h
+        # step k0 + k - 1 starts at (k0 + k - 1) h: the same time whether a run is one
+        # call or resumed in chunks (t0 + (k - 1) h would round differently per chunk)
+        t = (k0 + k - 1) * h
         if locate:
             switches += rk4_advance(model, air, t, y, h, p, pw, work, y_new,
                                     g[0], g[1], g[2])
@@ -77,7 +79,7 @@ def _rk4_loop(model, air, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y
             for i in range(n):
                 y[i] = y_new[i]
         if k % stride == 0:
-            out_t[row] = t0 + k * h
+            out_t[row] = (k0 + k) * h
             for i in range(n):
                 out_y[row, i] = y[i]
             row += 1
@@ -89,8 +91,8 @@ def _rk4_loop(model, air, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y
 
 # nogil: sweeps run many trajectories on threads (tethersim.experiments.sweep)
 @njit(cache=True, nogil=True)
-def rk4_run(model, air, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0):
-    """n_steps RK4 steps of size h from (t0, y), y advanced in place.
+def rk4_run(model, air, k0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0):
+    """n_steps RK4 steps of size h from step k0 (time k0 h) and state y, advanced in place.
 
     Parameters
     ----------
@@ -99,8 +101,11 @@ def rk4_run(model, air, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, 
         (once, cached on disk) its own loop.
     air : ndarray
         The air vector (tethersim.model.air.vector; dynamics.derivative).
-    t0, y, h : float, ndarray, float
-        Start time, state (advanced in place), step.
+    k0 : int
+        Steps taken before this call: the first step starts at t = k0 h, so a run
+        resumed in chunks has the same times, to the last bit, as one call.
+    y, h : ndarray, float
+        State (advanced in place), step.
     n_steps, stride : int
         Steps to take; every stride-th state is written out.
     p, pw : ndarray
@@ -123,5 +128,5 @@ def rk4_run(model, air, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, 
     work = np.empty((5, n))
     y_new = np.empty(n)
     g = np.empty((3, 2))  # tether margins at both ends of a step, and a trial
-    return _rk4_loop(model, air, t0, y, h, n_steps, stride, p, pw, locate, out_t, out_y,
+    return _rk4_loop(model, air, k0, y, h, n_steps, stride, p, pw, locate, out_t, out_y,
                      row0, work, y_new, g)

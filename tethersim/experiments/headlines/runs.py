@@ -113,7 +113,7 @@ def row_of(res, case: Headline, model: str, scheme: str) -> dict:
            "theta_max": float(th.max()) if th.size else math.nan,
            "revolutions": float((th.max() - th.min()) / (2 * math.pi)) if th.size else 0.0,
            "theta_end": float(th[-1]) if th.size else math.nan,
-           "err_theta": res.error_estimate[2] if res.error_estimate else math.nan,
+           "err_theta": res.errors["theta"] if res.errors else math.nan,
            "converged": res.converged, "wall_s": res.wall_time}
     row["claim_holds"] = claim_holds(case.check, row)
     # private: the series for plots (not written to CSV)

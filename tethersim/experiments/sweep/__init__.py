@@ -11,7 +11,7 @@ from tethersim.experiments.sweep.lock import StoreLocked
 from tethersim.experiments.sweep.point import VARIABLES, run_point
 from tethersim.experiments.sweep.runner import SweepInterrupted, run_sweep
 from tethersim.experiments.sweep.spec import SweepSpec
-from tethersim.experiments.sweep.store import StoreMismatch, StoreRepaired, open_dataset
+from tethersim.experiments.sweep.store import StoreMismatch, StoreRepaired, open_dataset, status_names
 from tethersim.experiments.sweep.verify import StoreDamaged
 
 
@@ -29,5 +29,5 @@ def sweep(sat, axes: dict, out, **options):
 
 
 __all__ = ["SweepSpec", "SweepInterrupted", "StoreMismatch", "StoreLocked", "StoreDamaged",
-           "StoreRepaired", "VARIABLES", "open_dataset",
+           "StoreRepaired", "VARIABLES", "open_dataset", "status_names",
            "run_point", "run_sweep", "sweep"]

@@ -5,12 +5,21 @@ import numpy as np
 import xarray as xr
 
 from tethersim.analysis.classify import CLASSES, STABLE
+from tethersim.engine.result import STATUSES
 
 
 def class_counts(ds: xr.Dataset) -> dict:
     """{class name: number of computed points}."""
     c = ds.stability_class.values[ds.done.values]
     return {name: int(np.sum(c == i)) for i, name in enumerate(CLASSES)}
+
+
+def status_counts(ds: xr.Dataset) -> dict:
+    """{engine status name: number of computed points} (tethersim.engine.result.STATUSES)."""
+    from tethersim.experiments.sweep.store import status_names
+
+    names = status_names(ds)
+    return {s: int(np.sum(names == s)) for s in STATUSES}
 
 
 def stable_band(ds: xr.Dataset) -> list:

@@ -21,7 +21,8 @@ Layout of the outputs, per point j:
 
 ``rec_f[j]``  mean pitch, steady-state pitch, settling time, trail δx, trail δy,
               largest family force on δx, δy, θ (NaN where not computed)
-``rec_i[j]``  status code (0 ok, 1 non-finite, 2 failed or left the domain),
+``rec_i[j]``  status code (the index of the engine's status in
+              tethersim.engine.result.STATUSES: ok, diverged, failed, left-domain),
               counts (0/1), tumbled, upside down, right-hand-side evaluations
 """
 from __future__ import annotations
@@ -36,6 +37,7 @@ from tethersim.engine.evaluate import _domain_scan, _family_force_peaks
 from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.dop853 import dop853_run
 from tethersim.engine.integrators.rk4 import rk4_run
+from tethersim.engine.result import STATUSES
 
 F_FIELDS = ("mean_pitch", "steady_state_pitch", "settling_time", "trail_delta_x",
             "trail_delta_y", "max_force_delta_x", "max_force_delta_y", "max_force_theta")
@@ -43,7 +45,9 @@ I_FIELDS = ("status", "counts", "tumbled", "upside_down", "nfev")
 # where the block reads each point's domain limits (GEOM[j]) and state columns (cols)
 GEOM_FIELDS = ("reach_squared", "l10", "l20", "max_stretch", "a", "b")
 COL_FIELDS = ("delta_x", "delta_y", "theta", "delta_z")  # delta_z: -1 for a planar model
-STATUS_OK, STATUS_NONFINITE, STATUS_FAILED = 0, 1, 2
+# the engine's status names, coded by their index in STATUSES (the store's flag_values)
+STATUS_OK, STATUS_NONFINITE, STATUS_FAILED, STATUS_LEFT_DOMAIN = (
+    STATUSES.index(s) for s in ("ok", "diverged", "failed", "left-domain"))
 
 
 @njit(cache=True, nogil=True)
@@ -69,7 +73,7 @@ def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
             out_y[0, i] = y[i]
         if faithful:  # simulate._run_rk4, progress=False: one call for every step
             out_t[0] = 0.0
-            rows, _, st = rk4_run(model, air, 0.0, y, span[j], n_steps, one, p, pw, locate,
+            rows, _, st = rk4_run(model, air, 0, y, span[j], n_steps, one, p, pw, locate,
                                   out_t, out_y, one)
             n = 1 + rows
             nfev = 4 * n_steps
@@ -88,7 +92,7 @@ def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
                                                     geom[j, 1], geom[j, 2], geom[j, 4],
                                                     geom[j, 5], geom[j, 0], geom[j, 3])
         if i_far >= 0 or i_over >= 0:
-            status = STATUS_FAILED  # "left-domain"
+            status = STATUS_LEFT_DOMAIN
         counts = status == STATUS_OK and last == n and n >= 2
         for k in range(rec_f.shape[1]):
             rec_f[j, k] = math.nan

@@ -11,6 +11,7 @@ from functools import lru_cache
 
 from tethersim.analysis.outcome import outcome
 from tethersim.engine.linearise import rk4_amplification
+from tethersim.engine.result import STATUSES
 from tethersim.engine.simulate import FAITHFUL_STEPS_PER_PERIOD, simulate
 from tethersim.experiments.sweep.spec import ATOL_PER_RTOL, SweepSpec
 
@@ -29,11 +30,12 @@ VARIABLES = (
     ("max_force_theta", "float64", "N m", "largest |Q| of one force family on theta"),
     ("rk4_amplification", "float64", "1",
      "largest RK4 growth per thesis step (26.55 s at 200 km) over the initial linear modes; > 1: unstable"),
-    ("status", "int8", "1", "0 ok, 1 non-finite state, 2 integrator failed"),
+    ("status", "int8", "1", "run status: " + ", ".join(f"{i} {s}" for i, s in enumerate(STATUSES))),
     ("nfev", "int64", "1", "right-hand-side evaluations"),
 )
 NAMES = tuple(v[0] for v in VARIABLES)
-STATUS = {"ok": 0, "diverged": 1, "failed": 2}
+#: the engine's status names (tethersim.engine.result.STATUSES) and their stored codes
+STATUS = {name: code for code, name in enumerate(STATUSES)}
 
 
 def run_point(spec: SweepSpec, k: int) -> dict:
@@ -58,7 +60,7 @@ def run_point(spec: SweepSpec, k: int) -> dict:
     thesis_step = sat.period / FAITHFUL_STEPS_PER_PERIOD
     out = outcome(res, tol=spec.tol)
     m = out.metrics
-    return record(STATUS.get(res.status, 2), res.nfev,
+    return record(STATUS[res.status], res.nfev,
                   rk4_amplification(sat, thesis_step, spec.model), out.stability_class,
                   None if not out.counts else dict(
                       mean_pitch=m.mean_pitch, steady_state_pitch=m.steady_state_pitch,

@@ -36,6 +36,7 @@ import zarr
 from tethersim._jit import CACHE_KEY
 from tethersim._version import __version__
 from tethersim.analysis.classify import flag_attrs
+from tethersim.engine.result import STATUSES
 from tethersim.experiments.sweep.lock import StoreLock
 from tethersim.experiments.sweep.point import VARIABLES
 from tethersim.experiments.sweep.spec import SweepSpec
@@ -71,7 +72,7 @@ def _empty_dataset(spec: SweepSpec) -> xr.Dataset:
         if name == "stability_class":
             attrs.update(flag_attrs())
         if name == "status":  # a failed point says why: its status, not a bare NaN row
-            attrs.update(flag_values=[0, 1, 2], flag_meanings="ok diverged integrator_failed")
+            attrs.update(status_attrs())
         data[name] = (dims, np.full(spec.shape, FILL[dtype], dtype=dtype), attrs)
     data["checksum"] = (dims, np.full(spec.shape, -1, dtype=np.int64),
                         {"long_name": "FNV-1a hash of the point's record "
@@ -125,6 +126,7 @@ class SweepStore:
                     f"{self.path} was begun by another tethersim build "
                     f"({on_disk.attrs.get('code')}, this is {code_id()}): its points would not "
                     f"match new ones; use another --out, or --restart to discard it")
+            _check_status_codes(on_disk, self.path)
             if "checksum" not in on_disk:
                 raise StoreMismatch(f"{self.path} has no per-point checksums (an older tethersim): "
                                     f"use --restart to discard it")
@@ -325,11 +327,55 @@ def _differences(old_json, spec: SweepSpec) -> str:
     return "differs in " + ", ".join(keys) if keys else "same spec"
 
 
+def status_attrs() -> dict:
+    """CF flag attributes of the status variable: the engine's names, coded by index."""
+    return {"flag_values": list(range(len(STATUSES))), "flag_meanings": " ".join(STATUSES)}
+
+
+def _check_status_codes(ds: xr.Dataset, path) -> None:
+    """Refuse, in one line, a store whose status codes are not this tethersim's."""
+    meanings = ds["status"].attrs.get("flag_meanings") if "status" in ds else None
+    if meanings != status_attrs()["flag_meanings"]:
+        raise StoreMismatch(f"{path}: its status codes ({meanings!r}) are an older "
+                            f"tethersim's, which recorded a run that left the domain as "
+                            f"failed; run the sweep again with --restart")
+
+
+def _check_dtypes(ds: xr.Dataset, path) -> None:
+    """Refuse, in one line, a store whose arrays do not have the dtypes tethersim writes."""
+    expected = {name: dtype for name, dtype, *_ in VARIABLES}
+    expected.update(checksum="int64", done="bool")
+    for name, dtype in expected.items():
+        if name in ds and ds[name].dtype != np.dtype(dtype):
+            raise StoreDamaged(f"{path}: variable {name!r} is stored as {ds[name].dtype}, "
+                               f"tethersim writes {dtype} (an edited store); run the sweep "
+                               f"again with --restart to discard it")
+
+
+def status_names(ds: xr.Dataset) -> np.ndarray:
+    """The status of each grid point by the engine's name ("" where not computed)."""
+    codes = ds["status"].values
+    names = np.array(STATUSES + ("",), dtype=object)
+    return np.where(ds["done"].values, names[np.clip(codes, 0, len(STATUSES))], "")
+
+
 def open_dataset(path) -> xr.Dataset:
-    """A finished (or partial) sweep store as a loaded xarray Dataset."""
+    """A finished (or partial) sweep store as a loaded xarray Dataset.
+
+    Raises
+    ------
+    FileNotFoundError
+        Not a sweep store.
+    StoreMismatch
+        A store of an older tethersim whose status codes differ.
+    StoreDamaged
+        A store whose arrays' dtypes were edited.
+    """
     path = Path(path)
     if not ((path / "zarr.json").exists() or (path / ".zgroup").exists()):
         raise FileNotFoundError(f"{path}: not a sweep store (no zarr.json)")
     with xr.open_zarr(path) as ds:
+        _check_dtypes(ds, path)
+        _check_status_codes(ds, path)
         # the checksum is the store's own bookkeeping (tethersim.experiments.sweep.verify)
         return ds.drop_vars("checksum", errors="ignore").load()

@@ -78,7 +78,8 @@ def read_verified(group, shape, fields: dict, fill: dict, names) -> tuple:
     Raises
     ------
     StoreDamaged
-        If a variable's metadata cannot be opened.
+        If a variable's metadata cannot be opened, or its dtype or shape is not
+        the one tethersim writes (an edited store).
     """
     rows, row = (shape[0], shape[1]) if len(shape) == 2 else (1, shape[0])
     arrays, bad_rows = {}, set()
@@ -88,6 +89,14 @@ def read_verified(group, shape, fields: dict, fill: dict, names) -> tuple:
         except Exception as exc:  # noqa: BLE001 - any failure here is damaged metadata
             raise StoreDamaged(f"variable {name!r} cannot be opened ({type(exc).__name__}: "
                                f"{' '.join(str(exc).split())})") from None
+        # an edited dtype or shape is not a damaged chunk: rewriting the rows into it
+        # would "repair" the store into one that every reader then fails on
+        if arr.dtype != np.dtype(dtype):
+            raise StoreDamaged(f"variable {name!r} is stored as {arr.dtype}, tethersim "
+                               f"writes {np.dtype(dtype)} (an edited store)")
+        if tuple(arr.shape) != tuple(shape):
+            raise StoreDamaged(f"variable {name!r} has shape {tuple(arr.shape)}, the grid is "
+                               f"{tuple(shape)} (an edited store)")
         flat = np.empty(rows * row, dtype=dtype)
         for r in range(rows):
             try:

@@ -13,7 +13,8 @@ File layout (units in the key name where they are not SI)::
                    theta_dot [rad/s]; optional, for the 3-D models: delta_z [m]
                    phi0_deg psi0_deg [deg] (roll, yaw)  delta_z_dot [m/s]
                    phi_dot psi_dot [rad/s]
-    [environment]  (optional) CD [-], density = "uniform" | "per-body"
+    [environment]  (optional) CD [-], density = "uniform" | "per-body" (default: uniform on a
+                   circular orbit, per-body on a free one)
     [model]        (optional) allow_implausible = true: run outside the plausible
                    ranges (tethersim.plausibility) knowingly; the summary says so
     [atmosphere]   (optional) atmosphere = "vallado" | "nrlmsise00", epoch = ISO UTC,
@@ -126,7 +127,7 @@ def from_dict(doc: dict, where: str = "<dict>", allow_implausible: bool = False)
             l20=vals["l20"], E1=vals["E1_N_per_mm2"] * N_PER_MM2_TO_N,
             E2=vals["E2_N_per_mm2"] * N_PER_MM2_TO_N, c1=vals["c1"], c2=vals["c2"],
             altitude=vals["altitude_km"] * 1e3, initial=initial,
-            CD=vals.get("CD", CD_DEFAULT), density_mode=vals.get("density", "uniform"),
+            CD=vals.get("CD", CD_DEFAULT), density_mode=vals.get("density"),
             source=where, allow_implausible=allow_implausible or vals.get("allow_implausible", False),
             initial_3d=vals["initial_3d"], **_options(vals))
     except SatelliteError as exc:

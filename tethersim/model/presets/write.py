@@ -18,8 +18,10 @@ def dumps(sat: Satellite, notes: dict | None = None, header: str = "") -> str:
         "orbit": {"altitude_km": sat.altitude / 1e3},
         "initial": {"delta_x": x0[0], "delta_y": x0[1], "theta0_deg": math.degrees(x0[2]),
                     "delta_x_dot": x0[3], "delta_y_dot": x0[4], "theta_dot": x0[5]},
-        "environment": {"CD": sat.CD, "density": sat.density_mode},
+        "environment": {"CD": sat.CD},
     }
+    if not sat.density_auto:  # else absent: the density follows the orbit when read back
+        tables["environment"]["density"] = sat.density_mode
     for key, (_, name, si) in INITIAL_3D_KEYS.items():  # the 3-D start, where set
         if name in sat.initial_3d:
             tables["initial"][key] = sat.initial_3d[name] / si

@@ -1,5 +1,6 @@
 """PNG plots of a result: θ, δx, δy against time (orbits below, hours above);
-for a 3-D model also roll φ, yaw ψ and the balloon's out-of-plane δz.
+for a 3-D model also roll φ, yaw ψ and the balloon's out-of-plane δz; for a free orbit the
+altitude.
 
 The pitch panel marks θ_ss, the thesis's ±0.05 rad band about it and the settling
 time.  The balloon's taut-tether bounce (period ~70-80 s) is far faster than the
@@ -102,7 +103,8 @@ def _hours_on_top(ax, period):
 def plot_result(res: SimResult, out_dir, prefix: str = "") -> list:
     """Write theta.png, delta_x.png, delta_y.png and overview.png; return the paths.
 
-    A 3-D model adds roll.png, yaw.png and delta_z.png (and their overview panels).
+    A 3-D model adds roll.png, yaw.png and delta_z.png (and their overview panels);
+    a free-orbit model adds altitude.png (:func:`plot_altitude`).
     """
     import matplotlib
     matplotlib.use("Agg")
@@ -160,4 +162,31 @@ def plot_result(res: SimResult, out_dir, prefix: str = "") -> list:
     save_figure(fig_all, p, dpi=110, pil_kwargs=FAST_PNG)
     plt.close(fig_all)
     paths.append(p)
+    if res.layout.orbit == "free":
+        paths.append(plot_altitude(res, out_dir / f"{prefix}altitude.png"))
     return paths
+
+
+def plot_altitude(res: SimResult, path) -> Path:
+    """Write the boom COM's altitude [km] against time of a free-orbit run, with the
+    re-entry altitude; return the path."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    period = res.satellite.period
+    fig, ax = plt.subplots(figsize=(10, 4))
+    fig.subplots_adjust(left=0.09, right=0.97, top=0.78, bottom=0.13)
+    ax.plot(res.t / period, res.altitude / 1e3, lw=0.8, label="boom COM")
+    ax.axhline(res.satellite.reentry_altitude / 1e3, color="tab:red", ls="--", lw=0.8,
+               label=f"re-entry altitude {res.satellite.reentry_altitude / 1e3:g} km")
+    ax.set_xlabel("time [orbits]")
+    ax.set_ylabel("altitude [km]")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="upper right", fontsize=8)
+    _hours_on_top(ax, period)
+    ax.set_title(f"{res.satellite.name}: altitude ({res.status})\n{res.label}", fontsize=9)
+    path = Path(path)
+    fig.savefig(path, dpi=120, pil_kwargs=FAST_PNG)
+    plt.close(fig)
+    return path

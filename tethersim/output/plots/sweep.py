@@ -15,8 +15,12 @@ import numpy as np
 
 from tethersim.analysis.classify import CLASS_COLORS, CLASSES, STABLE
 from tethersim.analysis.metrics import SETTLING_TOL
+from tethersim.experiments.sweep.store import status_names
 from tethersim.output.files import save_figure
 from tethersim.output.plots.run import FAST_PNG
+
+# a marker per status other than ok (tethersim.engine.result.STATUSES) on the class map
+STATUS_MARKERS = {"diverged": "^", "failed": "X", "re-entered": "v", "left-domain": "s"}
 
 
 def _edges(v):
@@ -121,6 +125,14 @@ def plot_stability_map(ds, path, *, title: str = "", nominal: dict | None = None
         iy, ix = np.nonzero(diff)
         ax.plot(x[ix], y[iy], "x", color="k", ms=4, mew=0.8)
         handles.append(plt.Line2D([], [], marker="x", color="k", ls="", label=other_label or "differs"))
+    # a point that did not finish ok: why, by the engine's status (its class is "failed")
+    names = status_names(ds)
+    for status, marker in STATUS_MARKERS.items():
+        iy, ix = np.nonzero(names == status)
+        if ix.size:
+            ax.plot(x[ix], y[iy], marker, color="w", mec="k", ms=5, ls="")
+            handles.append(plt.Line2D([], [], marker=marker, color="w", mec="k", ls="",
+                                      label=status))
     if band_slope is not None and np.isfinite(band_slope):
         xs = np.linspace(x.min(), x.max(), 50)
         ax.plot(xs, band_slope * xs, "w--", lw=1.2)
