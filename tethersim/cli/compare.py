@@ -72,7 +72,7 @@ def run(args) -> int:
     heading = describe_runs(results, " ".join(options.overrides(args)))
     title = heading + "\n" + (notes[0] if notes else "all variants end in the same outcome class")
     written.append(plot_compare(results, out, title=title))
-    written.append(options.write_provenance(out, record))
+    written.append(options.write_provenance(out, record, written))
     print(heading)
     print(how.describe(sat.period, args.periods))
     print(format_table(rows))

@@ -2,7 +2,8 @@
 
 Simulates, then plots every force family's generalized force on delta_x [N],
 delta_y [N] and theta [N m] (thesis Figs 5.7-5.20, pp. 5-8 to 5-17) with a
-zoomed panel for the small families; writes forces_delta_x/delta_y/theta.png
+zoomed panel for the small families; writes forces_<coordinate>.png (delta_x,
+delta_y, theta; a 3-D model adds delta_z, phi, psi, a free orbit r, nu)
 and forces.csv (largest force per coordinate) into
 ``results/<satellite>/forces`` (or ``--out``).
 """
@@ -21,8 +22,9 @@ def add_parser(sub) -> None:
         "forces", help=HELP,
         description="Simulate, then plot every force family's generalized force on delta_x "
                     "[N], delta_y [N] and theta [N m] (thesis Figs 5.7-5.20) with a zoomed "
-                    "panel for the small families; write forces_delta_x/delta_y/theta.png and "
-                    "forces.csv (largest force per coordinate).")
+                    "panel for the small families; write forces_<coordinate>.png (a 3-D model "
+                    "adds delta_z, phi, psi; a free orbit r, nu) and forces.csv (largest "
+                    "force per coordinate).")
     options.add_satellite(p)
     options.add_periods(p)
     options.add_integrator(p)
@@ -51,7 +53,6 @@ def run(args) -> int:
         COLUMNS,
         SAMPLES_PER_PERIOD,
         format_table,
-        in_plane_forces,
         largest_forces,
         table_rows,
     )
@@ -71,8 +72,8 @@ def run(args) -> int:
     options.interrupted_early(res)
     rows = largest_forces(res)
     written = [write_table(out / "forces.csv", table_rows(rows), COLUMNS)]
-    written += plot_forces(res, out, Q=in_plane_forces(res))
-    written.append(options.write_provenance(out, record))
+    written += plot_forces(res, out, Q=res.forces)
+    written.append(options.write_provenance(out, record, written))
     print(res.label)
     print(how.describe(sat.period, args.periods))
     print(format_table(rows))

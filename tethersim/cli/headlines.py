@@ -98,6 +98,6 @@ def run(args) -> int:
         if not args.no_plots:
             written += [plot_damping_scan(ds, out / "headlines_scan_damping.png"),
                         plot_step_scan(ss, out / "headlines_scan_step.png")]
-    written.append(options.write_provenance(out, record))
+    written.append(options.write_provenance(out, record, written))
     print("wrote " + ", ".join(str(p) for p in written))
     return 0

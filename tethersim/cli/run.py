@@ -3,11 +3,11 @@
 Writes timeseries.csv, timeseries.nc (NetCDF), the theta/delta_x/delta_y/overview
 PNGs and summary.json into ``results/<satellite>/`` (or ``--out``).  summary.json
 also records whose results the folder holds, so a run of another satellite (or
-other --set/--scale) into the same folder is refused unless ``--force``.
+other --set/--scale, or another model) into the same folder is refused unless
+``--force``, and the files it wrote, so a later run removes those it does not write.
 """
 from __future__ import annotations
 
-import json
 import math
 from pathlib import Path
 
@@ -85,8 +85,7 @@ def run(args) -> int:
     if args.until == "reentry":
         strict["until"] = cap
     strict.update(record)  # whose results these are: checked by the next run into `out`
-    (out / "summary.json").write_text(json.dumps(strict, indent=2, default=str) + "\n")
-    written.append(out / "summary.json")
+    written.append(options.write_record(out, "summary.json", strict, written))
     print(how.describe(sat.period, args.periods)
           + (f"; until re-entry, {cap}" if args.until == "reentry" else f"; {args.periods:g} orbits"))
     for k, v in summary.items():

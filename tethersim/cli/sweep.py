@@ -119,7 +119,7 @@ def run(args) -> int:
         nominal = {n: params.edge_value(sat, n) for n in spec.names}
         written.append(plot_stability_map(ds, out / "stability_map.png", nominal=nominal,
                                           band_slope=slope))
-    written.append(options.write_provenance(out, record))
+    written.append(options.write_provenance(out, record, written))
     for name, n in class_counts(ds).items():
         print(f"  {name:<12} {n}")
     not_ok = {s: n for s, n in status_counts(ds).items() if s != "ok" and n}

@@ -65,6 +65,7 @@ def run(args) -> int:
     from tethersim.experiments.tune import tune
     from tethersim.model.params import from_si, to_si
     from tethersim.model.presets.write import dumps
+    from tethersim.output.files import write_text
 
     sat = options.satellite(args)
     out = Path(args.out) if args.out else options.default_out(args, "tuned.toml")
@@ -95,6 +96,6 @@ def run(args) -> int:
              "c1": f"fastest stable settling (|theta_ss| <= 0.025 rad) over k x base damping, "
                    f"k = {r.damping_factor:.4g}; E2 then re-centred",
              "c2": "same factor as c1"}
-    out.write_text(dumps(t, notes, header=f"{t.name} tuned by {how} {origin}"))
+    write_text(out, dumps(t, notes, header=f"{t.name} tuned by {how} {origin}"))
     print(f"wrote {out}")
     return 0
