@@ -228,6 +228,12 @@ def _bar(total, desc, progress):
                 bar_format="{l_bar}{bar}| {n:.1f}/{total:.1f} orbits [{elapsed}<{remaining}]")
 
 
+def _advance(bar, orbits: float) -> None:
+    """Move the bar to ``orbits`` done, never past its total: the chunks' float sums
+    overshoot it by an ulp or so, and tqdm then warns 'clamping frac'."""
+    bar.update(max(0.0, min(orbits, bar.total) - bar.n))
+
+
 def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
     m, air = _kernel_args(sat, model, periods * sat.period)
     p = parameter_vector(sat, model)
@@ -264,7 +270,7 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
                 row += rows
                 switches += sw
                 done += n
-                bar.update(n * h / sat.period)
+                _advance(bar, done * h / sat.period)
                 if st != 0:
                     status = "diverged"
                     message = (f"state became non-finite near t = {out_t[row - 1]:.6g} s: the "
@@ -322,7 +328,7 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
                 t_prev, t_call = t, time.perf_counter()
                 t, h, i_out, st = loop(m, air, t, t_end, y, h, p, pw, rtol, atol, locate,
                                        out_t, out_y, i_out, max_steps, counters, t_pause)
-                bar.update((t - t_prev) / sat.period)
+                _advance(bar, t / sat.period)
                 if st != STATUS_OK:
                     status = "diverged" if st == 1 else "failed"
                     message = {1: "state became non-finite", 2: "step size became too small",
