@@ -145,3 +145,13 @@ def test_sigterm_while_a_million_points_are_checked_exits_at_once(tmp_path):
     shown = [seg.strip() for seg in re.split(r"[\r\n]", err) if seg.strip()]
     assert shown[-1].endswith("tethersim: interrupted")  # nothing started: no hint
     assert not out.exists()
+
+
+def test_a_grid_leaving_the_allowed_range_at_its_end_is_refused_at_once(tmp_path, capsys):
+    # a million altitudes whose last is past the 1000-km table: found among the corners,
+    # before the million-point check (which takes most of a minute)
+    out = tmp_path / "s"
+    line = _refused(["sweep", "satI", "--altitude", "200:1001:1000000", "--periods", "0.1",
+                     "--out", str(out), "--quiet"], capsys)
+    assert "sweep point altitude = 1001 km is not a valid satellite" in line
+    assert not out.exists()

@@ -7,6 +7,7 @@ it continues the same computation.
 """
 from __future__ import annotations
 
+import itertools
 import json
 import math
 from dataclasses import InitVar, dataclass, field
@@ -132,20 +133,29 @@ class SweepSpec:
         """
         from tqdm.auto import tqdm
 
+        # the grid's corners first: a range that leaves the allowed values mostly does so
+        # at an end, and is then refused at once rather than after the bar
+        corners = sorted({int(np.ravel_multi_index(c, self.shape))
+                          for c in itertools.product(*[(0, n - 1) for n in self.shape])})
+        for k in corners:
+            self._check_point(k)
         step = 1000  # points per bar update: the bar costs nothing beside the checks
         with tqdm(total=self.size, desc="checking sweep points", unit="point",
                   delay=0.0 if progress else 1.0, disable=progress is False,
                   leave=False) as bar:
             for k in range(self.size):
-                try:
-                    self.satellite_at(k)
-                except SatelliteError as exc:
-                    where = ", ".join(f"{n} = {v:g} {params.unit(n)}"
-                                      for n, v in self.values_at(k).items())
-                    raise SatelliteError(f"sweep point {where} is not a valid satellite: "
-                                         f"{exc}") from None
+                self._check_point(k)
                 if k % step == step - 1:
                     bar.update(step)
+
+    def _check_point(self, k: int) -> None:
+        try:
+            self.satellite_at(k)
+        except SatelliteError as exc:
+            where = ", ".join(f"{n} = {v:g} {params.unit(n)}"
+                              for n, v in self.values_at(k).items())
+            raise SatelliteError(f"sweep point {where} is not a valid satellite: "
+                                 f"{exc}") from None
 
     # --- plain-data form (store attributes, Dask) -------------------------------
     def to_json(self) -> str:
