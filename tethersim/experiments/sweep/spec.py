@@ -173,4 +173,7 @@ class SweepSpec:
         d = json.loads(text)
         sat = d.pop("satellite")
         sat["initial"] = tuple(sat["initial"])
-        return cls(satellite=Satellite(**sat), axes=tuple((n, v) for n, v in d.pop("axes")), **d)
+        # a worker's (or a store's) copy checks its points without a bar: the command
+        # that made the spec showed one
+        return cls(satellite=Satellite(**sat), axes=tuple((n, v) for n, v in d.pop("axes")),
+                   progress=False, **d)
