@@ -87,3 +87,14 @@ def test_read_only_folder_is_refused(tmp_path):
             check_folder(ro / "x")
     finally:
         ro.chmod(0o700)
+
+
+def test_a_folder_where_run_draws_a_plot_is_refused_before_the_run(tmp_path, capsys):
+    out = tmp_path / "r"
+    (out / "theta.png").mkdir(parents=True)
+    assert main(["run", "satI", "--periods", "1", "--out", str(out), "--quiet"]) == 2
+    assert "theta.png is a folder" in _line(capsys)
+    assert not (out / "timeseries.csv").exists()
+    # without plots the folder is in nobody's way
+    assert main(["run", "satI", "--periods", "1", "--no-plots", "--no-check", "--out", str(out),
+                 "--quiet"]) == 0
