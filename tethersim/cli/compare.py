@@ -47,6 +47,7 @@ def run(args) -> int:
         0; a failed or interrupted variant raises :class:`options.RunFailed` or
         :class:`options.Interrupted` after the output is written.
     """
+    from tethersim.cli import preflight
     from tethersim.experiments.compare import (
         COLUMNS,
         compare,
@@ -62,6 +63,8 @@ def run(args) -> int:
     sat = options.satellite(args)
     how = options.integrator(args)
     out = Path(args.out) if args.out else options.default_out(args, "compare")
+    preflight.check_run_size(args, how, "--periods/--steps", check=True)
+    preflight.check_files(out, ("compare.csv", "compare.png", "satellite.json"))
     record = options.claim_folder(out, args, sat)
     results = compare(sat, models, periods=args.periods, method=how.method, steps=how.steps,
                       samples=how.samples, rtol=how.rtol, locate_switches=how.locate, check=True,

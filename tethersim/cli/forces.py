@@ -56,6 +56,7 @@ def run(args) -> int:
         largest_forces,
         table_rows,
     )
+    from tethersim.cli import preflight
     from tethersim.engine.simulate import simulate
     from tethersim.output.plots.forces import plot_forces
     from tethersim.output.tables import write_table
@@ -63,9 +64,13 @@ def run(args) -> int:
     sat = options.satellite(args)  # before the run: a bad --set costs nothing
     how = options.integrator(args)
     out = Path(args.out) if args.out else options.default_out(args, "forces")
-    record = options.claim_folder(out, args, sat)
     # adaptive: the force peaks need a dense output grid unless --steps says otherwise
     samples = how.samples or max(2, round(SAMPLES_PER_PERIOD * args.periods))
+    preflight.check_run_size(args, how, "--periods/--steps",
+                             samples=None if how.method == "rk4" else samples)
+    preflight.check_files(out, ("forces.csv", "satellite.json", "forces_theta.png",
+                                "forces_delta_x.png", "forces_delta_y.png"))
+    record = options.claim_folder(out, args, sat)
     res = simulate(sat, periods=args.periods, method=how.method, model=args.model,
                    steps=how.steps, samples=None if how.method == "rk4" else samples,
                    rtol=how.rtol, locate_switches=how.locate, progress=options.progress(args))

@@ -59,7 +59,9 @@ def run(args) -> int:
         :class:`options.Interrupted` after its output is written.
     """
     from tethersim.analysis.summary import run_summary
+    from tethersim.cli import preflight
     from tethersim.engine.simulate import simulate
+    from tethersim.output.plots.run import FILE_NAMES as PLOT_NAMES
     from tethersim.output.plots.run import plot_result
     from tethersim.output.tables import write_netcdf, write_timeseries
 
@@ -67,6 +69,10 @@ def run(args) -> int:
     cap = _resolve_periods(args, sat)
     how = options.integrator(args)
     out = Path(args.out) if args.out else options.default_out(args)
+    preflight.check_run_size(args, how, "--periods/--steps", check=not args.no_check)
+    plots = () if args.no_plots else (
+        "overview.png", "altitude.png", *(f"{n}.png" for n in PLOT_NAMES.values()))
+    preflight.check_files(out, ("timeseries.csv", "timeseries.nc", "summary.json", *plots))
     record = options.claim_folder(out, args, sat)
     res = simulate(sat, periods=args.periods, steps=how.steps, method=how.method,
                    model=args.model, rtol=how.rtol, locate_switches=how.locate,

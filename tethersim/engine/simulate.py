@@ -236,6 +236,12 @@ def _bar(total, desc, progress):
                 bar_format="{l_bar}{bar}| {n:.1f}/{total:.1f} orbits [{elapsed}<{remaining}]")
 
 
+def _advance(bar, orbits: float) -> None:
+    """Move the bar to ``orbits`` done, never past its total: the chunks' float sums
+    overshoot it by an ulp or so, and tqdm then warns 'clamping frac'."""
+    bar.update(max(0.0, min(orbits, bar.total) - bar.n))
+
+
 def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
     m, air = _kernel_args(sat, model, periods * sat.period)
     p = parameter_vector(sat, model)
@@ -269,7 +275,7 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
                 row += rows
                 switches += sw
                 done += n
-                bar.update(n * h / sat.period)
+                _advance(bar, done * h / sat.period)
                 if st != 0:
                     status = "diverged"
                     message = (f"state became non-finite near t = {out_t[row - 1]:.6g} s: the "
@@ -330,7 +336,7 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
                                        out_t, out_y, i_out, max_steps - int(counters[4]),
                                        counters, t_pause)
                 calls += 1
-                bar.update((t - t_prev) / sat.period)
+                _advance(bar, t / sat.period)
                 if st != STATUS_OK:
                     status = "diverged" if st == 1 else "failed"
                     message = {1: "state became non-finite", 2: "step size became too small",
