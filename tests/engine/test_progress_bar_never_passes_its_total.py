@@ -36,8 +36,12 @@ class Recorder:
 @pytest.mark.parametrize("method, steps", [("rk4", 101), ("rk4", 1234), ("adaptive", None)])
 def test_bar_positions_stay_within_the_total(monkeypatch, method, steps):
     monkeypatch.setattr(sim, "tqdm", Recorder)
+    # pause often (every 7 RK4 steps; DOP853 after nearly every step) so that the bar's
+    # positions are many sums of chunks, which is where the float sums accumulate
+    monkeypatch.setattr(sim, "RK4_PAUSE_STEPS", 7)
+    monkeypatch.setattr(sim, "PAUSE_S", 1e-6)
+    monkeypatch.setattr(sim, "QUICK_RUN_S", 0.0)  # not "short: finish in one call"
     Recorder.bars = []
-    # progress=True: the run is chunked (CHUNKS pauses), so the float sums accumulate
     res = sim.simulate(SAT, periods=0.1, steps=steps, method=method, progress=True,
                        step_warning=False)
     assert res.status == "ok"
