@@ -67,6 +67,8 @@ def run(args) -> int:
     from tethersim.model.presets.write import dumps
 
     sat = options.satellite(args)
+    from tethersim.cli.overrides import refuse_unused
+    refuse_unused(args, sat, (args.model,))
     out = Path(args.out) if args.out else options.default_out(args, "tuned.toml")
     record = options.provenance(args, sat)
     origin = " ".join([f"from {record['from']}", *record["overrides"]])
