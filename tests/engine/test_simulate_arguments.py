@@ -43,3 +43,12 @@ def test_cli_rtol_above_the_range_is_refused(value, capsys, tmp_path):
                  "--out", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "--rtol" in err and "0.001" in err
+
+
+def test_docs_state_the_integrator_ranges():
+    from pathlib import Path
+    doc = (Path(__file__).parents[2] / "docs" / "limits.md").read_text()
+    for lo, hi in (RTOL_RANGE, ATOL_RANGE):
+        assert f"{lo:g}..{hi:g}" in doc
+    assert f"at least {MIN_PERIODS:g} orbit (~{MIN_PERIODS * SAT.period:.1f} s at 200 km)" in doc
+    assert SAT.altitude == 200e3
