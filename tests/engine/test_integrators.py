@@ -141,8 +141,8 @@ def test_interrupted_run_keeps_every_finished_step(sat, monkeypatch):
         return real(*args)
 
     monkeypatch.setattr(sim, "rk4_run", flaky)
-    # progress=True: always in chunks (progress=None runs a short run in one call)
-    part = simulate(sat, periods=1, steps=300, method="rk4", check=False, progress=True)
+    monkeypatch.setattr(sim, "RK4_PAUSE_STEPS", 3)  # a pause every 3 steps, as a long run's
+    part = simulate(sat, periods=1, steps=300, method="rk4", check=False, progress=False)
     assert part.status == "interrupted"
     n = part.t.size
     assert 1 < n < full.t.size

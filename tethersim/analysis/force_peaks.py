@@ -48,18 +48,37 @@ import numpy as np
 from tethersim.engine.result import SimResult
 from tethersim.generated.layout import FAMILIES
 
-# (name, symbol, SI unit) of each generalized coordinate, in the order of Q[..., k]
+# (name, symbol, SI unit) of each generalized coordinate of the planar models, in the order
+# of Q[..., k]; any model's: coordinates(layout)
 COORDINATES = (("delta_x", "δx", "N"), ("delta_y", "δy", "N"), ("theta", "θ", "N m"))
+SYMBOLS = {"delta_x": "δx", "delta_y": "δy", "delta_z": "δz", "theta": "θ", "phi": "φ",
+           "psi": "ψ", "r": "r", "nu": "ν"}
+# a generalized force on a length is a force, on an angle a torque
+FORCE_UNITS = {"m": "N", "rad": "N m"}
 SMALL_FRACTION = 0.1  # a family is "small" below 10 % of the largest peak (zoomed panel)
 # Samples per orbit of an adaptive run: ~5.3 s apart, >= 13 per tether period
 # (~70-80 s, `tethersim equilibrium satI`), so the peaks of the tether modes are
 # resolved; the RK4 run of --faithful keeps its own 200 steps per orbit (26.55 s).
 SAMPLES_PER_PERIOD = 1000
+def coordinates(layout) -> tuple:
+    """(name, symbol, SI unit of its generalized force) of each coordinate of a model.
+
+    Parameters
+    ----------
+    layout : tethersim.model.registry.Model
+        The model (``SimResult.layout``): 3 coordinates planar, 6 in 3-D (δx, δy, δz,
+        φ, θ, ψ), plus r and ν on a free orbit, in the order of ``Q[..., k]``.
+    """
+    n = layout.n_coordinates
+    return tuple((name, SYMBOLS.get(name, name), FORCE_UNITS[unit])
+                 for name, unit in zip(layout.state[:n], layout.state_units[:n]))
+
+
 @dataclass(frozen=True)
 class LargestForce:
     """The largest |Q| of one family on one coordinate (SI) and where it occurs.
 
-    coordinate: "delta_x" | "delta_y" | "theta"; unit: "N" or "N m";
+    coordinate: a coordinate of the model ("delta_x", "theta", "phi", ...); unit: "N" or "N m";
     family: the family with the largest peak (None if every family is zero);
     peak: its max |Q| [unit]; time: when it occurs [s]; period: orbital period [s];
     runner_up, runner_up_peak: the family with the second largest peak and that peak.
@@ -83,9 +102,9 @@ class LargestForce:
 def peaks(Q: np.ndarray) -> np.ndarray:
     """max |Q| over the samples, (family, coordinate), ignoring non-finite samples."""
     Q = np.asarray(Q, dtype=float)
-    if Q.ndim != 3 or Q.shape[1:] != (len(FAMILIES), len(COORDINATES)):
+    if Q.ndim != 3 or Q.shape[1] != len(FAMILIES):
         raise ValueError(f"Q has shape {Q.shape}: expected (samples, {len(FAMILIES)}, "
-                         f"{len(COORDINATES)})")
+                         f"coordinates)")
     finite = np.all(np.isfinite(Q), axis=(1, 2))
     if not finite.any():
         raise ValueError("no finite force sample: the run failed before its first output")
@@ -99,16 +118,19 @@ def small_families(Q: np.ndarray, k: int, fraction: float = SMALL_FRACTION) -> l
     return [f for f in range(len(FAMILIES)) if pk[f] < fraction * pk.max()]
 
 
-def largest_forces_from(t, Q, period: float) -> list:
-    """Rows of the largest-force table from times t [s], forces Q (n, 7, 3), period [s]."""
+def largest_forces_from(t, Q, period: float, coords: tuple = COORDINATES) -> list:
+    """Rows of the largest-force table from times t [s], forces Q (n, 7, coordinates),
+    period [s]; ``coords`` names Q's coordinates (:func:`coordinates`; default planar)."""
     t = np.asarray(t, dtype=float)
     Q = np.asarray(Q, dtype=float)
     if t.shape != Q.shape[:1]:
         raise ValueError(f"t has {t.shape} samples, Q has {Q.shape[:1]}")
     pk = peaks(Q)
+    if pk.shape[1] != len(coords):
+        raise ValueError(f"Q has {pk.shape[1]} coordinates, {len(coords)} named")
     absQ = np.where(np.isfinite(Q), np.abs(Q), -np.inf)
     rows = []
-    for k, (name, symbol, unit) in enumerate(COORDINATES):
+    for k, (name, symbol, unit) in enumerate(coords):
         order = np.argsort(-pk[:, k], kind="stable")
         first, second = order[0], order[1]
         if pk[first, k] == 0.0:
@@ -129,8 +151,9 @@ def in_plane_forces(res: SimResult) -> np.ndarray:
 
 
 def largest_forces(res: SimResult) -> list:
-    """The largest single-family generalized force on δx, δy, θ of a run (thesis p. 5-8)."""
-    return largest_forces_from(res.t, in_plane_forces(res), res.satellite.period)
+    """The largest single-family generalized force on each coordinate of a run (thesis
+    p. 5-8: δx, δy, θ; a 3-D model adds δz, φ, ψ, a free orbit r and ν)."""
+    return largest_forces_from(res.t, res.forces, res.satellite.period, coordinates(res.layout))
 
 
 def _fmt(value: float, unit: str) -> str:

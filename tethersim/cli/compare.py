@@ -47,6 +47,7 @@ def run(args) -> int:
         0; a failed or interrupted variant raises :class:`options.RunFailed` or
         :class:`options.Interrupted` after the output is written.
     """
+    from tethersim.cli import preflight
     from tethersim.experiments.compare import (
         COLUMNS,
         compare,
@@ -64,6 +65,8 @@ def run(args) -> int:
     refuse_unused(args, sat, models)  # a setting no variant uses would change nothing
     how = options.integrator(args)
     out = Path(args.out) if args.out else options.default_out(args, "compare")
+    preflight.check_run_size(args, how, "--periods/--steps", check=True)
+    preflight.check_files(out, ("compare.csv", "compare.png", "satellite.json"))
     record = options.claim_folder(out, args, sat)
     results = compare(sat, models, periods=args.periods, method=how.method, steps=how.steps,
                       samples=how.samples, rtol=how.rtol, locate_switches=how.locate, check=True,
@@ -74,7 +77,7 @@ def run(args) -> int:
     heading = describe_runs(results, " ".join(options.overrides(args)))
     title = heading + "\n" + (notes[0] if notes else "all variants end in the same outcome class")
     written.append(plot_compare(results, out, title=title))
-    written.append(options.write_provenance(out, record))
+    written.append(options.write_provenance(out, record, written))
     print(heading)
     print(how.describe(sat.period, args.periods))
     print(format_table(rows))

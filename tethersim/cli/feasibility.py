@@ -41,7 +41,7 @@ def add_parser(sub) -> None:
     p.add_argument("--max-lifetime", type=options.positive_float, default=240.0, metavar="H",
                    help="cap on the free run [h] (default 240: ten days)")
     p.add_argument("--workers", type=options.positive_int, default=None, metavar="N",
-                   help="threads (default 1)")
+                   help="threads (default 1; at most 4 per core)")
     p.add_argument("--rtol", type=options.rtol_float, default=1e-10,
                    help="DOP853 relative tolerance of every run (default 1e-10); the "
                         "verdict's runs are repeated at rtol/100 and a verdict that differs "
@@ -66,6 +66,7 @@ def run(args) -> int:
     int
         0.
     """
+    from tethersim.cli import preflight
     from tethersim.experiments.feasibility import FeasibilitySpec, run_feasibility
     from tethersim.model import params
     from tethersim.model.registry import BY_NAME
@@ -75,6 +76,7 @@ def run(args) -> int:
         raise options.UsageError(f"--model {args.model}: feasibility takes a circular-orbit "
                                  f"model; it runs the trim on the held circular orbit and the "
                                  f"lifetime with the model's free twin")
+    preflight.check_workers(args, "workers")
     from tethersim.cli.overrides import refuse
     from tethersim.experiments.feasibility import ATLAS_FIELDS
     refuse(args, ("altitude", "A3") if args.A3 else ("altitude",),
@@ -87,9 +89,17 @@ def run(args) -> int:
     altitudes = tuple(float(v) for v in params.parse_grid("altitude", args.altitude))
     areas = (tuple(float(v) for v in params.parse_grid("A3", args.A3)) if args.A3 else ())
     solar = tuple(s.strip() for s in args.solar.split(",") if s.strip())
-    spec = FeasibilitySpec(sat, altitudes, areas, solar, periods=args.periods,
-                           max_lifetime_h=args.max_lifetime, model=args.model, rtol=args.rtol)
+    from tethersim.engine.guards import SizeLimitError
+    try:
+        spec = FeasibilitySpec(sat, altitudes, areas, solar, periods=args.periods,
+                               max_lifetime_h=args.max_lifetime, model=args.model,
+                               rtol=args.rtol)
+    except SizeLimitError as exc:  # the option that sets the refused run, not the field
+        names = {"periods": "--periods", "max_lifetime_h": "--max-lifetime"}
+        raise exc.naming(names.get(exc.subject, exc.subject)) if exc.subject else exc from None
     out = Path(args.out) if args.out else options.default_out(args, "feasibility")
+    preflight.check_files(out, ("feasibility.csv", "feasibility.png"))
+    preflight.check_subfolder(out, "store")
     if args.force:  # replace another atlas's store
         import shutil
         shutil.rmtree(out / "store", ignore_errors=True)

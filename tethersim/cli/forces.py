@@ -2,7 +2,8 @@
 
 Simulates, then plots every force family's generalized force on delta_x [N],
 delta_y [N] and theta [N m] (thesis Figs 5.7-5.20, pp. 5-8 to 5-17) with a
-zoomed panel for the small families; writes forces_delta_x/delta_y/theta.png
+zoomed panel for the small families; writes forces_<coordinate>.png (delta_x,
+delta_y, theta; a 3-D model adds delta_z, phi, psi, a free orbit r, nu)
 and forces.csv (largest force per coordinate) into
 ``results/<satellite>/forces`` (or ``--out``).
 """
@@ -21,8 +22,9 @@ def add_parser(sub) -> None:
         "forces", help=HELP,
         description="Simulate, then plot every force family's generalized force on delta_x "
                     "[N], delta_y [N] and theta [N m] (thesis Figs 5.7-5.20) with a zoomed "
-                    "panel for the small families; write forces_delta_x/delta_y/theta.png and "
-                    "forces.csv (largest force per coordinate).")
+                    "panel for the small families; write forces_<coordinate>.png (a 3-D model "
+                    "adds delta_z, phi, psi; a free orbit r, nu) and forces.csv (largest "
+                    "force per coordinate).")
     options.add_satellite(p)
     options.add_periods(p)
     options.add_integrator(p)
@@ -51,10 +53,10 @@ def run(args) -> int:
         COLUMNS,
         SAMPLES_PER_PERIOD,
         format_table,
-        in_plane_forces,
         largest_forces,
         table_rows,
     )
+    from tethersim.cli import preflight
     from tethersim.engine.simulate import simulate
     from tethersim.output.plots.forces import plot_forces
     from tethersim.output.tables import write_table
@@ -64,17 +66,21 @@ def run(args) -> int:
     refuse_unused(args, sat, (args.model,))
     how = options.integrator(args)
     out = Path(args.out) if args.out else options.default_out(args, "forces")
-    record = options.claim_folder(out, args, sat)
     # adaptive: the force peaks need a dense output grid unless --steps says otherwise
     samples = how.samples or max(2, round(SAMPLES_PER_PERIOD * args.periods))
+    preflight.check_run_size(args, how, "--periods/--steps",
+                             samples=None if how.method == "rk4" else samples)
+    preflight.check_files(out, ("forces.csv", "satellite.json", "forces_theta.png",
+                                "forces_delta_x.png", "forces_delta_y.png"))
+    record = options.claim_folder(out, args, sat)
     res = simulate(sat, periods=args.periods, method=how.method, model=args.model,
                    steps=how.steps, samples=None if how.method == "rk4" else samples,
                    rtol=how.rtol, locate_switches=how.locate, progress=options.progress(args))
     options.interrupted_early(res)
     rows = largest_forces(res)
     written = [write_table(out / "forces.csv", table_rows(rows), COLUMNS)]
-    written += plot_forces(res, out, Q=in_plane_forces(res))
-    written.append(options.write_provenance(out, record))
+    written += plot_forces(res, out, Q=res.forces)
+    written.append(options.write_provenance(out, record, written))
     print(res.label)
     print(how.describe(sat.period, args.periods))
     print(format_table(rows))

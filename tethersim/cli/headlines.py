@@ -64,6 +64,7 @@ def run(args) -> int:
     int
         0.
     """
+    from tethersim.cli import preflight
     from tethersim.experiments import headlines as hl
     from tethersim.output.plots.headlines import plot_cases, plot_damping_scan, plot_step_scan
     from tethersim.output.tables import write_rows
@@ -78,6 +79,8 @@ def run(args) -> int:
     if repeated:  # as compare's --models: each case runs once (the list is then bounded)
         raise options.UsageError(f"--cases {' '.join(repeated)}: given more than once")
     out = Path(args.out) if args.out else options.default_out(args, "headlines")
+    preflight.check_files(out, ("headlines.csv", "headlines_verdicts.csv", "satellite.json",
+                                "headlines_scan_damping.csv", "headlines_scan_step.csv"))
     record = options.claim_folder(out, args, sat)
     progress = not args.quiet
     rows = hl.run_headlines(sat, models=models, progress=progress,
@@ -98,6 +101,6 @@ def run(args) -> int:
         if not args.no_plots:
             written += [plot_damping_scan(ds, out / "headlines_scan_damping.png"),
                         plot_step_scan(ss, out / "headlines_scan_step.png")]
-    written.append(options.write_provenance(out, record))
+    written.append(options.write_provenance(out, record, written))
     print("wrote " + ", ".join(str(p) for p in written))
     return 0

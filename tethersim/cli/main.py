@@ -41,6 +41,12 @@ from tethersim.cli import (
 # in the order of `tethersim --help`
 COMMANDS = (run, validate, show, equilibrium, compare, forces, sweep, tune, report, headlines,
             feasibility)
+# the options that set a command's run sizes: simulate()'s size refusal, which names its
+# own arguments, names these instead (a command without --steps never blames --steps)
+SIZE_OPTIONS = {"run": "--periods/--steps", "compare": "--periods/--steps",
+                "forces": "--periods/--steps", "validate": "--periods", "sweep": "--periods",
+                "tune": "--periods", "report": "--periods", "headlines": "--periods",
+                "feasibility": "--periods/--max-lifetime"}
 
 
 def build_parser() -> options.Parser:
@@ -122,7 +128,7 @@ def main(argv=None) -> int:
             os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
     except (options.UsageError, SatelliteError, ValueError, OSError) as exc:
-        return _error(exc)
+        return _error(_named(exc, args.command))
     except options.RunFailed as exc:
         print(f"tethersim: error: the run failed: {exc}", file=sys.stderr)
         return 1
@@ -132,6 +138,14 @@ def main(argv=None) -> int:
         detail = "; ".join(s for s in (str(exc), hint) if s)
         print("tethersim: interrupted" + (f": {detail}" if detail else ""), file=sys.stderr)
         return 130
+
+
+def _named(exc, command: str):
+    """A size refusal of simulate() naming the command's options, not simulate()'s arguments."""
+    from tethersim.engine.guards import API_SUBJECT, SizeLimitError
+    if isinstance(exc, SizeLimitError) and exc.subject == API_SUBJECT and command in SIZE_OPTIONS:
+        return exc.naming(SIZE_OPTIONS[command])
+    return exc
 
 
 def _error(exc) -> int:

@@ -15,18 +15,13 @@ exceptions that :func:`tethersim.cli.main.main` turns into exit codes.
 from __future__ import annotations
 
 import argparse
-import json
 import math
-import re
+import sys
 from dataclasses import dataclass
-from pathlib import Path
 
 from tethersim.model.registry import DEFAULT_MODEL
 
 PRESET_HELP = "preset name (satI, satII, dumbsat; any case) or path to a satellite .toml file"
-RESULTS = Path("results")
-# the file that records whose results a folder holds; `run` records it in summary.json
-PROVENANCE_FILES = ("summary.json", "satellite.json")
 
 
 class UsageError(Exception):
@@ -300,88 +295,6 @@ def progress(args):
     return False if args.quiet else None
 
 
-# --- output folders --------------------------------------------------------------------------
-def satellite_key(arg: str) -> str:
-    """A folder name for the satellite argument: the preset's name as shipped (satI, satII,
-    dumbsat) or the TOML file's stem, with anything but letters, digits, '.', '_', '-'
-    replaced by '_'."""
-    from tethersim.model.presets import PRESET_NAMES
-    stem = Path(PRESET_NAMES.get(arg.lower(), arg)).stem
-    return re.sub(r"[^A-Za-z0-9._-]", "_", stem) or "satellite"
-
-
-def default_out(args, *parts: str) -> Path:
-    """results/<satellite>/<parts...>: one folder per satellite (see :func:`satellite_key`)."""
-    return RESULTS.joinpath(satellite_key(args.satellite), *parts)
-
-
-def provenance(args, sat) -> dict:
-    """Whose results a folder holds: the satellite's name, where it came from, the overrides."""
-    from tethersim.model.presets import PRESET_NAMES
-    key = args.satellite.lower()
-    origin = (Path(PRESET_NAMES[key]).stem if key in PRESET_NAMES
-              else str(Path(args.satellite).resolve()))
-    return {"satellite": sat.name, "from": origin, "overrides": overrides(args)}
-
-
-def _describe(p: dict) -> str:
-    if not p.get("satellite"):  # written before tethersim recorded it
-        return "an unrecorded satellite"
-    text = f"{p['satellite']} ({p.get('from') or '?'})"
-    return text + (" " + " ".join(p["overrides"]) if p.get("overrides") else "")
-
-
-def claim_folder(out: Path, args, sat) -> dict:
-    """Create ``out`` for this satellite's results, refusing one that holds another's.
-
-    The folder's ``summary.json`` (run) or ``satellite.json`` (other commands)
-    records whose results it holds; unless ``--force``, a folder of another
-    satellite, source or --set/--scale stops the command before anything runs.
-
-    Returns
-    -------
-    dict
-        This run's provenance, to write with :func:`write_provenance` (or into summary.json).
-
-    Raises
-    ------
-    UsageError
-        The folder holds results of another satellite (one line naming both).
-    ValueError
-        The folder cannot be created.
-    """
-    mine = provenance(args, sat)
-    if not args.force:
-        for name in PROVENANCE_FILES:
-            path = out / name
-            if not path.is_file():
-                continue
-            try:
-                theirs = json.loads(path.read_text())
-            except (OSError, ValueError):
-                theirs = {}
-            if not isinstance(theirs, dict):
-                theirs = {}
-            theirs = {k: theirs.get(k) for k in mine}
-            theirs["overrides"] = theirs["overrides"] or []
-            if theirs != mine:
-                raise UsageError(
-                    f"--out {out} holds results of {_describe(theirs)}, not "
-                    f"{_describe(mine)}: give another --out, or --force to replace them")
-    try:  # before the run, so a bad folder costs nothing
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise ValueError(f"--out {out}: cannot create the output folder: {exc.strerror}") from None
-    return mine
-
-
-def write_provenance(out: Path, record: dict) -> Path:
-    """Write ``out/satellite.json`` (whose results the folder holds)."""
-    path = out / "satellite.json"
-    path.write_text(json.dumps(record, indent=2) + "\n")
-    return path
-
-
 def check_status(res) -> None:
     """Raise :class:`Interrupted` or :class:`RunFailed` for a run that did not end ok
     (call after its output is written)."""
@@ -392,9 +305,33 @@ def check_status(res) -> None:
         raise RunFailed(res.message)
 
 
+# an interrupted run with more output samples than this says, before writing them, that a
+# second Ctrl-C stops the writing (a million samples: ~20 s of CSV and ~10 s of plots)
+WRITE_NOTICE_SAMPLES = 100_000
+
+
 def interrupted_early(res) -> None:
     """Raise :class:`Interrupted` for Ctrl-C before a second output sample: nothing to
-    summarise or write (call right after the run)."""
+    summarise or write (call right after the run).  An interrupted run with a long
+    output says on stderr that it writes it, and that Ctrl-C again stops that: every
+    file is written whole under a temporary name, so the folder keeps complete files."""
     if res.status == "interrupted" and res.t.size < 2:
         raise Interrupted(f"at t = {res.t[-1]:.6g} s, before the first output sample: "
                           f"nothing written")
+    if res.status == "interrupted" and res.t.size > WRITE_NOTICE_SAMPLES:
+        print(f"tethersim: interrupted at t = {res.t[-1]:.6g} s: writing the {res.t.size} "
+              f"samples finished; Ctrl-C again to stop writing (files are complete or absent)",
+              file=sys.stderr, flush=True)
+
+
+# the output folders (tethersim.cli.folders), used by every command as options.<name>
+from tethersim.cli import folders as _folders  # noqa: E402  (it uses UsageError, above)
+
+RESULTS = _folders.RESULTS
+PROVENANCE_FILES = _folders.PROVENANCE_FILES
+satellite_key = _folders.satellite_key
+default_out = _folders.default_out
+provenance = _folders.provenance
+claim_folder = _folders.claim_folder
+write_provenance = _folders.write_provenance
+write_record = _folders.write_record

@@ -32,7 +32,7 @@ def add_parser(sub) -> None:
                                 "(default 50); the headline cases keep the thesis's own "
                                 "run lengths")
     p.add_argument("--workers", type=options.positive_int, default=None, metavar="N",
-                   help="threads (default: every core)")
+                   help="threads (default: every core; at most 4 per core)")
     p.add_argument("--no-roll", action="store_true",
                    help="leave out the roll section (the 3-D models; their first compile "
                         "takes a minute or two)")
@@ -55,8 +55,12 @@ def run(args) -> int:
     int
         0.
     """
+    from tethersim.cli import preflight
     from tethersim.output.report import build_report
 
+    preflight.check_workers(args, "workers")
+    preflight.check_folder(Path(args.out))
+    preflight.check_subfolder(Path(args.out), "img")
     t0 = time.perf_counter()
     path = build_report(Path(args.out), grid=args.grid, periods=args.periods,
                         workers=args.workers, progress=options.progress(args),

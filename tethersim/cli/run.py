@@ -3,11 +3,11 @@
 Writes timeseries.csv, timeseries.nc (NetCDF), the theta/delta_x/delta_y/overview
 PNGs and summary.json into ``results/<satellite>/`` (or ``--out``).  summary.json
 also records whose results the folder holds, so a run of another satellite (or
-other --set/--scale) into the same folder is refused unless ``--force``.
+other --set/--scale, or another model) into the same folder is refused unless
+``--force``, and the files it wrote, so a later run removes those it does not write.
 """
 from __future__ import annotations
 
-import json
 import math
 from pathlib import Path
 
@@ -59,7 +59,9 @@ def run(args) -> int:
         :class:`options.Interrupted` after its output is written.
     """
     from tethersim.analysis.summary import run_summary
+    from tethersim.cli import preflight
     from tethersim.engine.simulate import simulate
+    from tethersim.output.plots.run import FILE_NAMES as PLOT_NAMES
     from tethersim.output.plots.run import plot_result
     from tethersim.output.tables import write_netcdf, write_timeseries
 
@@ -69,6 +71,10 @@ def run(args) -> int:
     cap = _resolve_periods(args, sat)
     how = options.integrator(args)
     out = Path(args.out) if args.out else options.default_out(args)
+    preflight.check_run_size(args, how, "--periods/--steps", check=not args.no_check)
+    plots = () if args.no_plots else (
+        "overview.png", "altitude.png", *(f"{n}.png" for n in PLOT_NAMES.values()))
+    preflight.check_files(out, ("timeseries.csv", "timeseries.nc", "summary.json", *plots))
     record = options.claim_folder(out, args, sat)
     res = simulate(sat, periods=args.periods, steps=how.steps, method=how.method,
                    model=args.model, rtol=how.rtol, locate_switches=how.locate,
@@ -87,8 +93,7 @@ def run(args) -> int:
     if args.until == "reentry":
         strict["until"] = cap
     strict.update(record)  # whose results these are: checked by the next run into `out`
-    (out / "summary.json").write_text(json.dumps(strict, indent=2, default=str) + "\n")
-    written.append(out / "summary.json")
+    written.append(options.write_record(out, "summary.json", strict, written))
     print(how.describe(sat.period, args.periods)
           + (f"; until re-entry, {cap}" if args.until == "reentry" else f"; {args.periods:g} orbits"))
     for k, v in summary.items():

@@ -1,9 +1,10 @@
 """``tethersim show``: a satellite's parameters in the units ``--set`` takes.
 
 Every settable parameter is printed in its edge unit (tethersim.model.params:
-E1, E2 in N/mm^2, altitude in km, else SI) and exactly (the shortest text
-that reads back as the same float), so a printed value fed back through
-``--set NAME=VALUE`` gives the same satellite.
+E1, E2 in N/mm^2, altitude in km, else SI) as the shortest text that converts
+back to the same SI value, so a printed value fed back through ``--set
+NAME=VALUE`` gives the same satellite; a value with no such text of 12 digits
+(a product of ``--scale``) is rounded to 12 (tethersim.model.params.edge_text).
 """
 from __future__ import annotations
 
@@ -54,7 +55,7 @@ def run(args) -> int:
     for name in params.NAMES:
         if getattr(sat, name) is None:  # an unset MSIS index: the bundled table's
             continue
-        print(f"  {name:<12} {exact(params.edge_value(sat, name)):<22} {params.unit(name)}")
+        print(f"  {name:<12} {params.edge_text(sat, name):<22} {params.unit(name)}")
     print(f"  options: orbit {sat.orbit}, j2 {str(sat.j2).lower()}, atmosphere "
           f"{sat.atmosphere}, epoch {sat.epoch}"
           + ("" if sat.f107 is not None else " (f107, f107a, ap unset: the bundled table)"))

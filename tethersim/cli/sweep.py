@@ -41,9 +41,9 @@ def add_parser(sub) -> None:
     options.add_integrator(p, rtol=1e-9, fixed_step=False)
     options.add_model(p)
     p.add_argument("--workers", type=options.positive_int, default=None, metavar="N",
-                   help="threads on this machine (default: every core)")
+                   help="threads on this machine (default: every core; at most 4 per core)")
     p.add_argument("--dask-workers", type=options.positive_int, default=None, metavar="N",
-                   help="start a local Dask cluster of N worker processes")
+                   help="start a local Dask cluster of N worker processes (at most 4 per core)")
     p.add_argument("--scheduler", default=None, metavar="ADDR",
                    help="Dask scheduler address, e.g. tcp://10.0.0.5:8786")
     options.add_out(p, "results/<satellite>/sweep-<axes>[-faithful]")
@@ -73,15 +73,21 @@ def run(args) -> int:
         No grid or more than two, or several of --workers, --dask-workers, --scheduler.
     """
     import math
+    from types import SimpleNamespace
 
+    from tethersim.cli import preflight
     from tethersim.cli.overrides import refuse, refuse_unused
     from tethersim.engine.guards import check_sweep
     from tethersim.experiments.sweep import SweepSpec, run_sweep
     from tethersim.experiments.sweep.analysis import band_slope, class_counts, status_counts
+    from tethersim.experiments.sweep.batch import check_point_size
     from tethersim.experiments.sweep.store import status_names
     from tethersim.model import params
     from tethersim.output.plots.sweep import plot_stability_map
     from tethersim.output.tables import write_table
+
+    # Ctrl-C before the store exists leaves nothing to continue: no hint until then
+    hint, args.interrupted_hint = args.interrupted_hint, ""
     refuse(args, [n for n in params.NAMES if getattr(args, n) is not None],
            lambda n: f"{n} is a sweep axis (--{n}): the grid gives its values; put the "
                      f"values you want in --{n}")
@@ -98,17 +104,28 @@ def run(args) -> int:
     if sum(x is not None for x in (args.workers, args.dask_workers, args.scheduler)) > 1:
         raise options.UsageError("--workers, --dask-workers and --scheduler are alternatives: "
                                  "give one")
+    preflight.check_workers(args, "workers", "dask_workers")
     how = options.integrator(args)
-    # the store runs --faithful at FAITHFUL_STEPS_PER_PERIOD, the one faithful step
-    spec = SweepSpec(sat, tuple(axes), periods=args.periods,
-                     method="faithful" if how.faithful else "adaptive", model=args.model,
-                     rtol=how.rtol)
+    method = "faithful" if how.faithful else "adaptive"
+    # every refusal before the spec (whose points' check takes a while on a large grid),
+    # the folder and the store: a refused sweep leaves nothing that blocks the rerun
+    check_point_size(SimpleNamespace(periods=args.periods, method=method,
+                                     steps_per_period=SweepSpec.steps_per_period,
+                                     samples_per_period=SweepSpec.samples_per_period),
+                     subject="--periods")
+    names = "-".join(n for n, _ in axes)
     out = Path(args.out) if args.out else options.default_out(
-        args, f"sweep-{'-'.join(spec.names)}{'-faithful' if how.faithful else ''}")
+        args, f"sweep-{names}{'-faithful' if how.faithful else ''}")
+    preflight.check_files(out, ("sweep.csv", "stability_map.png", "satellite.json"))
+    preflight.check_subfolder(out, "sweep.zarr")
+    # the store runs --faithful at FAITHFUL_STEPS_PER_PERIOD, the one faithful step
+    spec = SweepSpec(sat, tuple(axes), periods=args.periods, method=method, model=args.model,
+                     rtol=how.rtol, progress=options.progress(args))
     record = options.claim_folder(out, args, sat)
     print(f"{spec.size} runs of {spec.periods:g} orbits "
           f"({how.describe(sat.period, args.periods)}, model {spec.model}) "
           f"-> {out / 'sweep.zarr'}")
+    args.interrupted_hint = hint
     store = run_sweep(spec, out / "sweep.zarr", workers=args.workers,
                       scheduler=args.scheduler, dask_workers=args.dask_workers,
                       restart=args.restart, progress=options.progress(args))
@@ -125,7 +142,7 @@ def run(args) -> int:
         nominal = {n: params.edge_value(sat, n) for n in spec.names}
         written.append(plot_stability_map(ds, out / "stability_map.png", nominal=nominal,
                                           band_slope=slope))
-    written.append(options.write_provenance(out, record))
+    written.append(options.write_provenance(out, record, written))
     for name, n in class_counts(ds).items():
         print(f"  {name:<12} {n}")
     not_ok = {s: n for s, n in status_counts(ds).items() if s != "ok" and n}

@@ -28,7 +28,7 @@ def add_parser(sub) -> None:
     options.add_periods(p, help="orbits per run (default 50)")
     options.add_model(p)
     p.add_argument("--workers", type=options.positive_int, default=None, metavar="N",
-                   help="threads (default: every core)")
+                   help="threads (default: every core; at most 4 per core)")
     options.add_out(p, "results/<satellite>/tuned.toml; a file, not a folder")
     options.add_overrides(p)
     p.set_defaults(func=run)
@@ -62,14 +62,18 @@ def run(args) -> int:
     int
         0.
     """
+    from tethersim.cli import preflight
     from tethersim.experiments.tune import tune
     from tethersim.model.params import from_si, to_si
     from tethersim.model.presets.write import dumps
+    from tethersim.output.files import write_text
 
+    preflight.check_workers(args, "workers")
     sat = options.satellite(args)
     from tethersim.cli.overrides import refuse_unused
     refuse_unused(args, sat, (args.model,))
     out = Path(args.out) if args.out else options.default_out(args, "tuned.toml")
+    preflight.check_file(out)
     record = options.provenance(args, sat)
     origin = " ".join([f"from {record['from']}", *record["overrides"]])
     _check_target(out, origin, args.force)
@@ -97,6 +101,6 @@ def run(args) -> int:
              "c1": f"fastest stable settling (|theta_ss| <= 0.025 rad) over k x base damping, "
                    f"k = {r.damping_factor:.4g}; E2 then re-centred",
              "c2": "same factor as c1"}
-    out.write_text(dumps(t, notes, header=f"{t.name} tuned by {how} {origin}"))
+    write_text(out, dumps(t, notes, header=f"{t.name} tuned by {how} {origin}"))
     print(f"wrote {out}")
     return 0

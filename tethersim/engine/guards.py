@@ -28,8 +28,25 @@ STATE_COLUMNS = 10  # δx δy θ and rates, COM X Y VX VY (generated.layout: N_S
 SWEEP_POINT_BYTES = 9 * 8 + 4 + 8 + 1 + 8
 
 
+# what simulate()'s own guard blames: its arguments; a command names its options instead
+API_SUBJECT = "periods/steps/samples"
+
+
 class SizeLimitError(ValueError):
-    """A request whose output would exceed a stated size limit; the message gives both."""
+    """A request whose output would exceed a stated size limit; the message gives both.
+
+    ``subject`` names what sets the size (``"--periods/--steps"``; simulate()'s own
+    guard: :data:`API_SUBJECT`), ``detail`` the rest of the one-line message, so a
+    command can name its own options (:meth:`naming`).
+    """
+
+    def __init__(self, detail: str, subject: str | None = None):
+        self.detail, self.subject = detail, subject
+        super().__init__(f"{subject}: {detail}" if subject else detail)
+
+    def naming(self, subject: str) -> SizeLimitError:
+        """The same refusal blaming ``subject`` (a command's options)."""
+        return SizeLimitError(self.detail, subject)
 
 
 def _limit(env: str, default: float) -> float:
@@ -106,14 +123,35 @@ def output_rows(periods, steps, method, samples):
     return None if n is None or n < 1 else n + 1
 
 
-def check_simulation(periods, steps=None, method="adaptive", samples=None, check=True) -> None:
-    """Refuse a simulate() request whose output arrays would exceed the limit.
+def metrics_rows(periods, output: float) -> float:
+    """Rows of the adaptive run's metrics grid beside an output of ``output`` rows (0 if none).
+
+    simulate() refines the output grid to at least METRIC_SAMPLES_PER_PERIOD per orbit
+    (``SimResult.fine_t``): 10 output samples of 10^6 orbits hold a 2 x 10^8-row grid.
+    """
+    from tethersim.engine.simulate import METRIC_SAMPLES_PER_PERIOD
+
+    n_out = output - 1
+    refine = max(1, math.ceil(METRIC_SAMPLES_PER_PERIOD * float(periods) / n_out))
+    return 0 if refine == 1 else n_out * refine + 1
+
+
+def check_simulation(periods, steps=None, method="adaptive", samples=None, check=True,
+                     subject: str = API_SUBJECT) -> None:
+    """Refuse a simulate() request whose arrays would exceed the limit.
+
+    Counted: the output (t and the state per row, float64), the adaptive method's
+    metrics grid (refined to 200 samples per orbit), and with ``check`` the finer
+    rerun held beside them (RK4: twice the steps; adaptive: the output grid again).
 
     Parameters
     ----------
     periods, steps, method, samples, check
         As given to :func:`tethersim.engine.simulate.simulate`; malformed values are
         left for simulate's own validation.
+    subject : str, optional
+        What the message blames: simulate()'s arguments by default, a command's
+        options (e.g. ``"--periods/--steps"``) when it checks before any work.
 
     Raises
     ------
@@ -123,20 +161,26 @@ def check_simulation(periods, steps=None, method="adaptive", samples=None, check
     rows = output_rows(periods, steps, method, samples)
     if rows is None:
         return
-    # t and the state per row, float64; the convergence check holds a second run
-    # (RK4: twice the steps) alongside the first
-    runs = 1 + (2 if method == "rk4" else 1) * bool(check)
-    need = rows * (1 + STATE_COLUMNS) * 8 * runs
+    fine = 0 if method == "rk4" else metrics_rows(periods, rows)
+    # the convergence check holds a second run beside the first (RK4: twice the steps;
+    # adaptive: the output grid, unrefined)
+    rerun = (2 * rows - 1 if method == "rk4" else rows) if check else 0
+    row_bytes = (1 + STATE_COLUMNS) * 8
+    need = (rows + fine + rerun) * row_bytes
     limit = _limit("TETHERSIM_MAX_OUTPUT_BYTES", DEFAULT_OUTPUT_BYTES)
     if need > limit:
         what = "steps" if method == "rk4" else "output samples"
-        hint = ("fewer --steps or --periods, or the adaptive method, whose --steps sets only the "
-                "output samples" if method == "rk4" else "fewer --steps (output samples) or --periods")
-        check_note = f", x{runs} with the convergence check" if runs > 1 else ""
+        parts = [f"{rows - 1:.6g} {what}"]
+        if fine:
+            parts.append(f"a metrics grid of {fine - 1:.6g} samples (200 per orbit)")
+        if rerun:
+            parts.append(f"the convergence check's rerun of {rerun - 1:.6g} {what}")
+        hint = ("fewer steps, a shorter run or the adaptive method" if method == "rk4"
+                else "a shorter run" if fine else "fewer output samples or a shorter run")
         raise SizeLimitError(
-            f"--steps/--periods: {rows - 1:.6g} {what} need about {human(need)} of output memory "
-            f"(t and {STATE_COLUMNS} states x 8 bytes{check_note}); "
-            f"allowed at most {human(limit)} (TETHERSIM_MAX_OUTPUT_BYTES): use {hint}")
+            f"{' + '.join(parts)} need about {human(need)} of memory "
+            f"(t and {STATE_COLUMNS} states x 8 bytes each); allowed at most {human(limit)} "
+            f"(TETHERSIM_MAX_OUTPUT_BYTES): use {hint}", subject)
 
 
 def check_sweep(shape, names=()) -> None:

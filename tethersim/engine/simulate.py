@@ -33,9 +33,17 @@ SAMPLES_PER_PERIOD = 200  # adaptive output grid when no steps are given
 # metrics grid: 26.5 s at 200 km, below half the fastest tether period (~70 s) and far
 # below the pitch libration's (~3100 s); the output grid is refined to at least this
 METRIC_SAMPLES_PER_PERIOD = 200
-CHUNKS = 100  # progress-bar granularity (and how often Ctrl-C is seen)
-# progress=None: a run whose first chunk projects a total under this finishes in one
-# call (its bar, delayed by a second, would never show; the pauses cost ~10 %)
+CHUNKS = 100  # at least this many pauses in a long run: the progress bar's granularity
+# The compiled loops see neither Ctrl-C nor the bar: Python does, between two calls.  A
+# call lasts at most about PAUSE_S of wall time, whatever the run's length (a 50,000-orbit
+# run used to pause every 500 orbits), so Ctrl-C stops a run within a fraction of a second.
+PAUSE_S = 0.2
+# RK4 pauses every RK4_PAUSE_STEPS steps (~0.1-0.25 s on one core for the planar to the
+# 3-D free-orbit loops), with or without a bar: a fixed count, so the pauses are the same
+# on every machine (the step times (k0 + k) h do not depend on them either)
+RK4_PAUSE_STEPS = 50_000
+# a DOP853 run whose first call projects a total under this finishes in one more call
+# (its bar, delayed by a second, would never show)
 QUICK_RUN_S = 0.5
 # ~2500x a nominal run (steps of ~5 ms): a spinning-up run fails in about a minute, not an
 # hour; no tether of this model's scale (N/mm^2 x 1 mm^2) needs more
@@ -254,6 +262,12 @@ def _bar(total, desc, progress):
                 bar_format="{l_bar}{bar}| {n:.1f}/{total:.1f} orbits [{elapsed}<{remaining}]")
 
 
+def _advance(bar, orbits: float) -> None:
+    """Move the bar to ``orbits`` done, never past its total: the chunks' float sums
+    overshoot it by an ulp or so, and tqdm then warns 'clamping frac'."""
+    bar.update(max(0.0, min(orbits, bar.total) - bar.n))
+
+
 def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
     m, air = _kernel_args(sat, model, periods * sat.period)
     p = parameter_vector(sat, model)
@@ -272,7 +286,7 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
     row, switches, status = 1, 0, "ok"
     message = ""
     t0 = time.perf_counter()
-    chunk = steps if progress is False else max(1, steps // CHUNKS)
+    chunk = min(steps, RK4_PAUSE_STEPS)  # the same pauses with or without a bar
     done = 0
     # this model's compiled loop, chosen (compiled or loaded) once, before the bar
     # starts: its rate, hence its ETA, then counts integration only
@@ -282,15 +296,12 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
         try:
             while done < steps:
                 n = min(chunk, steps - done)
-                t_call = time.perf_counter()
                 rows, sw, st = loop(m, air, done, y, h, n, 1, p, pw, locate, out_t,
                                     out_y, row)
-                if progress is None and (time.perf_counter() - t_call) * steps < QUICK_RUN_S * n:
-                    chunk = steps
                 row += rows
                 switches += sw
                 done += n
-                bar.update(n * h / sat.period)
+                _advance(bar, done * h / sat.period)
                 if st != 0:
                     status = "diverged"
                     message = (f"state became non-finite near t = {out_t[row - 1]:.6g} s: the "
@@ -329,7 +340,7 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
     out_y = np.full((out_t.size, state_size(m)), np.nan)
     out_y[0] = y
     counters = np.zeros(5, dtype=np.int64)
-    t, h, i_out, status, message = 0.0, 0.0, 1, "ok", ""
+    t, h, i_out, status, message, calls = 0.0, 0.0, 1, "ok", "", 0
     max_steps = int(MAX_STEPS_PER_PERIOD * periods)
     # this model's compiled loop, chosen (compiled or loaded) once, before the bar
     # starts: its rate, hence its ETA, then counts integration only
@@ -338,17 +349,20 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
     t0 = time.perf_counter()
     with _bar(periods, f"{sat.name} DOP853", progress) as bar:
         try:
-            # pauses for the bar; they do not change the steps (dop853_run's t_pause).
-            # A free orbit pauses too, to stop soon after a re-entry (domain.py)
+            # pauses for Ctrl-C and the bar; they do not change the steps (dop853_run's
+            # t_pause), at whatever times they fall.  A free orbit pauses at least CHUNKS
+            # times, to stop soon after a re-entry (domain.py)
             free = not has_com_orbit(m)
-            chunks = 1 if progress is False and not free else CHUNKS
-            t_pause = 0.0
-            for k in range(1, chunks + 1):
-                t_pause = math.inf if (k == chunks or t_pause == math.inf) else t_end * k / chunks
+            span = min(t_end / CHUNKS, sat.period)  # the first call: the loop's speed
+            t_pause = span
+            while True:
                 t_prev, t_call = t, time.perf_counter()
+                # the step budget is the whole run's, however many calls it takes
                 t, h, i_out, st = loop(m, air, t, t_end, y, h, p, pw, rtol, atol, locate,
-                                       out_t, out_y, i_out, max_steps, counters, t_pause)
-                bar.update((t - t_prev) / sat.period)
+                                       out_t, out_y, i_out, max_steps - int(counters[4]),
+                                       counters, t_pause)
+                calls += 1
+                _advance(bar, t / sat.period)
                 if st != STATUS_OK:
                     status = "diverged" if st == 1 else "failed"
                     message = {1: "state became non-finite", 2: "step size became too small",
@@ -356,21 +370,31 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
                     break
                 if free and below_reentry(sat, model, out_y[i_out - 1]):
                     break  # _within_domain finds the crossing and sets the status
-                if t_pause == math.inf:
+                if t >= t_end:
                     break
-                elapsed = time.perf_counter() - t_call
-                if (progress is None and not free
-                        and elapsed * t_end < QUICK_RUN_S * (t - t_prev)):
+                rate = (t - t_prev) / max(time.perf_counter() - t_call, 1e-9)  # sim s per s
+                if not free and rate * QUICK_RUN_S >= t_end - t:
                     t_pause = math.inf
+                else:
+                    span = min(t_end / CHUNKS, 10.0 * span, rate * PAUSE_S)
+                    # a span below t's resolution would make no step: run to the end
+                    t_pause = t + span if t + span > t else math.inf
         except KeyboardInterrupt:
             status, message = "interrupted", f"interrupted at t = {t:.6g} s"
-    fine_t, fine_y = out_t[:i_out].copy(), out_y[:i_out].copy()
-    keep = slice(None, None, refine)
-    return SimResult(sat, model, "adaptive", fine_t[keep].copy(), fine_y[keep].copy(),
+    # one copy of the rows written (none for a whole run): an interrupted long run's
+    # millions of rows were copied twice, seconds between Ctrl-C and the first file
+    fine_t, fine_y = ((out_t, out_y) if i_out == out_t.size
+                      else (out_t[:i_out].copy(), out_y[:i_out].copy()))
+    t_out, y_out = ((fine_t, fine_y) if refine == 1
+                    else (fine_t[::refine].copy(), fine_y[::refine].copy()))
+    return SimResult(sat, model, "adaptive", t_out, y_out,
                      fine_t=fine_t if refine > 1 else None,
                      fine_states=fine_y if refine > 1 else None,
                      periods=periods,
-                     rtol=rtol, atol=atol, locate_switches=locate, nfev=int(counters[0]),
+                     rtol=rtol, atol=atol, locate_switches=locate,
+                     # each resumed call evaluates f at its start again, a value the step
+                     # before it had (FSAL): not counted, so nfev is the run's, not the pauses'
+                     nfev=int(counters[0]) - max(calls - 1, 0),
                      n_accepted=int(counters[1]), n_rejected=int(counters[2]),
                      n_switches=int(counters[3]), status=status, message=message,
                      wall_time=time.perf_counter() - t0)

@@ -119,11 +119,25 @@ class FeasibilitySpec:
                              f"{', '.join(SOLAR_CASES)} (one or more)")
         if not (self.max_lifetime_h > 0 and math.isfinite(self.max_lifetime_h)):
             raise ValueError(f"max_lifetime_h = {self.max_lifetime_h!r}: must be > 0 h")
+        self._check_sizes()
         for h in self.altitudes_km:  # every point a valid satellite, before any run
             for a3 in self.areas:
                 self.circular(h, a3)
                 for case in (None, *self.solar):
                     self.free(h, a3, case)
+
+    def _check_sizes(self) -> None:
+        """Refuse runs whose arrays would not fit (engine/guards.py), before any point runs:
+        the circular runs of ``periods`` and the free runs of ``max_lifetime_h``, counted
+        at the lowest altitude (the shortest orbit, so the most orbits)."""
+        from tethersim.engine.guards import check_simulation
+        from tethersim.model.constants import MU_EARTH, R_EARTH
+        check_simulation(self.periods, check=False, subject="periods")
+        lowest = min(self.altitudes_km, default=math.nan) * 1e3
+        if lowest > -R_EARTH:  # else the satellite's own check names the altitude
+            period = 2 * math.pi * math.sqrt((R_EARTH + lowest) ** 3 / MU_EARTH)
+            check_simulation(self.max_lifetime_h * 3600 / period, check=False,
+                             subject="max_lifetime_h")
 
     def runs_per_point(self) -> int:
         """Simulations of one point: free, nominal and trims at two tolerances, the MSIS

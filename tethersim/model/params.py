@@ -90,6 +90,7 @@ NAMES = tuple(EDGE_UNITS)
 INITIAL_EDGE_UNITS = {k: (unit, si) for k, (unit, _, si) in INITIAL_3D_KEYS.items()}
 _ALL_UNITS = {**EDGE_UNITS, **INITIAL_EDGE_UNITS}
 MAX_GRID = 1_000_000
+SHOWN_DIGITS = 12  # significant digits of a printed value (edge_text): no float noise
 
 
 def check_name(name: str) -> str:
@@ -146,6 +147,26 @@ def edge_value(sat: Satellite, name: str) -> float:
         return from_si(name, sat.initial_3d.get(INITIAL_3D_KEYS[name][1], 0.0))
     v = getattr(sat, name)
     return math.nan if v is None else from_si(name, v)
+
+
+def edge_text(sat: Satellite, name: str) -> str:
+    """The satellite's value of ``name`` in edge units as short text (``nan`` if unset).
+
+    The shortest text of at most :data:`SHOWN_DIGITS` significant digits that converts
+    back to the same SI value, so it fed back through ``--set NAME=TEXT`` gives the same
+    satellite; a value that has no such text (a product of ``--scale``: 0.0423 x 100 is
+    4.2299999999999995) is rounded to that many digits, within 5e-13 relative.
+    """
+    v = edge_value(sat, name)
+    if not math.isfinite(v):
+        return repr(v)
+    si = (sat.initial_3d.get(INITIAL_3D_KEYS[name][1], 0.0) if name in INITIAL_3D_KEYS
+          else getattr(sat, name))
+    for digits in range(1, SHOWN_DIGITS):
+        if to_si(name, float(f"{v:.{digits}g}")) == si:
+            break
+    # through float and 15 digits: 10, not the 1e+01 of .1g; a short value prints as is
+    return f"{float(f'{v:.{digits}g}'):.15g}"
 
 
 def with_values(sat: Satellite, values: dict) -> Satellite:
@@ -224,10 +245,18 @@ def parse_assignment(text: str, option: str = "--set") -> tuple:
     try:
         return name, _float(value.strip(), f"{option} {_shown(text)}")
     except ValueError as exc:  # say what a good value looks like
+        raise ValueError(f"{exc} (expected {_expected(name, option)})") from None
+
+
+def _expected(name: str, option: str) -> str:
+    """What a good ``option NAME=VALUE`` value is: a factor, or the name's unit and range
+    (the plausible range of :data:`PARAMETERS`; the 3-D start has none, any finite value)."""
+    if option == "--scale":
+        return "a factor"
+    if name in PARAMETERS:
         p = PARAMETERS[name]
-        expected = ("a factor" if option == "--scale" else
-                    f"{name} in {p.unit}, plausible range {p.low:g}..{p.high:g}")
-        raise ValueError(f"{exc} (expected {expected})") from None
+        return f"{name} in {p.unit}, plausible range {p.low:g}..{p.high:g}"
+    return f"{name} in {_ALL_UNITS[name][0]}, a finite number"
 
 
 def apply_overrides(sat: Satellite, sets=(), scales=()) -> Satellite:

@@ -13,6 +13,8 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from tethersim.output.files import write_text
+
 FACTS_SOURCE = "docs/sources.md, The thesis: what survives"
 _ZERO = re.compile(r"^[+-]?(0(\.0*)?|—|nan|none|)( of \d+)?( ?%)?$", re.I)
 CSS = ("*{box-sizing:border-box}"
@@ -128,5 +130,4 @@ def write_html(page: Page) -> Path:
            f"<th>agrees</th><th>why / notes</th></tr>{facts}</table><ul>{toc}</ul>{secs}"
            f"<p class='note'>Section wall times: {timing}.</p></body></html>")
     path = page.out / "index.html"
-    path.write_text(doc, encoding="utf-8")
-    return path
+    return write_text(path, doc)

@@ -20,6 +20,7 @@ from pathlib import Path
 import numpy as np
 
 from tethersim.engine.result import SimResult
+from tethersim.output.files import replacing
 
 ORBIT_COLUMNS = ("X", "Y", "VX", "VY")
 ORBIT_UNITS = ("m", "m", "m/s", "m/s")
@@ -65,7 +66,7 @@ def write_table(path, rows, columns) -> Path:
     ['settling time [h],stable', '0.1,true']
     """
     path = Path(path)
-    with path.open("w", newline="") as fh:
+    with replacing(path) as tmp, tmp.open("w", newline="") as fh:  # complete or absent
         w = csv.writer(fh)
         w.writerow([header for _, header in columns])
         for r in rows:
@@ -223,7 +224,7 @@ def write_netcdf(res: SimResult, path, attrs: dict | None = None) -> Path:
             raise TypeError(f"attrs[{k!r}] = {v!r:.40}: a netCDF attribute is a str key with a "
                             f"str, int, float or bool value")
     columns, meta = _series(res, attrs)
-    with netcdf_file(path, "w", version=2) as f:
+    with replacing(path) as tmp, netcdf_file(tmp, "w", version=2) as f:
         f.createDimension("t", columns[0][1].size)
         for name, values, units in columns:
             var = f.createVariable(name, "d", ("t",))

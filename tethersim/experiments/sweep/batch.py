@@ -25,7 +25,7 @@ from tethersim.analysis.metrics import SS_FRACTION, PitchMetrics
 from tethersim.analysis.metrics_kernel import sums_match_numpy
 from tethersim.engine.domain import MAX_STRETCH, reach
 from tethersim.engine.dynamics import has_com_orbit, initial_state
-from tethersim.engine.guards import check_simulation
+from tethersim.engine.guards import API_SUBJECT, check_simulation
 from tethersim.engine.integrators.select import specialised
 from tethersim.engine.linearise import rk4_amplifications
 from tethersim.engine.simulate import (
@@ -76,6 +76,33 @@ def run_block(spec: SweepSpec, ks: list) -> list:
     return [(k, records[i] if i in records else run_point(spec, k)) for i, k in enumerate(ks)]
 
 
+def _sizes(spec: SweepSpec) -> tuple:
+    """(RK4 steps, adaptive output samples) of one point of ``spec``."""
+    return (max(1, round(spec.steps_per_period * spec.periods)),
+            max(2, round(spec.samples_per_period * spec.periods)))
+
+
+def check_point_size(spec, subject: str = API_SUBJECT) -> None:
+    """Refuse a sweep whose every point's arrays would exceed the output limit
+    (engine/guards.py: the output and the 200-per-orbit metrics grid), before any store
+    or run.
+
+    Parameters
+    ----------
+    spec : SweepSpec or object
+        Anything with the spec's ``periods``, ``method``, ``steps_per_period`` and
+        ``samples_per_period`` (the command checks before building the spec, whose
+        points' validation takes a while on a large grid).
+    subject : str, optional
+        What the message blames (a command: ``"--periods"``).
+    """
+    n_steps, n_out = _sizes(spec)
+    faithful = spec.method == "faithful"
+    check_simulation(float(spec.periods), n_steps if faithful else None,
+                     "rk4" if faithful else "adaptive", None if faithful else n_out, False,
+                     subject=subject)
+
+
 def _grid(t_end: float, n_out: int, refine: int, cache: dict) -> np.ndarray:
     key = (t_end, n_out, refine)
     if key not in cache:  # one grid for every point of the same orbit
@@ -93,11 +120,8 @@ def _compiled(sats: list, spec: SweepSpec) -> list:
     P = np.stack([parameter_vector(s, spec.model) for s in sats])
     Y0 = np.stack([initial_state(m, initial_model_state(s, spec.model), s.r0, s.r0 * s.omega)
                    for s in sats])
-    n_steps = max(1, round(spec.steps_per_period * spec.periods))
-    n_out = max(2, round(spec.samples_per_period * spec.periods))
-    # the output-size guard simulate() applies to each point (engine/guards.py)
-    check_simulation(periods, n_steps if faithful else None, "rk4" if faithful else "adaptive",
-                     None if faithful else n_out, False)
+    n_steps, n_out = _sizes(spec)
+    check_point_size(spec)  # the output-size guard simulate() applies to each point
     if faithful:  # simulate._run_rk4: every step is a sample
         span = np.array([periods * s.period / n_steps for s in sats])
         T = np.empty((1, n_steps + 1))  # the RK4 loop writes its own times

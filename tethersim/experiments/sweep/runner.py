@@ -32,13 +32,13 @@ class SweepInterrupted(KeyboardInterrupt):
     """Ctrl-C or SIGTERM during a sweep; everything finished was written.
 
     A :class:`KeyboardInterrupt` (``except Exception`` lets it through, as it does a
-    plain Ctrl-C) that names the store and how to resume.
+    plain Ctrl-C) that names the store and that it resumes (the command line adds how).
     """
 
     def __init__(self, store: SweepStore):
         n = int(store.done.sum())
         super().__init__(f"sweep interrupted: {n} of {store.done.size} points are in {store.path}; "
-                         f"run the same command again to resume")
+                         f"the same sweep resumes from them")
         self.store = store
 
 
@@ -152,6 +152,8 @@ def run_sweep(spec: SweepSpec, out, *, workers: int | None = None, scheduler: st
     >>> int(ds.done.sum())
     2
     """
+    from tethersim.experiments.sweep.batch import check_point_size
+    check_point_size(spec)  # a run that cannot fit is refused before the store exists
     store = SweepStore(out, spec, restart=restart)  # takes the store's writer lock
     try:
         return _fill(store, spec, workers, scheduler, dask_workers, progress, block, stop_after)

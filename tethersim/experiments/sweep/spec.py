@@ -7,9 +7,10 @@ it continues the same computation.
 """
 from __future__ import annotations
 
+import itertools
 import json
 import math
-from dataclasses import dataclass, field
+from dataclasses import InitVar, dataclass, field
 
 import numpy as np
 
@@ -59,6 +60,9 @@ class SweepSpec:
         RK4 steps and adaptive output samples per orbit.
     tol : float
         Settling band [rad].
+    progress : bool or None
+        Init only: a progress bar while the points are checked (None: if that takes
+        over a second, as a million-point grid does; False: never).
     names : tuple
         The axis names, in order.
     """
@@ -72,9 +76,10 @@ class SweepSpec:
     steps_per_period: int = FAITHFUL_STEPS_PER_PERIOD
     samples_per_period: int = SAMPLES_PER_PERIOD
     tol: float = SETTLING_TOL
+    progress: InitVar[bool | None] = None
     names: tuple = field(init=False)
 
-    def __post_init__(self):
+    def __post_init__(self, progress=None):
         if not isinstance(self.satellite, Satellite):
             raise TypeError("satellite must be a tethersim Satellite")
         if not isinstance(self.axes, (tuple, list)) or not all(
@@ -120,7 +125,7 @@ class SweepSpec:
                 raise ValueError(f"{key} = {v!r}: must be an integer in 1..{hi}")
         from tethersim.engine.guards import check_sweep  # before validating (or allocating) 10^12 points
         check_sweep([len(v) for _, v in axes], names)
-        self.check_points()
+        self.check_points(progress)
 
     # --- the grid --------------------------------------------------------------
     @property
@@ -140,14 +145,40 @@ class SweepSpec:
     def satellite_at(self, k: int) -> Satellite:
         return params.with_values(self.satellite, self.values_at(k))
 
-    def check_points(self) -> None:
-        """Every grid point must be a valid satellite: fail before any run, naming it."""
-        for k in range(self.size):
-            try:
-                self.satellite_at(k)
-            except SatelliteError as exc:
-                where = ", ".join(f"{n} = {v:g} {params.unit(n)}" for n, v in self.values_at(k).items())
-                raise SatelliteError(f"sweep point {where} is not a valid satellite: {exc}") from None
+    def check_points(self, progress: bool | None = None) -> None:
+        """Every grid point must be a valid satellite: fail before any run, naming it.
+
+        Every combination is built: the satellite's checks relate parameters (the COM
+        on the boom, the plausibility of pairs), so the axes' values alone do not decide.
+        About 40 us a point: a million-point grid takes most of a minute, so a bar shows
+        it (``progress``: None when it takes over a second, False never); Ctrl-C or
+        SIGTERM stop it at once (nothing was written).
+        """
+        from tqdm.auto import tqdm
+
+        # the grid's corners first: a range that leaves the allowed values mostly does so
+        # at an end, and is then refused at once rather than after the bar
+        corners = sorted({int(np.ravel_multi_index(c, self.shape))
+                          for c in itertools.product(*[(0, n - 1) for n in self.shape])})
+        for k in corners:
+            self._check_point(k)
+        step = 1000  # points per bar update: the bar costs nothing beside the checks
+        with tqdm(total=self.size, desc="checking sweep points", unit="point",
+                  delay=0.0 if progress else 1.0, disable=progress is False,
+                  leave=False) as bar:
+            for k in range(self.size):
+                self._check_point(k)
+                if k % step == step - 1:
+                    bar.update(step)
+
+    def _check_point(self, k: int) -> None:
+        try:
+            self.satellite_at(k)
+        except SatelliteError as exc:
+            where = ", ".join(f"{n} = {v:g} {params.unit(n)}"
+                              for n, v in self.values_at(k).items())
+            raise SatelliteError(f"sweep point {where} is not a valid satellite: "
+                                 f"{exc}") from None
 
     # --- plain-data form (store attributes, Dask) -------------------------------
     def to_json(self) -> str:
@@ -165,4 +196,7 @@ class SweepSpec:
         d = json.loads(text)
         sat = d.pop("satellite")
         sat["initial"] = tuple(sat["initial"])
-        return cls(satellite=Satellite(**sat), axes=tuple((n, v) for n, v in d.pop("axes")), **d)
+        # a worker's (or a store's) copy checks its points without a bar: the command
+        # that made the spec showed one
+        return cls(satellite=Satellite(**sat), axes=tuple((n, v) for n, v in d.pop("axes")),
+                   progress=False, **d)

@@ -42,8 +42,10 @@ def _epoch(value) -> np.datetime64:
     except (TypeError, ValueError):
         raise ValueError(f"epoch {value!r} is not an ISO date-time "
                          f"(e.g. '2017-06-23T00:00:00', UTC)") from None
-    if np.isnat(e):
-        raise ValueError(f"epoch {value!r} is not an ISO date-time (UTC)")
+    # numpy reads any digit string as a year, and wraps one past int64 (400 nines -> year -1)
+    year = int(e.astype("datetime64[Y]").astype(np.int64)) + 1970 if not np.isnat(e) else 0
+    if not 1 <= year <= 9999:
+        raise ValueError(f"epoch {value!r} is not an ISO date-time (UTC, years 0001..9999)")
     return e
 
 

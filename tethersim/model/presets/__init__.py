@@ -197,9 +197,13 @@ def load(path, allow_implausible: bool = False) -> Satellite:
     """
     path = Path(path)
     try:
-        text = path.read_text()
+        text = path.read_text(encoding="utf-8")  # TOML is UTF-8 whatever the locale
     except OSError as exc:
         raise SatelliteError(f"{path}: cannot read: {exc.strerror}") from None
+    except UnicodeDecodeError as exc:  # a binary or Latin-1 file: say which, and where
+        raise SatelliteError(f"{path}: not a TOML text file: byte {exc.object[exc.start]:#04x} "
+                             f"at offset {exc.start} is not UTF-8 (TOML files are UTF-8 text)"
+                             ) from None
     try:
         doc = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:

@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from tethersim.experiments.compare import theta_difference
+from tethersim.output.files import save_figure
 from tethersim.output.plots.run import FAST_PNG, PANELS, _hours_on_top
 
 STYLES = ("-", "--", "-.", ":")
@@ -76,6 +77,6 @@ def plot_compare(results, out_dir, name: str = "compare.png", title: str = "") -
     title = "\n".join(textwrap.fill(line, 120) for line in title.splitlines())
     fig.suptitle(title, fontsize=9)
     path = out_dir / name
-    fig.savefig(path, dpi=110, pil_kwargs=FAST_PNG)
+    save_figure(fig, path, dpi=110, pil_kwargs=FAST_PNG)
     plt.close(fig)
     return path

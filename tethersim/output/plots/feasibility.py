@@ -5,6 +5,7 @@ import math
 from pathlib import Path
 
 from tethersim.analysis.feasibility import SENSITIVE, VERDICT_COLORS, VERDICTS
+from tethersim.output.files import save_figure
 
 _MARKERS = {SENSITIVE: "D"}
 
@@ -86,6 +87,6 @@ def plot_feasibility(rows, path, title: str = "") -> Path:
     ax.set_title(title or "Does the design work in a real orbit?", fontsize=10)
     fig.tight_layout()
     path = Path(path)
-    fig.savefig(path, dpi=110)
+    save_figure(fig, path, dpi=110)
     plt.close(fig)
     return path

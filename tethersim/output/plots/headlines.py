@@ -13,6 +13,7 @@ from pathlib import Path
 import numpy as np
 
 from tethersim.analysis.classify import CLASS_COLORS, CLASSES
+from tethersim.output.files import replacing
 
 DPI = 90
 STYLE = {"dop853": {"color": "k", "lw": 2.2, "alpha": 0.55, "label": "DOP853 (converged)"},
@@ -51,9 +52,9 @@ def _save(fig, path) -> Path:
     plt.close(fig)
     buf.seek(0)
     path = Path(path)
-    with Image.open(buf) as im:
+    with Image.open(buf) as im, replacing(path) as tmp:
         im.convert("RGB").quantize(colors=256, method=Image.Quantize.MEDIANCUT).save(
-            path, optimize=True)
+            tmp, optimize=True)
     return path
 
 

@@ -5,6 +5,8 @@ from pathlib import Path
 
 import numpy as np
 
+from tethersim.output.files import save_figure
+
 
 def plot_roll_responses(responses: dict, path, title: str = "") -> Path:
     """Draw roll φ and yaw ψ [deg] against time [orbits] and save a PNG.
@@ -59,6 +61,6 @@ def plot_roll_responses(responses: dict, path, title: str = "") -> Path:
     fig.tight_layout()
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=110, pil_kwargs=FAST_PNG)
+    save_figure(fig, path, dpi=110, pil_kwargs=FAST_PNG)
     plt.close(fig)
     return path

@@ -18,6 +18,7 @@ import numpy as np
 from tethersim.analysis.metrics import SETTLING_TOL
 from tethersim.analysis.outcome import outcome
 from tethersim.engine.result import SimResult
+from tethersim.output.files import save_figure
 
 FAST_PNG = {"compress_level": 1}  # zlib level 1: a third of the encode time, ~1.3x the bytes
 PANELS = (("theta", "pitch θ [rad]"), ("x", "balloon δx [m] (+x: wake)"),
@@ -151,14 +152,14 @@ def plot_result(res: SimResult, out_dir, prefix: str = "") -> list:
         ax.set_title(f"{res.satellite.name}: {label.split(' [')[0]}\n{res.label}", fontsize=9)
         name = FILE_NAMES[attr]
         p = out_dir / f"{prefix}{name}.png"
-        fig.savefig(p, dpi=120, pil_kwargs=FAST_PNG)
+        save_figure(fig, p, dpi=120, pil_kwargs=FAST_PNG)
         plt.close(fig)
         paths.append(p)
     _hours_on_top(axes[0], period)
     axes[-1].set_xlabel("time [orbits]")
     fig_all.suptitle(res.label, fontsize=9)
     p = out_dir / f"{prefix}overview.png"
-    fig_all.savefig(p, dpi=110, pil_kwargs=FAST_PNG)
+    save_figure(fig_all, p, dpi=110, pil_kwargs=FAST_PNG)
     plt.close(fig_all)
     paths.append(p)
     if res.layout.orbit == "free":

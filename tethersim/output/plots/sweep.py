@@ -16,6 +16,7 @@ import numpy as np
 from tethersim.analysis.classify import CLASS_COLORS, CLASSES, STABLE
 from tethersim.analysis.metrics import SETTLING_TOL
 from tethersim.experiments.sweep.store import status_names
+from tethersim.output.files import save_figure
 from tethersim.output.plots.run import FAST_PNG
 
 # a marker per status other than ok (tethersim.engine.result.STATUSES) on the class map
@@ -151,6 +152,6 @@ def plot_stability_map(ds, path, *, title: str = "", nominal: dict | None = None
               facecolor="0.85", ncol=4)
     ax.set_title(title or ds.attrs.get("title", ""), fontsize=9)
     path = Path(path)
-    fig.savefig(path, dpi=110, pil_kwargs=FAST_PNG)
+    save_figure(fig, path, dpi=110, pil_kwargs=FAST_PNG)
     plt.close(fig)
     return path
