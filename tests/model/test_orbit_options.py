@@ -48,7 +48,7 @@ def test_density_scale_multiplies_the_uniform_density():
     (dict(atmosphere="jacchia"), r"atmosphere = 'jacchia': allowed values vallado, nrlmsise00$"),
     (dict(atmosphere="nrlmsise00", f107=30, f107a=150, ap=4), r"f107 = 30 sfu is outside"),
     (dict(atmosphere="nrlmsise00", f107=150), r"give all three"),
-    (dict(epoch="yesterday"), r"epoch 'yesterday' is not an ISO date-time"),
+    (dict(epoch="yesterday"), r"epoch = 'yesterday': must be an ISO date"),
     (dict(atmosphere="nrlmsise00", epoch="2040-01-01"), r"outside the bundled space-weather"),
     (dict(density_scale=0.0), r"density_scale = 0: allowed range 0.01..100$"),
     (dict(density_mode="per-body", atmosphere="nrlmsise00", altitude=80.05e3, f107=150.0,

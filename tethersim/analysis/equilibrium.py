@@ -170,6 +170,9 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     >>> eq3.coordinates["phi"], eq3.neutral, eq3.stable  # yaw about the boom: neutral
     (0.0, 2, True)
     """
+    if not isinstance(sat, Satellite):
+        raise TypeError(f"sat must be a tethersim Satellite (load_preset/load), got "
+                        f"{type(sat).__name__}")
     mdl = get_model(model, CIRCULAR, "find_equilibrium")
     if sat.orbit != "circular":
         # the free orbit's r, ν never stand still: the circular answer would be a
@@ -185,6 +188,7 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
                             "it away and there is no equilibrium; allowed range for an "
                             "equilibrium: E1 > 0 or E2 > 0")
     p = parameter_vector(sat, model)
+    guess = _checked_guess(guess, n)
     if guess is not None and len(guess) == n:
         g = np.array(guess, float)
     else:
@@ -211,6 +215,9 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     res = float(np.max(np.abs(f(q))))
     if not sol.success and res > RESIDUAL_TOL:
         why = " ".join(str(sol.message).split())  # scipy's message spans lines
+        if sat.CD == 0:  # the trailing equilibrium is drag against the tethers' pull
+            why = ("CD = 0: without drag nothing holds the balloon trailing in the wake, so "
+                   "there is no trailing equilibrium to find (" + why + ")")
         raise NoEquilibrium(f"no equilibrium found from guess {tuple(float(x) for x in g)}: {why} "
                            f"(residual {res:.3g})")
     i_th = names.index("theta")
@@ -225,6 +232,20 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     return Equilibrium(sat, model, coords["delta_x"], coords["delta_y"], coords["theta"],
                        (bool(lam1 > sat.l10), bool(lam2 > sat.l20)), res, ev,
                        coords if n > 3 else {}, state_violation(sat, model, y))
+
+
+def _checked_guess(guess, n: int):
+    """``guess`` as a tuple of 3 (δx, δy, θ) or ``n`` (every coordinate) finite floats."""
+    if guess is None:
+        return None
+    sizes = "3 (delta_x, delta_y, theta)" + (f" or {n} (every coordinate)" if n != 3 else "")
+    try:
+        g = np.asarray(guess, dtype=float)
+    except (TypeError, ValueError):
+        g = None
+    if g is None or g.ndim != 1 or g.size not in (3, n) or not np.all(np.isfinite(g)):
+        raise ValueError(f"guess = {guess!r:.60}: must be {sizes} finite numbers")
+    return tuple(float(x) for x in g)
 
 
 def format_equilibrium(eq: Equilibrium) -> str:

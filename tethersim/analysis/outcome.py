@@ -192,6 +192,8 @@ def outcome(res: SimResult, tol: float = SETTLING_TOL, forces: bool = True) -> O
     >>> ts.outcome(res).status
     'ok'
     """
+    if not isinstance(res, SimResult):
+        raise TypeError(f"res must be a SimResult (from simulate), got {type(res).__name__}")
     check_tol(tol)
     if res.fine_t is not None:  # metrics on the metrics grid, not the output sampling
         res = replace(res, t=res.fine_t, states=res.fine_states, fine_t=None, fine_states=None)

@@ -62,6 +62,8 @@ def run(args) -> int:
 
     models = options.models(args)  # before the runs: a bad name costs nothing
     sat = options.satellite(args)
+    from tethersim.cli.overrides import refuse_unused
+    refuse_unused(args, sat, models)  # a setting no variant uses would change nothing
     how = options.integrator(args)
     out = Path(args.out) if args.out else options.default_out(args, "compare")
     preflight.check_run_size(args, how, "--periods/--steps", check=True)

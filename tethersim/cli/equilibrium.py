@@ -37,6 +37,8 @@ def run(args) -> int:
         0.
     """
     from tethersim.analysis.equilibrium import find_equilibrium, format_equilibrium
-
-    print(format_equilibrium(find_equilibrium(options.satellite(args), model=args.model)))
+    from tethersim.cli.overrides import refuse_unused
+    sat = options.satellite(args)
+    refuse_unused(args, sat, (args.model,))
+    print(format_equilibrium(find_equilibrium(sat, model=args.model)))
     return 0

@@ -80,6 +80,14 @@ def run(args) -> int:
                                  f"model; it runs the trim on the held circular orbit and the "
                                  f"lifetime with the model's free twin")
     preflight.check_workers(args, "workers")
+    from tethersim.cli.overrides import refuse
+    from tethersim.experiments.feasibility import ATLAS_FIELDS
+    refuse(args, ("altitude", "A3") if args.A3 else ("altitude",),
+           lambda n: f"the atlas sets {n} per point from --{n}: give the values there")
+    refuse(args, [{"density_mode": "density"}.get(f, f) for f in ATLAS_FIELDS],
+           lambda n: f"the atlas sets {n} itself (circular orbit in uniform Vallado air scaled "
+                     f"per solar case; free orbit in per-body Vallado and NRLMSISE-00 air): "
+                     f"drop it")
     sat = options.satellite(args)
     altitudes = tuple(float(v) for v in params.parse_grid("altitude", args.altitude))
     areas = (tuple(float(v) for v in params.parse_grid("A3", args.A3)) if args.A3 else ())

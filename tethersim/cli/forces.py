@@ -62,6 +62,8 @@ def run(args) -> int:
     from tethersim.output.tables import write_table
 
     sat = options.satellite(args)  # before the run: a bad --set costs nothing
+    from tethersim.cli.overrides import refuse_unused
+    refuse_unused(args, sat, (args.model,))
     how = options.integrator(args)
     out = Path(args.out) if args.out else options.default_out(args, "forces")
     # adaptive: the force peaks need a dense output grid unless --steps says otherwise

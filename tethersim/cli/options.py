@@ -39,15 +39,14 @@ class RunFailed(Exception):
 class Parser(argparse.ArgumentParser):
     """An ArgumentParser whose usage errors are one line and leave the exit to main.
 
-    argparse would print the usage block and call ``sys.exit(2)``; raising
-    :class:`UsageError` instead lets :func:`tethersim.cli.main.main` report every bad
-    input the same way (``tethersim: error: ...``, exit code 2) and keeps
-    ``main(argv)`` returning an exit code when called in-process.
+    argparse would print the usage and ``sys.exit(2)``; :class:`UsageError` lets
+    :func:`tethersim.cli.main.main` report every bad input alike (one line, exit 2).
     """
 
     def error(self, message):
         """Raise :class:`UsageError` naming the command and pointing at its ``--help``."""
-        raise UsageError(f"{message} (see '{self.prog} --help')")
+        from tethersim.cli.overrides import dash_hint
+        raise UsageError(f"{dash_hint(message)} (see '{self.prog} --help')")
 
 
 # --- argument types: reject bad values at parse time, naming the allowed range ---------------
@@ -83,10 +82,12 @@ positive_int = int_range(1)
 
 
 def rtol_float(text: str) -> float:
-    """A relative tolerance in [1e-14, 1) (argparse ``type``): double precision bounds it below."""
+    """A relative tolerance in the engine's RTOL_RANGE (argparse ``type``; why: its comment)."""
+    from tethersim.engine.simulate import RTOL_RANGE
     v = positive_float(text)
-    if not 1e-14 <= v < 1:
-        raise argparse.ArgumentTypeError(f"allowed range 1e-14 <= rtol < 1, got {text}")
+    if not RTOL_RANGE[0] <= v <= RTOL_RANGE[1]:
+        raise argparse.ArgumentTypeError(f"allowed range {RTOL_RANGE[0]:g} <= rtol <= "
+                                         f"{RTOL_RANGE[1]:g}, got {text}")
     return v
 
 

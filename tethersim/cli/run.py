@@ -66,6 +66,8 @@ def run(args) -> int:
     from tethersim.output.tables import write_netcdf, write_timeseries
 
     sat = options.satellite(args)
+    from tethersim.cli.overrides import refuse_unused
+    refuse_unused(args, sat, (args.model,))  # its run would equal one without it
     cap = _resolve_periods(args, sat)
     how = options.integrator(args)
     out = Path(args.out) if args.out else options.default_out(args)

@@ -20,6 +20,7 @@ SHOWN_AXES = ("E1", "E2", "c1", "c2")  # in --help; every parameter of `show` wo
 
 def add_parser(sub) -> None:
     """Declare ``sweep`` and its options on the subparsers ``sub``."""
+    from tethersim.cli.overrides import Once
     from tethersim.model.params import NAMES, unit
 
     p = sub.add_parser(
@@ -32,7 +33,7 @@ def add_parser(sub) -> None:
     options.add_satellite(p)
     g = p.add_argument_group("grid axes")
     for n in NAMES:
-        g.add_argument(f"--{n}", metavar="GRID", default=None,
+        g.add_argument(f"--{n}", metavar="GRID", default=None, action=Once,
                        help=argparse.SUPPRESS if n not in SHOWN_AXES else
                        f"grid of {n} [{unit(n)}], e.g. 0:0.02:41 (any parameter of "
                        f"'tethersim show' works the same way)")
@@ -76,6 +77,7 @@ def run(args) -> int:
 
     from tethersim.analysis.classify import UNDECIDED, describe
     from tethersim.cli import preflight
+    from tethersim.cli.overrides import refuse, refuse_unused
     from tethersim.engine.guards import check_sweep
     from tethersim.experiments.sweep import SweepSpec, run_sweep
     from tethersim.experiments.sweep.analysis import (
@@ -92,10 +94,15 @@ def run(args) -> int:
 
     # Ctrl-C before the store exists leaves nothing to continue: no hint until then
     hint, args.interrupted_hint = args.interrupted_hint, ""
+    refuse(args, [n for n in params.NAMES if getattr(args, n) is not None],
+           lambda n: f"{n} is a sweep axis (--{n}): the grid gives its values; put the "
+                     f"values you want in --{n}")
     sat = options.satellite(args)
     axes = [(n, params.parse_grid(n, getattr(args, n))) for n in params.NAMES
             if getattr(args, n) is not None]
     check_sweep([len(v) for _, v in axes], [n for n, _ in axes])  # at once, before any work
+    # a setting or axis the model ignores would give identical points
+    refuse_unused(args, sat, (args.model,), [n for n, _ in axes])
     if not 1 <= len(axes) <= 2:
         raise options.UsageError(
             f"give one or two grids, e.g. --E1 0:0.02:41 --E2 0:0.06:41; got "

@@ -70,6 +70,8 @@ def run(args) -> int:
 
     preflight.check_workers(args, "workers")
     sat = options.satellite(args)
+    from tethersim.cli.overrides import refuse_unused
+    refuse_unused(args, sat, (args.model,))
     out = Path(args.out) if args.out else options.default_out(args, "tuned.toml")
     preflight.check_file(out)
     record = options.provenance(args, sat)

@@ -33,10 +33,10 @@ from tethersim.model.satellite import Satellite
 def released(sat: Satellite, after_s: float = 0.0) -> Satellite:
     """The satellite with its balloon released: tethers off, the balloon's drag and mass
     at the table's minimum; the epoch moved on by ``after_s`` [s] (MSIS air is
-    time-dependent)."""
+    time-dependent), to the whole second (as an epoch is given)."""
     epoch = datetime.fromisoformat(sat.epoch) + timedelta(seconds=after_s)
     return sat.replace(E1=0.0, E2=0.0, c1=0.0, c2=0.0, A3=PARAMETERS["A3"].low,
-                       m3=PARAMETERS["m3"].low, epoch=epoch.isoformat())
+                       m3=PARAMETERS["m3"].low, epoch=epoch.isoformat(timespec="seconds"))
 
 
 def continue_released(res: SimResult, max_time_s: float) -> tuple:

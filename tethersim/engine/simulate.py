@@ -48,6 +48,20 @@ QUICK_RUN_S = 0.5
 # ~2500x a nominal run (steps of ~5 ms): a spinning-up run fails in about a minute, not an
 # hour; no tether of this model's scale (N/mm^2 x 1 mm^2) needs more
 MAX_STEPS_PER_PERIOD = 1_000_000
+# allowed adaptive tolerances.  rtol: below 1e-14 is under double precision's resolution
+# (~2.2e-16 per operation, amplified by the stage sums); above 1e-3, scipy solve_ivp's
+# default and the loosest tolerance in common use, a step may be wrong by more than 0.1 %
+# and over the thousands of steps of a run the pitch error reaches the 0.05 rad settling
+# band (`run --rtol 0.9` "left the domain" on satI): the result would be the integrator's.
+# atol [m, rad, m/s, rad/s]: below 1e-20 the absolute term vanishes beside any
+# state of size >= 1e-6 (it then plays no role) and near 1e-300 the starting-step estimate
+# divides by zero; above 1e-3 (1 mm, 1 mrad per step) it swamps rtol on the states of order
+# 1 rad and 10 m that the thesis's runs have.
+RTOL_RANGE = (1e-14, 1e-3)
+ATOL_RANGE = (1e-20, 1e-3)
+# shortest run: below 1e-4 orbit (~0.5 s at 200 km) the step budget MAX_STEPS_PER_PERIOD x
+# periods falls under 100 steps (0 for 1e-9 orbit: "too many steps at t = 0")
+MIN_PERIODS = 1e-4
 
 
 class RK4StepWarning(UserWarning):
@@ -65,6 +79,14 @@ def _check_positive(name, value, integer=False):
         raise ValueError(f"{name} = {value!r}: must be a positive number") from None
     if not (math.isfinite(v) and v > 0):
         raise ValueError(f"{name} = {value!r}: must be a finite number > 0")
+    return v
+
+
+def _check_range(name, value, bounds):
+    v = _check_positive(name, value)
+    if not bounds[0] <= v <= bounds[1]:
+        raise ValueError(f"{name} = {value!r}: allowed range {bounds[0]:g} <= {name} <= "
+                         f"{bounds[1]:g} (docs/limits.md)")
     return v
 
 
@@ -142,6 +164,12 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
     if not isinstance(sat, Satellite):
         raise TypeError(f"sat must be a tethersim Satellite (load_preset/load), got {type(sat).__name__}")
     periods = _check_positive("periods", periods)
+    if periods < MIN_PERIODS:
+        raise ValueError(f"periods = {periods!r}: allowed range >= {MIN_PERIODS:g} orbit (a "
+                         f"shorter run has too few steps to integrate)")
+    if locate_switches is not None and not isinstance(locate_switches, (bool, np.bool_)):
+        raise TypeError(f"locate_switches = {locate_switches!r}: must be True, False or None "
+                        f"(the method's default)")
     if method not in METHODS:
         raise ValueError(f"method = {method!r}: allowed values {', '.join(METHODS)}")
     model = model_for_orbit(model, sat.orbit)  # orbit = "free": the model's free twin
@@ -152,10 +180,8 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
         run = _within_domain(_run_rk4(sat, periods, steps, model, locate, progress,
                                       step_warning))
         return estimate_error(run) if check else run
-    rtol = _check_positive("rtol", rtol)
-    atol = _check_positive("atol", atol)
-    if rtol < 1e-14:
-        raise ValueError(f"rtol = {rtol:g}: allowed range >= 1e-14 (double precision)")
+    rtol = _check_range("rtol", rtol, RTOL_RANGE)
+    atol = _check_range("atol", atol, ATOL_RANGE)
     if samples is not None:
         n_out = _check_positive("samples", samples, integer=True)
     elif steps is not None:

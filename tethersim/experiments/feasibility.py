@@ -49,7 +49,7 @@ from tethersim.analysis.feasibility import (
 )
 from tethersim.analysis.outcome import outcome
 from tethersim.engine.release import continue_released
-from tethersim.engine.simulate import simulate
+from tethersim.engine.simulate import RTOL_RANGE, simulate
 from tethersim.experiments.sweep.lock import StoreLock
 from tethersim.experiments.sweep.spec import ATOL_PER_RTOL
 from tethersim.model import atmosphere
@@ -60,8 +60,12 @@ from tethersim.model.satellite import Satellite
 SOLAR_CASES = ("min", "mean", "max")
 POINTS_FILE = "points.jsonl"
 CHECK_FACTOR = 100  # the second tolerance is rtol / this (as SimResult.estimate_error)
-MIN_RTOL = 1e-14  # simulate's floor: below CHECK_FACTOR x this the check runs coarser
+MIN_RTOL = RTOL_RANGE[0]  # simulate's floor: below CHECK_FACTOR x this the check runs coarser
 SPEC_FILE = "spec.json"
+# the satellite fields every point sets itself (the circular and free runs, the solar
+# cases): a satellite that gives another value is refused rather than silently overridden
+ATLAS_FIELDS = ("orbit", "j2", "eccentricity", "density_mode", "atmosphere", "density_scale",
+                "f107", "f107a", "ap", "epoch")
 
 
 @dataclass(frozen=True)
@@ -103,8 +107,10 @@ class FeasibilitySpec:
         check_runs(len(self.altitudes_km) * max(1, len(self.areas)),
                    self.runs_per_point(), "feasibility grid",
                    "--altitude and --A3" if self.areas else "--altitude")
-        if not (MIN_RTOL <= self.rtol < 1):
-            raise ValueError(f"rtol = {self.rtol!r}: allowed range {MIN_RTOL:g} <= rtol < 1")
+        if not (isinstance(self.rtol, (int, float)) and MIN_RTOL <= self.rtol <= RTOL_RANGE[1]):
+            raise ValueError(f"rtol = {self.rtol!r}: allowed range {MIN_RTOL:g} <= rtol <= "
+                             f"{RTOL_RANGE[1]:g}")
+        _check_atlas_fields(self.satellite)
         if not self.areas:
             object.__setattr__(self, "areas", (self.satellite.A3,))
         bad = [s for s in self.solar if s not in SOLAR_CASES]
@@ -172,6 +178,23 @@ class FeasibilitySpec:
         d["satellite"] = self.satellite.to_dict()
         d["satellite"]["initial"] = list(d["satellite"]["initial"])
         return json.dumps(d, sort_keys=True, default=list)
+
+
+def _check_atlas_fields(sat: Satellite) -> None:
+    """Refuse a satellite that sets a field of :data:`ATLAS_FIELDS` (one line naming it)."""
+    from dataclasses import fields
+    defaults = {f.name: f.default for f in fields(Satellite)}
+    given = [f for f in ATLAS_FIELDS if f != "density_mode" and getattr(sat, f) != defaults[f]]
+    if not sat.density_auto:
+        given.append("density_mode")
+    if given:
+        shown = ", ".join(f"{'density' if f == 'density_mode' else f} = {getattr(sat, f)!r}"
+                          for f in given)
+        raise ValueError(f"feasibility: {shown}: the atlas sets these itself (circular orbit "
+                         f"in uniform Vallado air scaled per solar case, free orbit in per-body "
+                         f"Vallado and NRLMSISE-00 air of each solar case); leave "
+                         f"{', '.join(ATLAS_FIELDS[:-1]).replace('density_mode', 'density')} "
+                         f"and epoch at their defaults")
 
 
 def solar_scales(h_km: float, cases=SOLAR_CASES) -> dict:

@@ -136,6 +136,7 @@ def check(sat) -> None:
     for name in ("f107", "f107a", "ap"):
         if getattr(sat, name) is not None:
             _number(sat, name, getattr(sat, name))
+    object.__setattr__(sat, "epoch", _iso_epoch(sat))
     try:
         air = air_model(sat)
     except ValueError as exc:
@@ -146,6 +147,27 @@ def check(sat) -> None:
             _msis_uniform(air, sat.altitude)
         except ValueError as exc:
             _fail(sat, f"altitude = {sat.altitude / 1e3:g} km: {exc}")
+
+
+def _iso_epoch(sat) -> str:
+    """``sat.epoch`` as 'YYYY-MM-DDTHH:MM:SS' UTC: an explicit ISO date or date-time text
+    only (not 'now', not a number), a timezone offset converted to UTC, whole seconds."""
+    import datetime as dt
+
+    e = sat.epoch
+    why = ("must be an ISO date or date-time text, UTC or with an offset, e.g. "
+           "'2017-06-23T00:00:00' or '2017-06-23'")
+    if not isinstance(e, str):
+        _fail(sat, f"epoch = {e!r:.40}: {why}")
+    try:
+        when = dt.datetime.fromisoformat(e.strip())
+    except ValueError:
+        _fail(sat, f"epoch = {e!r:.40}: {why}")
+    if when.microsecond:
+        _fail(sat, f"epoch = {e!r:.40}: whole seconds only (e.g. '2017-06-23T00:00:01')")
+    if when.tzinfo is not None:  # the instant, in UTC (numpy warns on an offset)
+        when = when.astimezone(dt.UTC).replace(tzinfo=None)
+    return when.isoformat(timespec="seconds")
 
 
 def air_model(sat):

@@ -280,7 +280,11 @@ def apply_overrides(sat: Satellite, sets=(), scales=()) -> Satellite:
     values = dict(parse_assignment(s) for s in numbers)
     for s in scales:
         name, factor = parse_assignment(s, "--scale")
-        values[name] = values.get(name, edge_value(sat, name)) * factor
+        base = values.get(name, edge_value(sat, name))
+        if math.isnan(base):  # an index left to the space-weather table: nothing to scale
+            raise ValueError(f"--scale {name}: {name} is unset (read from the space-weather "
+                             f"table): set it first, e.g. --set {name}=150 --scale {s}")
+        values[name] = base * factor
     if not values:
         return sat
     try:

@@ -26,6 +26,17 @@ T_TETHER_MIN = 0.1  # s, shortest tether oscillation period the integrator resol
 # integrated stably, which DOP853 does while step x c / m3_eff < ~5: 1 ms at ~5 ms steps,
 # with a tenfold margin
 T_DAMPER_MIN = 0.01
+# starting rates: |theta_dot|, |phi_dot|, |psi_dot| <= RATE_FACTOR x the orbit rate: 100 turns
+# per orbit is the Nyquist rate of the 200-per-orbit metrics grid (faster, the samples alias
+# the rotation: a yaw rate of 1000 rad/s gave a summary of an aliased yaw), and ~58x the
+# fastest librating pitch rate sqrt(3) x orbit rate (the separatrix of theta'' = -3 n^2 sin
+# theta cos theta).  The balloon's starting speed (delta_x_dot, ...) <= that rate times the
+# farthest plausible start (REACH_FACTOR x reach): ~20 m/s for the presets.
+RATE_FACTOR = 100.0
+# the balloon's ballistic coefficient A3/m3 <= this [m^2/kg]: the thinnest balloon films
+# (with seams) weigh ~10 g/m^2, so even a single sheet facing the flow has A/m <= 100 m^2/kg
+# (an inflated sphere, 4x its frontal area of film, <= 25); the presets' balloons have 12
+MAX_AREA_PER_MASS = 100.0
 HINT = "--allow-implausible (preset: [model] allow_implausible = true) runs it anyway"
 
 
@@ -62,13 +73,20 @@ def _balloon_mass(sat) -> float:
 
 def _cross_problems(sat) -> list:
     out = []
-    dx, dy = sat.initial[0], sat.initial[1]
+    dx, dy, dz = sat.initial[0], sat.initial[1], sat.initial_3d.get("delta_z", 0.0)
     reach = max(sat.l10 + sat.b, sat.l20 + sat.a)
-    r, limit = math.hypot(dx, dy), REACH_FACTOR * reach
+    r, limit = math.hypot(dx, dy, dz), REACH_FACTOR * reach
     if r > limit:
-        out.append(f"delta_x, delta_y = ({dx:g}, {dy:g}) m: the balloon starts {r:.4g} m from "
+        names, values = ("delta_x, delta_y", f"{dx:g}, {dy:g}") if dz == 0 else (
+            "delta_x, delta_y, delta_z", f"{dx:g}, {dy:g}, {dz:g}")
+        out.append(f"{names} = ({values}) m: the balloon starts {r:.4g} m from "
                    f"the COM; plausible range <= {limit:.4g} m ({REACH_FACTOR:g} x max(l10 + b, "
                    f"l20 + a): far beyond any trail the tethers hold)")
+    out += _rate_problems(sat, limit)
+    if sat.A3 / sat.m3 > MAX_AREA_PER_MASS:
+        out.append(f"A3 / m3 = {sat.A3 / sat.m3:.4g} m^2/kg: plausible range <= "
+                   f"{MAX_AREA_PER_MASS:g} m^2/kg (the balloon's area per mass: the thinnest "
+                   f"balloon films weigh ~10 g/m^2)")
     span = (sat.a + sat.b) / BOOM_FACTOR
     if sat.l10 + sat.l20 < span:
         out.append(f"l10 + l20 = {sat.l10 + sat.l20:g} m: plausible range >= {span:.4g} m "
@@ -91,6 +109,25 @@ def _cross_problems(sat) -> list:
             out.append(f"c{i} = {c:g} N s/m: plausible range <= {c_max:.4g} N s/m for m3 "
                        f"(damper time m3/c{i} = {m / c:.3g} s, under the {T_DAMPER_MIN:g} s "
                        f"the integrator resolves)")
+    return out
+
+
+def _rate_problems(sat, reach_limit: float) -> list:
+    """Starting rates beyond RATE_FACTOR x the orbit rate, and starting balloon speeds
+    beyond that rate times the farthest plausible start ``reach_limit`` [m]."""
+    w_max = RATE_FACTOR * sat.omega
+    v_max = w_max * reach_limit
+    rates = {"theta_dot": sat.initial[5], "phi_dot": sat.initial_3d.get("phi_dot", 0.0),
+             "psi_dot": sat.initial_3d.get("psi_dot", 0.0)}
+    out = [f"{k} = {v:g} rad/s: plausible range |{k}| <= {w_max:.4g} rad/s ({RATE_FACTOR:g} x "
+           f"the orbit rate: faster turns alias on the 200-per-orbit output)"
+           for k, v in rates.items() if abs(v) > w_max]
+    speeds = (sat.initial[3], sat.initial[4], sat.initial_3d.get("delta_z_dot", 0.0))
+    v = math.hypot(*speeds)
+    if v > v_max:
+        out.append(f"delta_x_dot, delta_y_dot, delta_z_dot = ({', '.join(f'{x:g}' for x in speeds)})"
+                   f" m/s: the balloon starts at {v:.4g} m/s; plausible range <= {v_max:.4g} m/s "
+                   f"({RATE_FACTOR:g} x the orbit rate x the farthest plausible start)")
     return out
 
 

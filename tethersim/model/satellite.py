@@ -15,6 +15,7 @@ from tethersim.model.constants import CD_DEFAULT, MU_EARTH, OMEGA_EARTH, R_EARTH
 # fields that must be > 0 and >= 0 (units in UNITS)
 _POSITIVE = ("m1", "m2", "m3", "A1", "A2", "A3", "a", "b", "l10", "l20")
 _NON_NEGATIVE = ("E1", "E2", "c1", "c2", "CD")
+MAX_NAME = 100  # characters of a name: a label in summaries, plot titles and files
 COM_RTOL = 1e-6  # relative tolerance of the COM-on-the-boom condition m1 b = m2 a
 DENSITY_MODES = ("uniform", "per-body")
 # density_mode chosen by the orbit when none is given (docs/air.md)
@@ -131,6 +132,11 @@ class Satellite:
     density_auto: bool = field(default=False, init=False, compare=False, repr=False)
 
     def __post_init__(self):
+        n = self.name
+        if not (isinstance(n, str) and n.strip() and n.isprintable() and len(n) <= MAX_NAME):
+            raise SatelliteError(f"{self._where()}name = {n!r:.60}: must be printable text, "
+                                 f"1 to {MAX_NAME} characters, no line breaks or control "
+                                 f"characters")
         for f in fields(self):
             v = getattr(self, f.name)
             if f.name in _POSITIVE + _NON_NEGATIVE + ("altitude",):

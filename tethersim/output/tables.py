@@ -219,6 +219,10 @@ def write_netcdf(res: SimResult, path, attrs: dict | None = None) -> Path:
     from scipy.io import netcdf_file
 
     path = Path(path)
+    for k, v in (attrs or {}).items():  # what netCDF-3 attributes can hold, else scipy's KeyError
+        if not (isinstance(k, str) and isinstance(v, (str, bool, int, float, np.number))):
+            raise TypeError(f"attrs[{k!r}] = {v!r:.40}: a netCDF attribute is a str key with a "
+                            f"str, int, float or bool value")
     columns, meta = _series(res, attrs)
     with replacing(path) as tmp, netcdf_file(tmp, "w", version=2) as f:
         f.createDimension("t", columns[0][1].size)

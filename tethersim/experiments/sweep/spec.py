@@ -15,15 +15,24 @@ from dataclasses import InitVar, dataclass, field
 import numpy as np
 
 from tethersim.analysis.metrics import SETTLING_TOL, check_tol
-from tethersim.engine.simulate import FAITHFUL_STEPS_PER_PERIOD
+from tethersim.engine.simulate import (
+    FAITHFUL_STEPS_PER_PERIOD,
+    MAX_STEPS_PER_PERIOD,
+    METRIC_SAMPLES_PER_PERIOD,
+    RTOL_RANGE,
+)
 from tethersim.model import params
-from tethersim.model.registry import DEFAULT_MODEL, model_index
+from tethersim.model.registry import DEFAULT_MODEL, model_for_orbit, model_index
 from tethersim.model.satellite import Satellite, SatelliteError
 
 METHODS = ("adaptive", "faithful")
 SAMPLES_PER_PERIOD = 100  # adaptive output grid for the metrics
 DEFAULT_RTOL = 1e-9
 ATOL_PER_RTOL = 1e-2  # atol = rtol x this: states are O(1) rad and O(10) m
+# per-orbit counts: RK4 steps up to the engine's step budget; output samples up to 50x the
+# metrics grid (more adds nothing the metrics use, and multiplies the store)
+MAX_STEPS = MAX_STEPS_PER_PERIOD
+MAX_SAMPLES = 50 * METRIC_SAMPLES_PER_PERIOD
 
 
 @dataclass(frozen=True)
@@ -73,14 +82,25 @@ class SweepSpec:
     def __post_init__(self, progress=None):
         if not isinstance(self.satellite, Satellite):
             raise TypeError("satellite must be a tethersim Satellite")
+        if not isinstance(self.axes, (tuple, list)) or not all(
+                isinstance(a, (tuple, list)) and len(a) == 2 and isinstance(a[0], str)
+                for a in self.axes):
+            raise TypeError(f"axes = {self.axes!r:.80}: must be a tuple of (name, values) "
+                            f"pairs, e.g. (('E1', [0.001, 0.004]),)")
         if not 1 <= len(self.axes) <= 2:
             raise ValueError(f"a sweep has one or two axes, got {len(self.axes)}")
         axes = []
         for name, values in self.axes:
             params.check_name(name)
-            v = np.asarray(values, dtype=float).ravel()
+            try:
+                v = np.asarray(values, dtype=float).ravel()
+            except (TypeError, ValueError):
+                raise ValueError(f"axis {name} = {values!r:.80}: must be numbers "
+                                 f"({params.unit(name)})") from None
             if v.size == 0 or not np.all(np.isfinite(v)):
                 raise ValueError(f"axis {name}: needs finite values")
+            if np.unique(v).size != v.size:
+                raise ValueError(f"axis {name}: values repeat (each point once)")
             axes.append((name, tuple(float(x) for x in v)))
         names = tuple(n for n, _ in axes)
         if len(set(names)) != len(names):
@@ -90,17 +110,20 @@ class SweepSpec:
         if self.method not in METHODS:
             raise ValueError(f"method = {self.method!r}: allowed values {', '.join(METHODS)}")
         model_index(self.model)
+        # the model that runs (a free orbit runs the free twin): the store names it
+        object.__setattr__(self, "model", model_for_orbit(self.model, self.satellite.orbit))
         for key in ("periods", "rtol", "tol"):
             v = getattr(self, key)
             if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
                 raise ValueError(f"{key} = {v!r}: must be a finite number > 0")
         check_tol(self.tol)  # the settling band: (0, pi) rad, as outcome() takes it
-        if self.rtol < 1e-14:
-            raise ValueError(f"rtol = {self.rtol:g}: allowed range >= 1e-14")
-        for key in ("steps_per_period", "samples_per_period"):
+        if not RTOL_RANGE[0] <= self.rtol <= RTOL_RANGE[1]:
+            raise ValueError(f"rtol = {self.rtol:g}: allowed range {RTOL_RANGE[0]:g} <= rtol "
+                             f"<= {RTOL_RANGE[1]:g}")
+        for key, hi in (("steps_per_period", MAX_STEPS), ("samples_per_period", MAX_SAMPLES)):
             v = getattr(self, key)
-            if isinstance(v, bool) or not isinstance(v, int) or v < 1:
-                raise ValueError(f"{key} = {v!r}: must be an integer >= 1")
+            if isinstance(v, bool) or not isinstance(v, int) or not 1 <= v <= hi:
+                raise ValueError(f"{key} = {v!r}: must be an integer in 1..{hi}")
         from tethersim.engine.guards import check_sweep  # before validating (or allocating) 10^12 points
         check_sweep([len(v) for _, v in axes], names)
         self.check_points(progress)

@@ -236,6 +236,9 @@ def load_preset(name: str, allow_implausible: bool = False) -> Satellite:
     >>> round(ts.load_preset("satI").altitude / 1e3)
     200
     """
+    if not isinstance(name, str):
+        raise TypeError(f"name must be a preset name (str: satI, satII, dumbsat), got "
+                        f"{type(name).__name__}")
     key = name.lower()
     if key not in PRESET_NAMES:
         raise SatelliteError(f"unknown preset {name!r}; available: satI, satII, dumbsat "

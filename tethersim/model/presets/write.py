@@ -1,6 +1,7 @@
 """Write a Satellite as a preset TOML file (the layout tethersim.model.presets reads)."""
 from __future__ import annotations
 
+import json
 import math
 
 from tethersim.model.presets import INITIAL_3D_KEYS, N_PER_MM2_TO_N
@@ -37,7 +38,7 @@ def dumps(sat: Satellite, notes: dict | None = None, header: str = "") -> str:
     if air:
         tables["atmosphere"] = air
     lines = [f"# {line}" if line else "#" for line in header.splitlines()]
-    lines.append(f'name = "{sat.name}"')
+    lines.append(f"name = {_toml_string(sat.name)}")
     for table, values in tables.items():
         lines += ["", f"[{table}]"]
         for key, v in values.items():
@@ -47,7 +48,13 @@ def dumps(sat: Satellite, notes: dict | None = None, header: str = "") -> str:
             elif isinstance(v, (tuple, list)):  # I1, I2: [roll, pitch, yaw]
                 text = "[" + ", ".join(repr(float(x)) for x in v) + "]"
             else:
-                text = f'"{v}"' if isinstance(v, str) else repr(float(f"{float(v):.15g}"))
+                text = _toml_string(v) if isinstance(v, str) else repr(float(f"{float(v):.15g}"))
             note = notes.get(key) or notes.get(key.split("_N_per")[0])
             lines.append(f"{key} = {text}" + (f"  # {note}" if note else ""))
     return "\n".join(lines) + "\n"
+
+
+def _toml_string(text: str) -> str:
+    """A TOML basic string: JSON's escapes (\\", \\\\, \\n, \\uXXXX) are TOML's, and DEL,
+    which JSON leaves raw but TOML forbids, escaped too."""
+    return json.dumps(text, ensure_ascii=False).replace("\x7f", "\\u007f")
