@@ -16,6 +16,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from tests.messages import one_line
 from tethersim import Satellite, load_preset
 from tethersim.cli.main import main
 from tethersim.model.params import NAMES, apply_overrides, parse_grid
@@ -32,12 +33,6 @@ def _set(text: str, key: str, value: str) -> str:
     assert n == 1, key
     return new
 
-
-def _one_line(message: str) -> str:
-    assert "Traceback" not in message
-    lines = message.strip().splitlines()
-    assert len(lines) == 1, message
-    return lines[0]
 
 
 # --- preset file values: (key, value, what the message must say) -------------------------
@@ -77,7 +72,7 @@ def test_bad_preset_value_names_key_and_range(tmp_path, key, value, expected):
     path.write_text(_set(TEXT, key, value))
     with pytest.raises(SatelliteError) as info:
         load(path)
-    line = _one_line(str(info.value))
+    line = one_line(str(info.value))
     assert line.startswith(f"{path}: ")
     for text in expected:
         assert text in line, line
@@ -96,7 +91,7 @@ def test_bad_preset_combination_names_fields_and_range(tmp_path, mutate, expecte
     path.write_text(mutate(TEXT))
     with pytest.raises(SatelliteError) as info:
         load(path)
-    line = _one_line(str(info.value))
+    line = one_line(str(info.value))
     for text in expected:
         assert text in line, line
 
@@ -167,7 +162,7 @@ SET_CASES = [
 @pytest.mark.parametrize("argv, expected", SET_CASES, ids=[" ".join(a) for a, _ in SET_CASES])
 def test_bad_set_is_one_line_naming_field_and_range(argv, expected, capsys):
     assert main(["show", "satI", *argv]) == 2
-    line = _one_line(capsys.readouterr().err)
+    line = one_line(capsys.readouterr().err)
     assert line.startswith("tethersim: error: ")
     for text in expected:
         assert text in line, line
@@ -222,7 +217,7 @@ def test_bad_cli_option_is_one_line_naming_field_and_range(argv, expected, tmp_p
     out = ["--out", str(tmp_path / "out")] if argv[0] in ("run", "sweep", "compare", "forces",
                                                           "headlines") else []
     assert main([*argv, *out]) == 2
-    line = _one_line(capsys.readouterr().err)
+    line = one_line(capsys.readouterr().err)
     for text in expected:
         assert text in line, line
 
@@ -262,7 +257,7 @@ def test_any_preset_value_loads_or_is_one_line_naming_the_key(key, value, drop):
     try:
         sat = from_dict(doc, "h.toml")
     except SatelliteError as exc:  # the only documented error type
-        line = _one_line(str(exc))
+        line = one_line(str(exc))
         assert line.startswith("h.toml: ")
         leaf = name.split("_N_per")[0].removesuffix("_km").removesuffix("_deg")
         assert leaf in line or (name in _COM and "COM off the boom" in line), line
@@ -273,19 +268,19 @@ def test_any_preset_value_loads_or_is_one_line_naming_the_key(key, value, drop):
 
 @settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(text=st.text(max_size=40))
-def test_any_preset_text_loads_or_is_one_line(text, tmp_path_factory):
+def test_any_preset_text_loads_or_isone_line(text, tmp_path_factory):
     path = tmp_path_factory.getbasetemp() / "fuzz.toml"
     path.write_text(text)
     try:
         load(path)
     except SatelliteError as exc:
-        assert _one_line(str(exc)).startswith(f"{path}: ")
+        assert one_line(str(exc)).startswith(f"{path}: ")
 
 
 @settings(max_examples=100, deadline=None)
 @given(key=st.sampled_from(_KEYS), text=st.text(
     alphabet=st.characters(blacklist_categories=("Cs",)), max_size=12))
-def test_mutated_preset_text_loads_or_is_one_line(key, text, tmp_path_factory):
+def test_mutated_preset_text_loads_or_isone_line(key, text, tmp_path_factory):
     table, name = key
     if table in SCHEMA and name not in SCHEMA[table]:  # an optional key: add it to mutate
         base = TEXT.replace(f"[{table}]\n", f"[{table}]\n{name} = 1\n", 1)
@@ -297,7 +292,7 @@ def test_mutated_preset_text_loads_or_is_one_line(key, text, tmp_path_factory):
     try:
         load(path)
     except SatelliteError as exc:
-        _one_line(str(exc))
+        one_line(str(exc))
 
 
 # --- property-based: --set / --scale and grids ----------------------------------------
@@ -314,7 +309,7 @@ def test_any_assignment_applies_or_is_one_line_naming_the_field(name, value, opt
     try:
         sat = apply_overrides(SAT, **{option: [text]})
     except (SatelliteError, ValueError) as exc:  # the documented error types
-        line = _one_line(str(exc))
+        line = one_line(str(exc))
         field = name.strip()  # named as typed, or escaped (repr) when unprintable
         assert field in line or repr(field) in line or "COM off the boom" in line, line
         return
@@ -323,11 +318,11 @@ def test_any_assignment_applies_or_is_one_line_naming_the_field(name, value, opt
 
 @settings(max_examples=100, deadline=None)
 @given(text=st.text(max_size=30))
-def test_any_set_text_applies_or_is_one_line(text):
+def test_any_set_text_applies_or_isone_line(text):
     try:
         apply_overrides(SAT, sets=[text])
     except (SatelliteError, ValueError) as exc:
-        _one_line(str(exc))
+        one_line(str(exc))
 
 
 @settings(max_examples=150, deadline=None)
@@ -337,7 +332,7 @@ def test_any_grid_spec_parses_or_is_one_line_naming_the_option(name, spec):
     try:
         values = parse_grid(name, spec)
     except ValueError as exc:
-        assert _one_line(str(exc)).startswith(f"--{name} ")
+        assert one_line(str(exc)).startswith(f"--{name} ")
         return
     assert values.size >= 1 and all(math.isfinite(v) for v in values)
 

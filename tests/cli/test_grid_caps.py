@@ -4,14 +4,13 @@ from __future__ import annotations
 
 import pytest
 
+from tests.messages import one_line
 from tethersim.cli.main import main
 from tethersim.experiments.headlines.cases import BY_NAME
 
 
 def _one_line_error(capsys) -> str:
-    err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and "Traceback" not in err
-    return err
+    return one_line(capsys.readouterr().err)
 
 
 def test_repeated_headline_cases_are_refused(capsys, tmp_path):

@@ -18,24 +18,19 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
+from tests.messages import one_line
 from tethersim.cli.main import main
 from tethersim.cli.preflight import max_workers
 
 ROOT = Path(__file__).parents[2]
 
 
-def _one_line(err: str) -> str:
-    assert "Traceback" not in err
-    lines = err.strip().splitlines()
-    assert len(lines) == 1, err
-    return lines[0]
-
 
 def _refused(argv, capsys) -> str:
     t0 = time.perf_counter()
     assert main(argv) == 2
     assert time.perf_counter() - t0 < 5.0, "refused before any run"
-    return _one_line(capsys.readouterr().err)
+    return one_line(capsys.readouterr().err)
 
 
 def test_run_of_few_samples_over_many_orbits_is_refused_before_its_folder(tmp_path, capsys):
@@ -89,7 +84,7 @@ def test_refused_sweep_leaves_nothing_and_the_corrected_rerun_runs(tmp_path, cap
     ["report", "--workers", "{n}"],
     ["feasibility", "satI", "--altitude", "200", "--workers", "{n}"],
 ])
-def test_worker_counts_are_capped_in_one_line(tmp_path, capsys, argv):
+def test_worker_counts_are_capped_inone_line(tmp_path, capsys, argv):
     cap = max_workers()
     assert cap == 4 * (os.cpu_count() or 1)
     args = [a.format(n=cap + 1) for a in argv] + ["--out", str(tmp_path / "o")]
@@ -111,7 +106,7 @@ def test_interrupted_sweep_says_how_to_continue_once(tmp_path, monkeypatch, caps
     rc = main(["sweep", "satI", "--E1", "0.003,0.004", "--periods", "0.1", "--out",
                str(tmp_path / "s"), "--quiet"])
     assert rc == 130
-    line = _one_line(capsys.readouterr().err)
+    line = one_line(capsys.readouterr().err)
     assert line.count("again") == 1 and "run the same command again to continue" in line
     assert "1 of 2 points" in line
 

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from tests.messages import one_line
 from tethersim import load_preset, simulate
 from tethersim.cli.main import main
 from tethersim.engine.guards import SizeLimitError, check_simulation, check_sweep
@@ -17,12 +18,6 @@ from tethersim.experiments.sweep import SweepSpec
 SAT = load_preset("satI")
 ROOT = Path(__file__).parents[2]
 
-
-def _one_line(err: str) -> str:
-    assert "Traceback" not in err
-    lines = err.strip().splitlines()
-    assert len(lines) == 1, err
-    return lines[0]
 
 
 @pytest.mark.parametrize("method, steps, check, estimate", [
@@ -77,7 +72,7 @@ def test_sweep_spec_checks_its_size_before_validating_points(monkeypatch):
 def test_cli_huge_steps_is_one_line_not_an_oom_kill(tmp_path, capsys):
     rc = main(["run", "satI", "--steps", "100000000", "--out", str(tmp_path), "--quiet"])
     assert rc == 2
-    line = _one_line(capsys.readouterr().err)
+    line = one_line(capsys.readouterr().err)
     assert "--steps" in line and "GiB" in line and "allowed at most 2 GiB" in line
 
 
@@ -87,12 +82,12 @@ def test_cli_huge_sweep_grid_returns_at_once(tmp_path, capsys):
                "--out", str(tmp_path / "s"), "--quiet"])
     assert time.perf_counter() - t0 < 5.0
     assert rc == 2
-    line = _one_line(capsys.readouterr().err)
+    line = one_line(capsys.readouterr().err)
     assert "1e+12 points" in line and "allowed at most 1e+06 points" in line
     assert not (tmp_path / "s").exists(), "nothing created"
 
 
-def test_ctrl_c_anywhere_in_the_cli_is_one_line(monkeypatch, capsys):
+def test_ctrl_c_anywhere_in_the_cli_isone_line(monkeypatch, capsys):
     import tethersim.model.presets
 
     def interrupted(*args, **kwargs):
@@ -100,7 +95,7 @@ def test_ctrl_c_anywhere_in_the_cli_is_one_line(monkeypatch, capsys):
 
     monkeypatch.setattr(tethersim.model.presets, "resolve", interrupted)
     assert main(["equilibrium", "satI"]) == 130
-    assert _one_line(capsys.readouterr().err) == "tethersim: interrupted"
+    assert one_line(capsys.readouterr().err) == "tethersim: interrupted"
 
 
 def test_sigint_to_a_running_cli_prints_no_traceback(tmp_path):
