@@ -7,7 +7,7 @@ STAMP  := $(VENV)/.installed-stamp
 # cold first run spends most of it compiling kernels, one model at a time per process
 JOBS   ?= 2
 
-.PHONY: install run test test-slow test-fast test-generic check-bitwise derive check-generated lint bench clean
+.PHONY: install run test test-slow test-fast test-generic check-bitwise docs-check derive check-generated lint bench clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -70,6 +70,11 @@ test-generic: $(STAMP)
 ## last bit (tests compare stored numbers to stated tolerances instead: tests/reference.py).
 check-bitwise: $(STAMP)
 	$(PY) tools/bitwise.py $(or $(BASE),HEAD)
+
+## The figures printed in the docs beside their computed values (tools/, not in the wheel;
+## tests/output/test_doc_numbers.py checks them in make test, the --slow ones in test-slow).
+docs-check: $(STAMP)
+	$(PY) -m tools.docnumbers --slow
 
 ## Speed figures (medians of repeats, ratios in the same run).
 bench: $(STAMP)

@@ -25,9 +25,9 @@ from tethersim.generated import (
     three_d_free_objective_damper,
 )
 from tethersim.model.constants import J2_EARTH, MU_EARTH
-from tethersim.output.docnumbers.figures_orbit import R200 as R0
-from tethersim.output.docnumbers.figures_orbit import decay
-from tethersim.output.docnumbers.free_orbit import integrate, params, state, work
+from tools.docnumbers.figures_orbit import R200 as R0
+from tools.docnumbers.figures_orbit import decay
+from tools.docnumbers.free_orbit import integrate, params, state, work
 
 pytestmark = pytest.mark.slow  # compiles the 16-state kernels (about a minute each)
 

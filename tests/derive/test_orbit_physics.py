@@ -4,7 +4,7 @@ Every run integrates the generated ``rhs`` with scipy's DOP853 at rtol 1e-12.
 Closed forms are from docs/sources.md; each test cites its
 source.  Inputs are SatI's (tethersim/model/presets/satI.toml) and WGS-84 constants
 (Vallado Table D-3); no expected result is typed in.  The runs that docs/orbit.md
-quotes are tethersim/output/docnumbers/figures_orbit.py's (the doc's figures are
+quotes are tools/docnumbers/figures_orbit.py's (the doc's figures are
 the same runs, for ``free``); the helpers are its free_orbit.py.
 """
 from __future__ import annotations
@@ -16,7 +16,7 @@ import pytest
 
 from tethersim.generated import free, free_exact_gravity
 from tethersim.model.constants import J2_EARTH, MU_EARTH, R_EARTH
-from tethersim.output.docnumbers.figures_orbit import (
+from tools.docnumbers.figures_orbit import (
     MODULES,
     decay,
     energy_balance,
@@ -24,7 +24,7 @@ from tethersim.output.docnumbers.figures_orbit import (
     j2_rates,
     kepler_ellipse,
 )
-from tethersim.output.docnumbers.free_orbit import integrate, params, state
+from tools.docnumbers.free_orbit import integrate, params, state
 
 # ------------------------------------------------------------------ (a) decay
 

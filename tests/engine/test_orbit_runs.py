@@ -81,7 +81,7 @@ def test_decay_in_msis_air_matches_the_law_with_pymsis_along_the_path():
     """The same law with ρ from pymsis itself (no grid) at the COM's altitude, longitude
     and time of each sample (figures_air.msis_decay): ≤ 0.5 % (the grid's bound).  Day
     and night make ρ vary along the orbit; a uniform density would not follow it."""
-    from tethersim.output.docnumbers.figures_air import msis_decay
+    from tools.docnumbers.figures_air import msis_decay
     error, day_night = msis_decay()
     assert day_night > 1.3
     assert abs(error) <= 5e-3

@@ -1,10 +1,10 @@
-"""Every figure listed in tethersim.output.docnumbers equals, to its printed precision,
+"""Every figure listed in tools.docnumbers equals, to its printed precision,
 what the code computes; a changed doc or a changed model fails here."""
 from __future__ import annotations
 
 import pytest
 
-from tethersim.output.docnumbers import (
+from tools.docnumbers import (
     FIGURES,
     QUANTITIES,
     agrees,

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from tethersim.output.feasibility_doc import HEADER, scan_rows, table_line
+from tools.feasibility_doc import HEADER, scan_rows, table_line
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "feasibility.md"
 

@@ -13,7 +13,7 @@ from tethersim.model.air.grid import gmst
 from tethersim.model.constants import MU_EARTH, OMEGA_EARTH, R_EARTH
 from tethersim.model.options import air_density
 from tethersim.model.presets import load_preset
-from tethersim.output.docnumbers.check import Figure
+from tools.docnumbers.check import Figure
 
 A = "docs/air.md"
 

@@ -9,8 +9,8 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
-from tethersim.output.docnumbers import quantities as q
-from tethersim.output.docnumbers.check import Figure
+from tools.docnumbers import quantities as q
+from tools.docnumbers.check import Figure
 
 H, TB, README, CONV = "docs/headlines.md", "docs/torque-balance.md", "README.md", \
     "docs/conventions.md"
@@ -143,34 +143,34 @@ for _f, _c in ((1, "3e-4"), (10, "3e-3"), (30, "9e-3"), (70, "0.021"), (100, "0.
         FIGURES.append(Figure(H, (_SCAN, _row, " | ", " | ", " | ", " | "),
                               f"scan_inverted_{_f}"))
 
-from tethersim.output.docnumbers import figures_more as _more  # noqa: E402
+from tools.docnumbers import figures_more as _more  # noqa: E402
 
 QUANTITIES.update(_more.QUANTITIES)
 FIGURES += _more.FIGURES
 
-from tethersim.output.docnumbers import figures_cases as _cases  # noqa: E402
+from tools.docnumbers import figures_cases as _cases  # noqa: E402
 
 QUANTITIES.update(_cases.QUANTITIES)
 FIGURES += _cases.FIGURES
 
-from tethersim.output.docnumbers import figures_roll as _roll  # noqa: E402
+from tools.docnumbers import figures_roll as _roll  # noqa: E402
 
 QUANTITIES.update(_roll.QUANTITIES)
 # every roll figure compiles the 3-D kernels (jacobian ~15 s cold) or runs them for 40-50
 # orbits: the slow tier (make test-slow, CI) checks them all
 FIGURES += [replace(f, slow=True) for f in _roll.FIGURES]
 
-from tethersim.output.docnumbers import figures_air as _air  # noqa: E402
+from tools.docnumbers import figures_air as _air  # noqa: E402
 
 QUANTITIES.update(_air.QUANTITIES)
 FIGURES += _air.FIGURES
 
-from tethersim.output.docnumbers import figures_orbit as _orbit  # noqa: E402
+from tools.docnumbers import figures_orbit as _orbit  # noqa: E402
 
 QUANTITIES.update(_orbit.QUANTITIES)
 FIGURES += _orbit.FIGURES
 
-from tethersim.output.docnumbers import orbit_notes as _notes  # noqa: E402
+from tools.docnumbers import orbit_notes as _notes  # noqa: E402
 
 QUANTITIES.update(_notes.QUANTITIES)
 FIGURES += _notes.FIGURES

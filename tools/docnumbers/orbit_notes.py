@@ -24,8 +24,8 @@ from tethersim.model.atmosphere import TABLE, density_kernel
 from tethersim.model.constants import J2_EARTH, MU_EARTH, OMEGA_EARTH, R_EARTH
 from tethersim.model.inputs import initial_model_state
 from tethersim.model.presets import load_preset
-from tethersim.output.docnumbers.check import Figure
-from tethersim.output.docnumbers.free_orbit import (
+from tools.docnumbers.check import Figure
+from tools.docnumbers.free_orbit import (
     apsides,
     ballistic,
     inertial_com,
@@ -64,7 +64,7 @@ def _at_a(y, p) -> float:
 class _InAir:
     """``free`` with ρ1..ρ3 set from the state before each ``rhs`` call.
 
-    It stands in for the module in :func:`~tethersim.output.docnumbers.free_orbit.integrate`
+    It stands in for the module in :func:`~tools.docnumbers.free_orbit.integrate`
     (which reads ``STATE``, ``MODEL`` and ``rhs``); the kernel takes the densities as
     parameters, constant within one call, as the runtime's loop supplies them.
     """

@@ -17,8 +17,8 @@ from scipy.integrate import solve_ivp
 
 from tethersim.generated import free, free_exact_gravity, free_objective_damper, three_d_free
 from tethersim.model.constants import J2_EARTH, MU_EARTH, OMEGA_EARTH, R_EARTH
-from tethersim.output.docnumbers.check import Figure
-from tethersim.output.docnumbers.free_orbit import (
+from tools.docnumbers.check import Figure
+from tools.docnumbers.free_orbit import (
     apsides,
     ballistic,
     dumbbell,

@@ -1,8 +1,8 @@
 """Figures of the moduli cases (headlines.md, torque-balance.md) and the band (sweeps.md)."""
 from __future__ import annotations
 
-from tethersim.output.docnumbers import quantities as q
-from tethersim.output.docnumbers.check import Figure
+from tools.docnumbers import quantities as q
+from tools.docnumbers.check import Figure
 
 H, TB, SW = "docs/headlines.md", "docs/torque-balance.md", "docs/sweeps.md"
 CASES = (("E1-10%", 0.9, 1.0), ("E1+10%", 1.1, 1.0), ("E2-10%", 1.0, 0.9), ("E2+10%", 1.0, 1.1))

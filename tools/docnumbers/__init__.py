@@ -1,11 +1,11 @@
 """Figures printed in docs/*.md and README.md, computed with the code and compared.
 
-``python -m tethersim.output.docnumbers`` prints every listed figure beside its
+``python -m tools.docnumbers`` prints every listed figure beside its
 computed value (``--slow`` adds those that need simulations) and, per doc, how
 many of the numbers in its prose and tables the list covers.
 """
-from tethersim.output.docnumbers.check import Figure, agrees, locate, numbers_in, parse, read
-from tethersim.output.docnumbers.figures import FIGURES, QUANTITIES
+from tools.docnumbers.check import Figure, agrees, locate, numbers_in, parse, read
+from tools.docnumbers.figures import FIGURES, QUANTITIES
 
 __all__ = ["FIGURES", "QUANTITIES", "Figure", "agrees", "evaluate", "locate", "numbers_in",
            "parse", "read"]

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import sys
 
-from tethersim.output.docnumbers import FIGURES, evaluate, locate, numbers_in, read
+from tools.docnumbers import FIGURES, evaluate, locate, numbers_in, read
 
 
 def main(argv=None) -> int:

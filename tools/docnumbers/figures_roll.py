@@ -18,7 +18,7 @@ from tethersim.analysis.roll import (
 from tethersim.engine.simulate import simulate
 from tethersim.model.params import with_values
 from tethersim.model.presets import load_preset
-from tethersim.output.docnumbers.check import Figure
+from tools.docnumbers.check import Figure
 
 R = "docs/roll.md"
 H = 3600.0

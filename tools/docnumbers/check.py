@@ -1,7 +1,7 @@
 """Find a figure printed in a doc and compare it with the value the code computes.
 
 A :class:`Figure` names a doc, a chain of anchor strings and the quantity (a key
-of :data:`tethersim.output.docnumbers.quantities.QUANTITIES`).  The anchors are
+of :data:`tools.docnumbers.quantities.QUANTITIES`).  The anchors are
 found one after the other; the number printed right after the last one is the
 figure.  It agrees when the computed value, rounded to the printed precision
 (decimals, or the mantissa's decimals in ``3.99e-3`` form), is the printed
@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 NUMBER = re.compile(r"[−+-]?\d[\d,]*(?:\.\d+)?(?:e[−+-]?\d+)?")
-ROOT = Path(__file__).resolve().parents[3]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 @dataclass(frozen=True)

@@ -1,4 +1,4 @@
-"""The numbers of docs/feasibility.md: ``python -m tethersim.output.feasibility_doc``.
+"""The numbers of docs/feasibility.md: ``python -m tools.feasibility_doc``.
 
 Prints the SatI answer at 200 km and a small altitude scan as Markdown, computed
 with :mod:`tethersim.experiments.feasibility` (the same runs as ``tethersim

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import math
 
-from tethersim.output.docnumbers import quantities as q
-from tethersim.output.docnumbers.check import Figure
+from tools.docnumbers import quantities as q
+from tools.docnumbers.check import Figure
 
 TB, H, README = "docs/torque-balance.md", "docs/headlines.md", "README.md"
 SATS = (("satI", "SatI"), ("satII", "SatII"), ("dumbsat", "DumbSat"))
