@@ -24,6 +24,7 @@ def setup(log):
     import cref
 
     from tethersim.engine.dynamics import initial_state
+    from tethersim.engine.events import event_parameters
     from tethersim.engine.integrators.dop853 import dop853_run
     from tethersim.engine.integrators.rk4 import rk4_run
     from tethersim.engine.integrators.select import specialised
@@ -40,14 +41,15 @@ def setup(log):
     p = parameter_vector(sat, MODEL)
     y0 = initial_state(m.index, initial_model_state(sat, MODEL), sat.r0, sat.r0 * sat.omega)
     air = uniform_air()
-    rk4 = specialised(rk4_run, m.index, (air, 0, y0.copy(), 1.0, 1, 1, p, p.copy(), False,
+    ev = event_parameters(sat, MODEL)
+    rk4 = specialised(rk4_run, m.index, (air, 0, y0.copy(), 1.0, 1, 1, p, p.copy(), ev, False,
                                          np.empty(1), np.empty((1, y0.size)), 0))
-    dop = specialised(dop853_run, m.index, (air, 0.0, 1.0, y0.copy(), 0.0, p, p.copy(), RTOL,
+    dop = specialised(dop853_run, m.index, (air, 0.0, 1.0, y0.copy(), 0.0, p, p.copy(), ev, RTOL,
                                             ATOL, True, np.empty(1), np.empty((1, y0.size)), 0,
                                             1, np.zeros(5, np.int64), math.inf))
     log(f"model {MODEL!r}: {m.n_state} states + COM orbit; C port printed from "
         f"generated/three_d.py ({len(src.splitlines())} lines of C)")
-    return dict(sat=sat, m=m, p=p, y0=y0, air=air, c=lib, rk4=rk4, dop=dop)
+    return dict(sat=sat, m=m, p=p, y0=y0, air=air, c=lib, rk4=rk4, dop=dop, ev=ev)
 
 
 def bench_3d(rep, q, log):
@@ -66,7 +68,8 @@ def bench_3d(rep, q, log):
     def rk4_numba():
         y, ot, oy = y0.copy(), np.empty(RK4_STEPS), np.empty((RK4_STEPS, ns))
         t0 = cpu_clock()
-        S["rk4"](m.index, S["air"], 0.0, y, h, RK4_STEPS, 1, p, p.copy(), False, ot, oy, 0)
+        S["rk4"](m.index, S["air"], 0.0, y, h, RK4_STEPS, 1, p, p.copy(), S["ev"], False, ot, oy,
+                 0)
         runs["rk4_numba"] = oy
         return cpu_clock() - t0
 
@@ -80,7 +83,8 @@ def bench_3d(rep, q, log):
     def dop_numba():
         y, oy, cnt = y0.copy(), np.empty((n_out, ns)), np.zeros(5, np.int64)
         t0 = cpu_clock()
-        r = S["dop"](m.index, S["air"], 0.0, T, y, 0.0, p, p.copy(), RTOL, ATOL, True, grid, oy,
+        r = S["dop"](m.index, S["air"], 0.0, T, y, 0.0, p, p.copy(), S["ev"], RTOL, ATOL, True,
+                     grid, oy,
                      0, 10**9, cnt, math.inf)
         dt = cpu_clock() - t0
         runs["dop_numba"] = (oy, cnt.copy(), r[3])

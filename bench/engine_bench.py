@@ -15,6 +15,7 @@ import numpy as np
 from timing import cpu_clock as clock
 from timing import interleave, median
 
+from tethersim.engine.events import N_EV
 from tethersim.model.air.vector import uniform_air
 
 MODEL = 0  # 'derived' (generated.dispatch.MODEL_NAMES), the model of the C port
@@ -24,21 +25,23 @@ SAMPLES_PER_PERIOD = 200  # simulate()'s adaptive output grid
 
 
 def rk4_entry(S):
-    """rk4_run(model, air, k0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0)."""
+    """rk4_run(model, air, k0, y, h, n_steps, stride, p, pw, ev, locate, out_t, out_y, row0)."""
     from tethersim.engine.integrators.rk4 import rk4_run
     from tethersim.engine.integrators.select import specialised
     y, p = S["y0"].copy(), S["p"]
-    args = (uniform_air(), 0, y, 1.0, 1, 1, p, p.copy(), False, np.empty(1), np.empty((1, y.size)), 0)
+    args = (uniform_air(), 0, y, 1.0, 1, 1, p, p.copy(), np.empty(N_EV), False, np.empty(1),
+            np.empty((1, y.size)), 0)
     return specialised(rk4_run, MODEL, args)
 
 
 def dop853_entry(S):
-    """dop853_run(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y,
+    """dop853_run(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_t, out_y,
     i_out, max_steps, counters, t_pause)."""
     from tethersim.engine.integrators.dop853 import dop853_run
     from tethersim.engine.integrators.select import specialised
     y, p = S["y0"].copy(), S["p"]
-    args = (uniform_air(), 0.0, 1.0, y, 0.0, p, p.copy(), 1e-10, 1e-12, True, np.empty(1),
+    args = (uniform_air(), 0.0, 1.0, y, 0.0, p, p.copy(), np.empty(N_EV), 1e-10, 1e-12, True,
+            np.empty(1),
             np.empty((1, y.size)), 0, 1, np.zeros(5, np.int64), math.inf)
     return specialised(dop853_run, MODEL, args)
 

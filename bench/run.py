@@ -46,6 +46,8 @@ for path in (str(HERE), str(REPO)):
 import numpy as np  # noqa: E402
 from timing import clock, cpu_clock, interleave, median, spread, wall  # noqa: E402
 
+from tethersim.engine.events import event_parameters  # noqa: E402
+
 RTOL, ATOL = 1e-10, 1e-12
 PERIODS = 50
 RK4_STEPS = 10_000
@@ -303,6 +305,7 @@ def bench_rk4(rep: Report, S, q):
         "thread CPU time")
     sat, p, y0 = S["sat"], S["p"], S["y0"]
     pw = p.copy()
+    ev = event_parameters(sat, "derived")
     N = RK4_STEPS
     h = PERIODS * sat.period / N
     bufs = {k: (np.empty(N), np.empty((N, 10))) for k in ("numba", "c", "c_native")}
@@ -321,8 +324,8 @@ def bench_rk4(rep: Report, S, q):
         return t
 
     res = interleave({
-        "numba": timer("numba", lambda y, ot, oy: rk4_run(0, AIR, 0, y, h, N, 1, p, pw, False,
-                                                           ot, oy, 0)),
+        "numba": timer("numba", lambda y, ot, oy: rk4_run(0, AIR, 0, y, h, N, 1, p, pw, ev,
+                                                           False, ot, oy, 0)),
         "c": timer("c", lambda y, ot, oy: S["c"].rk4_run(0.0, y, h, N, 1, p, ot, oy, 0)),
         "c_native": timer("c_native", lambda y, ot, oy: S["c_native"].rk4_run(
             0.0, y, h, N, 1, p, ot, oy, 0)),
@@ -361,8 +364,8 @@ def dop853_numba(S, periods, locate=True):
     cnt = np.zeros(5, dtype=np.int64)
     pw = p.copy()
     t0 = cpu_clock()
-    r = dop853_run(0, AIR, 0.0, T, y, 0.0, p, pw, RTOL, ATOL, locate, out_t, out_y, 0, 10**9,
-                   cnt, math.inf)
+    r = dop853_run(0, AIR, 0.0, T, y, 0.0, p, pw, event_parameters(sat, "derived"), RTOL, ATOL,
+                   locate, out_t, out_y, 0, 10**9, cnt, math.inf)
     dt = cpu_clock() - t0
     assert r[3] == 0, r
     return dt, cnt, y, out_y

@@ -5,7 +5,9 @@ import numpy as np
 import pytest
 
 import tethersim as ts
-from tethersim.engine.domain import BALLOON_REACH, REENTRY_ALTITUDE, ROLL_LIMIT, reach
+from tethersim.engine.domain import MAX_STRETCH, REENTRY_ALTITUDE, ROLL_LIMIT, reach
+from tethersim.engine.evaluate import tether_margin_series
+from tethersim.engine.events import SLOT
 from tethersim.model.satellite import ROLL_LIMIT_DEG
 
 
@@ -34,14 +36,20 @@ def test_a_circular_orbit_is_held_and_does_not_re_enter(sat):
     assert ts.simulate(sat, periods=1, progress=False).status == "ok"
 
 
-def test_a_balloon_blown_away_leaves_the_domain(sat):
-    # 115 km (allowed knowingly): the dense air pulls the balloon off its tethers
+def test_a_balloon_blown_away_leaves_the_domain_where_a_tether_passes_its_stretch(sat):
+    # 115 km (allowed knowingly): the dense air pulls the balloon off its tethers; the
+    # stretch limit (20 x 6 m) comes before the reach (10 x 16.5 m): the first limit stops
     low = sat.replace(altitude=115e3, allow_implausible=True)
     res = ts.simulate(low, periods=0.05, progress=False)
-    assert res.status == "left-domain"
-    assert f"allowed <= {reach(low):.4g} m" in res.message
-    d = (res.x[-1] ** 2 + res.y[-1] ** 2) ** 0.5
-    assert d > reach(low) == BALLOON_REACH * max(low.l10 + low.b, low.l20 + low.a)
+    assert res.status == "left-domain" and res.event in ("tether 1 stretch", "tether 2 stretch")
+    assert f"allowed <= {MAX_STRETCH:g} x" in res.message and "\n" not in res.message
+    assert res.t[-1] == res.event_time
+    g = tether_margin_series(res.layout.index, res.states, res.parameters)
+    stretch = (g + np.array([low.l10, low.l20])) / np.array([low.l10, low.l20])
+    j = SLOT[res.event] - SLOT["tether 1 stretch"]
+    assert np.all(stretch[:-1] < MAX_STRETCH) and stretch[-1, j] >= MAX_STRETCH
+    d = np.hypot(res.x, res.y)
+    assert np.all(d < reach(low))
 
 
 def _crossing(sat, periods):
@@ -56,7 +64,7 @@ def _crossing(sat, periods):
 @pytest.mark.parametrize("rate_in_n", [3.0, 10.0, 30.0, 100.0])
 def test_a_tumbling_roll_leaves_the_domain_within_a_sample_of_passing_the_limit(sat, rate_in_n):
     """Rolled over by a roll rate of 3-100 n: from 10 n on the roll passes 80° between two
-    of the (200 per orbit) samples, so the intervals are checked as well as the samples."""
+    of the (200 per orbit) samples; the limit is located in the loop all the same."""
     tumbling = sat.replace(initial_3d={"phi_dot": rate_in_n * sat.omega})
     res = ts.simulate(tumbling, periods=0.5, model="3d", progress=False)
     assert res.status == "left-domain"
@@ -65,6 +73,7 @@ def test_a_tumbling_roll_leaves_the_domain_within_a_sample_of_passing_the_limit(
     t_cross, fine = _crossing(tumbling, 0.5)
     step = res.t[1] - res.t[0]
     assert abs(res.t[-1] - t_cross) <= step + fine  # the first sample (or interval) outside
+    assert res.event == "roll" and res.event_time == res.t[-1]
     phi = np.abs(res.series("phi"))
     assert np.all(phi[:-1] <= ROLL_LIMIT) and np.all(np.isfinite(res.states))
     assert ts.outcome(res).class_name == "failed"
@@ -77,47 +86,3 @@ def test_a_librating_roll_stays_in_the_domain(sat):
                       progress=False)
     assert res.status == "ok"
     assert np.radians(30.0) < np.max(np.abs(res.series("phi"))) < ROLL_LIMIT
-
-
-def _samples(sat, t, phi, phi_dot, theta_dot=None):
-    """A stand-in result with the series the roll check reads (no kernel compiled)."""
-    from types import SimpleNamespace
-
-    series = {"phi": np.asarray(phi, float), "phi_dot": np.asarray(phi_dot, float),
-              "theta_dot": np.zeros(len(t)) if theta_dot is None else np.asarray(theta_dot)}
-    return SimpleNamespace(t=np.asarray(t, float), satellite=sat, series=series.__getitem__)
-
-
-def test_roll_beyond_the_limit_ends_at_that_sample_with_the_crossing_interpolated(sat):
-    from tethersim.engine.domain import _roll_violation
-
-    lim = np.degrees(ROLL_LIMIT)
-    phi = np.radians([70.0, lim - 2.0, lim + 2.0, lim + 5.0])
-    v = min(_roll_violation(_samples(sat, [0, 10, 20, 30], phi, [1e-3] * 4), 4),
-            key=lambda v: v.index)  # the first outside, as first_violation picks it
-    assert (v.index, v.status, v.time) == (2, "left-domain", pytest.approx(15.0))
-    assert f"roll |phi| = {lim + 2:.1f} deg" in v.message and "\n" not in v.message
-
-
-def test_a_roll_too_fast_for_the_samples_ends_at_the_interval_it_could_cross_in(sat):
-    """Both samples near 0°, but at 0.4 rad/s the boom turns 229° in 10 s: enough to reach
-    within 10° of the orbit normal (80° away) and come back, unseen by the samples; at
-    0.2 rad/s (115° in 10 s) it cannot go there and back."""
-    from tethersim.engine.domain import _roll_violation
-
-    (v,) = _roll_violation(_samples(sat, [0, 10, 20], [0.0, 0.01, 0.02], [0.4] * 3), 3)
-    assert v.index == 1 and "may have passed" in v.message
-    assert _roll_violation(_samples(sat, [0, 10, 20], [0.0, 0.01, 0.02], [0.2] * 3), 3) == []
-
-
-def test_a_slow_roll_libration_far_from_the_limit_is_inside(sat):
-    from tethersim.engine.domain import _roll_violation
-
-    t = np.linspace(0, 3 * sat.period, 601)
-    w = 2 * sat.omega  # out-of-plane libration at 2n, 60° amplitude
-    phi, phi_dot = np.radians(60) * np.sin(w * t), np.radians(60) * w * np.cos(w * t)
-    assert _roll_violation(_samples(sat, t, phi, phi_dot), t.size) == []
-    # a repeated sample time is no interval (and no division by zero)
-    t2 = np.array([0.0, 10.0, 10.0, 20.0])
-    assert _roll_violation(_samples(sat, t2, [0.1, 0.2, 0.2, 0.3], [0.01, 0.02, 0.03, 0.01]),
-                           4) == []

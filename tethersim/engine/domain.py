@@ -16,19 +16,16 @@ A run that leaves the model's domain ends with a status that says so, never
                  angles are singular at 90° (docs/three-d.md);
 ``diverged``     a non-finite state (the integrators report it themselves).
 
-:func:`first_violation` scans the output samples (the integrators' dense output,
-or every RK4 step) and returns the first one outside, with the reason;
-``simulate`` truncates the run there.  The re-entry time and the time the roll
-passes its limit are interpolated linearly between the last sample inside and
-the first outside.
+Each limit is a stopping event of engine/events.py, located by the integrators
+inside the compiled loop (every step, RK4 and adaptive alike) to the accuracy of
+a taut/slack switch; the run ends just past the crossing, its last sample the
+located state at the located time.  This module holds the limits and words them:
+:func:`event_message` for a run, :func:`state_violation` for a single state.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
-from tethersim.engine.evaluate import domain_scan
 from tethersim.model.satellite import ROLL_LIMIT_DEG
 
 REENTRY_ALTITUDE = 120e3  # m: default re-entry threshold (issue 12; Vallado's table holds to 0)
@@ -45,33 +42,10 @@ BALLOON_REACH = 10.0  # × max(l10 + b, l20 + a): as the plausibility limit on t
 # 11.4 (a digit of the error tolerance), at 85° 22.9, at 89° 115 and unbounded at 90°.
 # A boom rolled 80° lies within 10° of the orbit normal: it has left the gravity-gradient
 # attitude the model is for, so stopping there loses no behaviour anyone asks about.
-# The samples (>= 200 per orbit) are checked, and so is every interval between two of
-# them that a fast roll could have crossed into the band unseen (_roll_violation).
-# The same limit bounds the start (Satellite.initial_3d).
+# The limit is an event located at every step (engine/events.py), so a fast roll
+# cannot cross it unseen between samples.  The same limit bounds the start
+# (Satellite.initial_3d).
 ROLL_LIMIT = np.radians(ROLL_LIMIT_DEG)
-ROLL_PATH_MARGIN = 2.0  # × the sampled change of the boom's turn rate (_roll_violation)
-
-
-@dataclass(frozen=True)
-class Violation:
-    """The first sample outside the domain.
-
-    Attributes
-    ----------
-    index : int
-        First sample outside (the run keeps the samples before it and this one).
-    time : float
-        When it left [s]; for a re-entry, interpolated to the threshold crossing.
-    status : str
-        ``"re-entered"`` or ``"left-domain"``.
-    message : str
-        One line saying what left the domain, with the limit.
-    """
-
-    index: int
-    time: float
-    status: str
-    message: str
 
 
 def reach(sat) -> float:
@@ -79,11 +53,52 @@ def reach(sat) -> float:
     return BALLOON_REACH * max(sat.l10 + sat.b, sat.l20 + sat.a)
 
 
+def _limit_phrase(sat, name: str) -> str:
+    """What the stopping event ``name`` (engine/events.py EVENTS) allows, in words."""
+    if name == "balloon reach":
+        return (f"allowed <= {reach(sat):.4g} m, {BALLOON_REACH:g} x the longest tether "
+                f"path")
+    if name == "roll":
+        return (f"allowed |phi| <= {ROLL_LIMIT_DEG:g} deg: the roll-pitch-yaw angles are "
+                f"singular at 90 deg")
+    return f"allowed <= {MAX_STRETCH:g} x"  # a tether stretch
+
+
+def event_message(sat, name: str, t: float) -> str:
+    """One line saying which stopping limit a run reached, and when.
+
+    Parameters
+    ----------
+    sat : Satellite
+        The satellite run.
+    name : str
+        The stopping event (a terminal name of engine/events.py's EVENTS).
+    t : float
+        The located time of the event [s].
+
+    Returns
+    -------
+    str
+        E.g. "re-entered: the boom's COM fell below 120 km at t = ... s (... h)".
+    """
+    if name == "re-entry":
+        return (f"re-entered: the boom's COM fell below {sat.reentry_altitude / 1e3:g} km "
+                f"at t = {t:.6g} s ({t / 3600:.3g} h)")
+    what = {"roll": f"roll |phi| passed {ROLL_LIMIT_DEG:g} deg",
+            "balloon reach": f"balloon passed {reach(sat):.4g} m from the COM",
+            "tether 1 stretch": f"tether 1 stretched past {MAX_STRETCH:g} x its rest length",
+            "tether 2 stretch": f"tether 2 stretched past {MAX_STRETCH:g} x its rest "
+                                f"length"}[name]
+    return f"left the model's domain: {what} at t = {t:.6g} s ({_limit_phrase(sat, name)})"
+
+
 def state_violation(sat, model: str, y) -> str:
     """Why one state of ``model`` lies outside the model's domain, or "" if inside.
 
-    The same limits as :func:`first_violation` (balloon reach, tether stretch, the
-    3-D roll), for a state no run produced, e.g. an equilibrium.
+    The stopping limits a run is held to (balloon reach, tether stretch, the 3-D
+    roll; not the re-entry: a circular orbit's state has no altitude), evaluated
+    by the same compiled event function (engine/events.py), for a state no run
+    produced, e.g. an equilibrium.
 
     Parameters
     ----------
@@ -99,177 +114,26 @@ def state_violation(sat, model: str, y) -> str:
     str
         One line naming the limit passed (empty: inside the domain).
     """
+    from tethersim.engine.events import EVENTS, SLOT, event_parameters, events_at
     from tethersim.model.inputs import parameter_vector
     from tethersim.model.registry import get_model
 
     lay = get_model(model)
     names = lay.state
-    Y = np.ascontiguousarray(np.asarray(y, dtype=float).reshape(1, -1))
-    _, i_far, d_far, i_over, j_over, s_over = domain_scan(
-        lay.index, Y, parameter_vector(sat, model), names.index("delta_x"),
-        names.index("delta_y"), names.index("delta_z") if "delta_z" in names else -1,
-        sat.l10, sat.l20, sat.a, sat.b, reach(sat) ** 2, MAX_STRETCH)
-    if i_over >= 0:
-        return (f"tether {j_over + 1} stretched to {s_over:.3g} x its rest length (allowed "
-                f"<= {MAX_STRETCH:g} x)")
-    if i_far >= 0:
-        return (f"balloon {np.sqrt(d_far):.4g} m from the COM (allowed <= {reach(sat):.4g} m, "
-                f"{BALLOON_REACH:g} x the longest tether path)")
-    if "phi" in names and abs(Y[0, names.index("phi")]) > ROLL_LIMIT:
-        return (f"roll |phi| = {np.degrees(abs(Y[0, names.index('phi')])):.1f} deg (allowed "
+    y = np.asarray(y, dtype=float)
+    stops = [e.name for e in EVENTS if e.terminal and e.name != "re-entry"]
+    p = parameter_vector(sat, model)
+    g = events_at(lay.index, y, p, event_parameters(sat, model, stops))
+    for j in (SLOT["tether 1 stretch"], SLOT["tether 2 stretch"]):
+        if not g[j] > 0.0:
+            k = j - SLOT["tether 1 stretch"]
+            l0 = (sat.l10, sat.l20)[k]
+            return (f"tether {k + 1} stretched to {(g[k] + l0) / l0:.3g} x its rest length "
+                    f"({_limit_phrase(sat, EVENTS[j].name)})")
+    if not g[SLOT["balloon reach"]] > 0.0:
+        d = np.sqrt(reach(sat) ** 2 - g[SLOT["balloon reach"]])
+        return f"balloon {d:.4g} m from the COM ({_limit_phrase(sat, 'balloon reach')})"
+    if not g[SLOT["roll"]] > 0.0:
+        return (f"roll |phi| = {np.degrees(abs(y[names.index('phi')])):.1f} deg (allowed "
                 f"<= {ROLL_LIMIT_DEG:g} deg)")
     return ""
-
-
-def first_violation(res, altitude=None) -> Violation | None:
-    """The first sample of ``res`` outside the model's domain, or None.
-
-    Parameters
-    ----------
-    res : SimResult
-        A run (its samples are checked, not the steps between them).
-    altitude : numpy.ndarray, optional
-        The reference point's altitude per sample [m] (default ``res.altitude``).
-
-    Returns
-    -------
-    Violation or None
-    """
-    sat, lay = res.satellite, res.layout
-    n = res.t.size
-    if n == 0:
-        return None
-    names = lay.state
-    # one compiled pass: the first non-finite sample, balloon too far, tether over-stretched
-    last, i_far, d_far, i_over, j_over, s_over = domain_scan(
-        lay.index, np.ascontiguousarray(res.states), res.parameters,
-        names.index("delta_x"), names.index("delta_y"),
-        names.index("delta_z") if "delta_z" in names else -1, sat.l10, sat.l20, sat.a, sat.b,
-        reach(sat) ** 2, MAX_STRETCH)
-    candidates = []
-    reentry = reentry_violation(res, last, altitude)
-    if reentry is not None:
-        candidates.append(reentry)
-    if i_far >= 0:
-        i = i_far
-        candidates.append(Violation(i, float(res.t[i]), "left-domain",
-                                    f"left the model's domain: balloon {np.sqrt(d_far):.4g} m "
-                                    f"from the COM at t = {res.t[i]:.6g} s (allowed <= "
-                                    f"{reach(sat):.4g} m, {BALLOON_REACH:g} x the longest "
-                                    f"tether path)"))
-    if "phi" in names:
-        candidates += _roll_violation(res, last)
-    if i_over >= 0:
-        i = i_over
-        candidates.append(Violation(i, float(res.t[i]), "left-domain",
-                                    f"left the model's domain: tether {j_over + 1} stretched to "
-                                    f"{s_over:.3g} x its rest length at t = "
-                                    f"{res.t[i]:.6g} s (allowed <= {MAX_STRETCH:g} x)"))
-    return min(candidates, key=lambda v: v.index) if candidates else None
-
-
-def reentry_violation(res, last: int | None = None, altitude=None) -> Violation | None:
-    """The first sample of ``res`` below the re-entry altitude, or None.
-
-    Parameters
-    ----------
-    res : SimResult
-        A run; a circular orbit is held at its altitude (checked at load time), so
-        only a free orbit's (or a given ``altitude``) can fall below.
-    last : int, optional
-        Samples to look at (default all).
-    altitude : numpy.ndarray, optional
-        The reference point's altitude per sample [m] (default ``res.altitude``).
-
-    Returns
-    -------
-    Violation or None
-        Status ``"re-entered"``, the time interpolated linearly to the crossing.
-    """
-    if res.layout.orbit != "free" and altitude is None:
-        return None
-    h_min = getattr(res.satellite, "reentry_altitude", REENTRY_ALTITUDE)
-    h = res.altitude if altitude is None else altitude
-    below = np.nonzero(h[:last] < h_min)[0]
-    if not below.size:
-        return None
-    i = int(below[0])
-    t = float(res.t[i])
-    if i > 0:  # linear interpolation to the crossing
-        h0, h1 = h[i - 1], h[i]
-        t = float(res.t[i - 1] + (res.t[i] - res.t[i - 1]) * (h0 - h_min) / (h0 - h1))
-    return Violation(i, t, "re-entered", f"re-entered: altitude {h[i] / 1e3:.1f} km fell below "
-                                         f"{h_min / 1e3:g} km at t = {t:.6g} s ({t / 3600:.3g} h)")
-
-
-def _roll_violation(res, last: int) -> list:
-    """[Violation] where |φ| passes ROLL_LIMIT (3-D models), or [].
-
-    Two tests, the first that fires wins: a sample with |φ| > ROLL_LIMIT (the
-    crossing time interpolated linearly), or an interval between two samples
-    during which the boom could have come within 90° − ROLL_LIMIT of the orbit
-    normal ±z unseen (a fast roll: a sample near 90° would otherwise be missed and
-    the run continue in the badly conditioned angles).  The boom ê = (cos φ sin θ,
-    cos φ cos θ, sin φ) turns at |ê̇| = √(φ̇² + cos²φ θ̇²); over an interval Δt it
-    travels about Δt (max|ê̇| + a Δt / 2), the faster end's rate plus what the
-    rate can gain inside, a the rate's change per second estimated from this and
-    the neighbouring intervals (at least the gravity-gradient 3n²) times
-    ``ROLL_PATH_MARGIN``.  Within the band it would have been no farther than
-    90° − ROLL_LIMIT from a pole, so it cannot have entered the band when the two
-    samples' distances from that pole add up to more than the path plus twice the
-    band.  An estimate from the samples, not a bound: a run that grazes the band
-    for less than a sample may still pass.
-    """
-    n = min(last, res.t.size)
-    if n == 0:
-        return []
-    phi = res.series("phi")[:n]
-    band = np.pi / 2 - ROLL_LIMIT
-    out = []
-    beyond = np.nonzero(np.abs(phi) > ROLL_LIMIT)[0]
-    if beyond.size:
-        i = int(beyond[0])
-        t = float(res.t[i])
-        if i > 0:  # linear interpolation to the crossing
-            p0, p1 = abs(phi[i - 1]), abs(phi[i])
-            t = float(res.t[i - 1] + (res.t[i] - res.t[i - 1]) * (ROLL_LIMIT - p0) / (p1 - p0))
-        out.append(Violation(i, t, "left-domain",
-                             f"left the model's domain: roll |phi| = {np.degrees(abs(phi[i])):.1f} "
-                             f"deg at t = {res.t[i]:.6g} s, beyond {ROLL_LIMIT_DEG:g} deg at "
-                             f"t = {t:.6g} s (allowed |phi| <= {ROLL_LIMIT_DEG:g} deg: the "
-                             f"roll-pitch-yaw angles are singular at 90 deg)"))
-    if n > 1:
-        speed = np.hypot(res.series("phi_dot")[:n], np.cos(phi) * res.series("theta_dot")[:n])
-        dt = np.diff(res.t[:n])
-        w = res.satellite.omega
-        # the turn rate's change per second, each interval's and its neighbours' (or the
-        # gravity-gradient 3n² where larger), as the acceleration within the interval
-        with np.errstate(divide="ignore", invalid="ignore"):  # a repeated time: no interval
-            rate = np.where(dt > 0, np.abs(np.diff(speed)) / dt, 0.0)
-        acc = np.maximum(rate, 3 * w * w)
-        acc = np.maximum(acc, np.maximum(np.append(acc[1:], 0.0), np.insert(acc[:-1], 0, 0.0)))
-        path = dt * (np.maximum(speed[:-1], speed[1:]) + ROLL_PATH_MARGIN * acc * dt / 2)
-        reach_pole = np.minimum(np.pi - phi[:-1] - phi[1:], np.pi + phi[:-1] + phi[1:])
-        unseen = np.nonzero(reach_pole <= path + 2 * band)[0]
-        if unseen.size:
-            i = int(unseen[0])
-            out.append(Violation(i + 1, float(res.t[i]), "left-domain",
-                                 f"left the model's domain: roll may have passed "
-                                 f"{ROLL_LIMIT_DEG:g} deg between t = {res.t[i]:.6g} s and "
-                                 f"{res.t[i + 1]:.6g} s (the boom turns at up to "
-                                 f"{np.degrees(max(speed[i], speed[i + 1])):.3g} deg/s; allowed "
-                                 f"|phi| <= {ROLL_LIMIT_DEG:g} deg: the roll-pitch-yaw angles "
-                                 f"are singular at 90 deg)"))
-    return out
-
-
-def below_reentry(sat, model: str, state) -> bool:
-    """Whether the boom's COM at ``state`` (a free-orbit model's integrated state) is
-    below the re-entry altitude: the loop's cue to stop and let simulate() truncate."""
-    from tethersim.model.constants import R_EARTH
-    from tethersim.model.registry import get_model
-    lay = get_model(model)
-    if "r" not in lay.state:
-        return False
-    return bool(state[lay.state.index("r")] - R_EARTH
-                < getattr(sat, "reentry_altitude", REENTRY_ALTITUDE))

@@ -13,8 +13,6 @@ more than a 5-orbit run; it made every sweep point's outcome cost that).
 """
 from __future__ import annotations
 
-import math
-
 import numpy as np
 from numba import literally, njit
 from numba.extending import overload
@@ -150,69 +148,6 @@ def _tether_margin_series(model, Y, p):
     return out
 
 
-@njit(cache=True, inline="always")
-def _balloon_distance2(Y, i, ix, iy, iz):
-    """δx² + δy² (+ δz² when iz >= 0) of sample i: numpy's arithmetic (x**2 is x*x)."""
-    d = Y[i, ix] ** 2 + Y[i, iy] ** 2
-    if iz >= 0:
-        d = d + Y[i, iz] ** 2
-    return d
-
-
-@njit(cache=True, nogil=True)
-def _domain_scan(model, Y, p, ix, iy, iz, l10, l20, a, b, reach2, max_stretch):
-    """One pass over the samples for engine/domain.py (the same arithmetic as numpy's).
-
-    Returns
-    -------
-    tuple
-        (last: samples before the first non-finite one; first sample with the
-        balloon's squared distance δx² + δy² (+ δz² when iz >= 0) > reach2, or -1,
-        and that distance²; first sample with a tether's λ_j / l_j0 > max_stretch,
-        or -1, the tether (0 or 1, the more stretched) and its λ / l0).
-
-    Notes
-    -----
-    The tether lengths are evaluated only where a stretch is possible: tether j runs
-    from the balloon (at distance d from the boom's COM) to a boom end (b or a from
-    it), so λ_j <= d + end_j, and λ_j > max_stretch l_j0 needs d > max_stretch l_j0
-    − end_j.  The first sample over the limit is the same; most runs never come
-    near it, and the scan costs a few nanoseconds a sample instead of two hypot.
-    """
-    literally(model)
-    Y, p = borrow(Y), borrow(p)
-    n, m = Y.shape
-    last = n
-    for i in range(n):
-        for k in range(m):
-            if not math.isfinite(Y[i, k]):
-                last = i
-                break
-        if last < n:
-            break
-    i_far, d_far = -1, 0.0
-    for i in range(last):
-        d = _balloon_distance2(Y, i, ix, iy, iz)
-        if d > reach2:
-            i_far, d_far = i, d
-            break
-    # below this balloon distance no tether can be over the limit (Notes); the margin
-    # 1e-9 keeps the bound conservative against the rounding of d
-    near = max(min(max_stretch * l10 - b, max_stretch * l20 - a), 0.0) * (1.0 - 1e-9)
-    g = np.empty(2)
-    i_over, j_over, s_over = -1, 0, 0.0
-    for i in range(last):
-        if _balloon_distance2(Y, i, ix, iy, iz) <= near * near:
-            continue
-        model_tether_margins(model, Y[i], p, g)
-        s0 = g[0] / l10 + 1.0
-        s1 = g[1] / l20 + 1.0
-        if s0 > max_stretch or s1 > max_stretch:
-            i_over, j_over, s_over = i, (0 if s0 >= s1 else 1), max(s0, s1)
-            break
-    return last, i_far, d_far, i_over, j_over, s_over
-
-
 def family_forces_series(model: int, air, T, Y, p) -> np.ndarray:
     """Q[i, f, k]: generalized force of family f on coordinate k at sample (T[i], Y[i]) (SI).
 
@@ -235,8 +170,3 @@ def family_force_peaks(model: int, air, T, Y, p) -> np.ndarray:
 def tether_margin_series(model: int, Y, p) -> np.ndarray:
     """g[i, j] = λ_j − l_j0 [m] of tether j at sample i (taut when positive; model index ``model``)."""
     return call(_tether_margin_series, model, Y, p)
-
-
-def domain_scan(model: int, Y, p, ix, iy, iz, l10, l20, a, b, reach2, max_stretch) -> tuple:
-    """One compiled pass over the samples for engine/domain.py (see :func:`_domain_scan`)."""
-    return call(_domain_scan, model, Y, p, ix, iy, iz, l10, l20, a, b, reach2, max_stretch)

@@ -20,10 +20,8 @@ boom's own.
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 from datetime import datetime, timedelta
 
-from tethersim.engine.domain import reentry_violation
 from tethersim.engine.result import SimResult
 from tethersim.engine.simulate import SAMPLES_PER_PERIOD, _run_adaptive
 from tethersim.model.params import PARAMETERS
@@ -46,7 +44,7 @@ def continue_released(res: SimResult, max_time_s: float) -> tuple:
     ----------
     res : SimResult
         A free-orbit run whose status is ``"left-domain"`` (its last sample is
-        the state where the balloon was lost).
+        the located state where the balloon was lost).
     max_time_s : float
         Cap on the continuation [s], counted from the start of ``res``.
 
@@ -75,13 +73,9 @@ def continue_released(res: SimResult, max_time_s: float) -> tuple:
     n_out = max(2, math.ceil(SAMPLES_PER_PERIOD * periods))
     rtol = res.rtol if res.rtol is not None else 1e-10
     atol = res.atol if res.atol is not None else 1e-12
-    # the loop stops itself soon after the boom passes the re-entry altitude
+    # the loop stops itself at the re-entry, its only stopping event here (module docstring)
     run = _run_adaptive(sat, periods, n_out, res.model, rtol, atol, res.locate_switches,
-                        False, start=res.states[-1])
-    hit = reentry_violation(run)
-    if hit is None:
+                        False, start=res.states[-1], stops=("re-entry",))
+    if run.status != "re-entered":
         return None, run
-    keep = hit.index + 1
-    run = replace(run, t=run.t[:keep].copy(), states=run.states[:keep].copy(),
-                  status="re-entered", message=hit.message, reentry_time=hit.time)
-    return t_lost + hit.time, run
+    return t_lost + run.reentry_time, run

@@ -107,7 +107,15 @@ class SimResult:
         Length of the run asked for, in orbits.
     reentry_time : float or None
         When the boom's COM fell below the re-entry altitude [s] (status
-        ``"re-entered"``), else None.
+        ``"re-entered"``; located in the loop, as ``event_time``), else None.
+    event : str or None
+        The stopping limit that ended the run (a terminal event name of
+        tethersim.engine.events.EVENTS: "re-entry", "roll", "balloon reach",
+        "tether 1 stretch", "tether 2 stretch"), else None.  The last sample is
+        the state just past it.
+    event_time : float or None
+        When it was reached [s], located to the switch location's accuracy
+        (the last sample's time).
     fine_t, fine_states : numpy.ndarray or None
         The same run on the metrics grid (at least 200 samples per orbit) when
         the output grid asked for is coarser; the output is every k-th of them.
@@ -137,6 +145,8 @@ class SimResult:
     wall_time: float = field(default=0.0, compare=False)
     periods: float | None = None  # length of the run asked for, in orbits (for reruns)
     reentry_time: float | None = None  # s, when the COM fell below the re-entry altitude
+    event: str | None = None  # the stopping limit that ended the run (engine/events.py)
+    event_time: float | None = None  # s, located in the loop
     # the integrator's dense output on the metrics grid when the output grid is coarser
     fine_t: np.ndarray | None = field(default=None, repr=False)
     fine_states: np.ndarray | None = field(default=None, repr=False)

@@ -5,6 +5,8 @@ for analysis) and "rk4" (fixed step as in thesis Eqs 4.1-4.5; with
 ``locate_switches=False``, the default for RK4, it is the thesis's scheme and
 the result is labelled faithful).  Both run their whole loop in numba, in
 chunks so that a progress bar can be shown and Ctrl-C keeps what finished.
+Both locate the model's stopping limits (engine/events.py) in the loop and end
+a run that reaches one just past it: its last sample is the located state.
 """
 from __future__ import annotations
 
@@ -15,9 +17,11 @@ import warnings
 import numpy as np
 from tqdm.auto import tqdm
 
-from tethersim.engine.domain import below_reentry, first_violation
-from tethersim.engine.dynamics import has_com_orbit, initial_state, state_size
-from tethersim.engine.integrators.dop853 import STATUS_OK, dop853_run
+from tethersim.engine.domain import event_message
+from tethersim.engine.dynamics import initial_state, state_size
+from tethersim.engine.events import EVENTS, STOPS, event_parameters
+from tethersim.engine.integrators.dop853 import STATUS_EVENT, STATUS_OK, dop853_run
+from tethersim.engine.integrators.rk4 import STATUS_EVENT as RK4_EVENT
 from tethersim.engine.integrators.rk4 import rk4_run
 from tethersim.engine.integrators.select import specialised
 from tethersim.engine.linearise import rk4_amplification
@@ -141,8 +145,10 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
     SimResult
         The samples and counters.  ``status`` is ``"ok"``, ``"diverged"``,
         ``"failed"``, ``"interrupted"`` (Ctrl-C: everything finished is kept),
-        ``"re-entered"`` or ``"left-domain"`` (tethersim.engine.domain: the run
-        is truncated at the first sample outside the model's domain).
+        ``"re-entered"`` or ``"left-domain"`` (a stopping limit of
+        tethersim.engine.events, located in the loop: the run ends just past it,
+        its last sample the located state; ``event`` and ``event_time`` say
+        which and when).
 
     Raises
     ------
@@ -177,8 +183,7 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
         steps = _check_positive("steps", steps if steps is not None
                                 else max(1, round(STEPS_PER_PERIOD * periods)), integer=True)
         locate = False if locate_switches is None else bool(locate_switches)
-        run = _within_domain(_run_rk4(sat, periods, steps, model, locate, progress,
-                                      step_warning))
+        run = _run_rk4(sat, periods, steps, model, locate, progress, step_warning)
         return estimate_error(run) if check else run
     rtol = _check_range("rtol", rtol, RTOL_RANGE)
     atol = _check_range("atol", atol, ATOL_RANGE)
@@ -193,27 +198,17 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
     # (METRIC_SAMPLES_PER_PERIOD), whatever output the caller asked for: the output is
     # every refine-th sample of it, exactly the grid asked for (docs/metrics.md)
     refine = max(1, math.ceil(METRIC_SAMPLES_PER_PERIOD * periods / n_out))
-    run = _within_domain(_run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
-                                       refine))
+    run = _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress, refine)
     return estimate_error(run) if check else run
 
 
-def _within_domain(run: SimResult) -> SimResult:
-    """The run up to the first sample outside the model's domain (engine/domain.py)."""
-    from dataclasses import replace
-
-    fine = run if run.fine_t is None else replace(run, t=run.fine_t, states=run.fine_states)
-    v = first_violation(fine)
-    if v is None:
-        return run
-    t_out = fine.t[v.index]  # keep every sample up to the first one outside
-    keep, keep_fine = np.searchsorted(run.t, t_out, "right"), v.index + 1
-    # a run that then diverged says so too (an unstable RK4 step flings the balloon off first)
-    message = v.message + (f"; then {run.message}" if run.status != "ok" and run.message else "")
-    return replace(run, t=run.t[:keep].copy(), states=run.states[:keep].copy(), status=v.status,
-                   message=message, reentry_time=v.time if v.status == "re-entered" else None,
-                   fine_t=None if run.fine_t is None else run.fine_t[:keep_fine].copy(),
-                   fine_states=None if run.fine_t is None else run.fine_states[:keep_fine].copy())
+def _stopped(sat, slot: int, t: float) -> tuple:
+    """(status, message, other SimResult fields) of a run stopped by stopping event
+    ``slot`` (engine/events.py) at time t."""
+    event = EVENTS[slot]
+    return (event.status, event_message(sat, event.name, t),
+            dict(event=event.name, event_time=t,
+                 reentry_time=t if event.name == "re-entry" else None))
 
 
 def estimate_error(run: SimResult) -> SimResult:
@@ -279,27 +274,32 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
             f"(spurious amplification per step {amp:.4g} > 1): a tether oscillation will grow "
             f"numerically. "
             f"Use more steps or method='adaptive'."), stacklevel=3)
+    ev = event_parameters(sat, model)
     y = initial_state(m, initial_model_state(sat, model), sat.r0, sat.r0 * sat.omega)
     out_t = np.empty(steps + 1)
     out_y = np.empty((steps + 1, state_size(m)))
     out_t[0], out_y[0] = 0.0, y
     row, switches, status = 1, 0, "ok"
-    message = ""
+    message, stop = "", {}
     t0 = time.perf_counter()
     chunk = min(steps, RK4_PAUSE_STEPS)  # the same pauses with or without a bar
     done = 0
     # this model's compiled loop, chosen (compiled or loaded) once, before the bar
     # starts: its rate, hence its ETA, then counts integration only
-    loop = specialised(rk4_run, m, (air, 0, y, h, chunk, 1, p, pw, locate, out_t, out_y,
+    loop = specialised(rk4_run, m, (air, 0, y, h, chunk, 1, p, pw, ev, locate, out_t, out_y,
                                     row))
     with _bar(periods, f"{sat.name} RK4", progress) as bar:
         try:
             while done < steps:
                 n = min(chunk, steps - done)
-                rows, sw, st = loop(m, air, done, y, h, n, 1, p, pw, locate, out_t,
-                                    out_y, row)
+                rows, sw, st, slot, t_hit = loop(m, air, done, y, h, n, 1, p, pw, ev, locate,
+                                                 out_t, out_y, row)
                 row += rows
                 switches += sw
+                if st == RK4_EVENT:  # the last row is the located state (rk4_run)
+                    done += rows
+                    status, message, stop = _stopped(sat, slot, t_hit)
+                    break
                 done += n
                 _advance(bar, done * h / sat.period)
                 if st != 0:
@@ -315,7 +315,7 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
                      periods=periods,
                      locate_switches=locate, nfev=4 * done, n_accepted=done,
                      n_switches=switches, status=status, message=message,
-                     wall_time=time.perf_counter() - t0)
+                     wall_time=time.perf_counter() - t0, **stop)
 
 
 def refined_grid(t_end: float, n_out: int, refine: int) -> np.ndarray:
@@ -328,8 +328,9 @@ def refined_grid(t_end: float, n_out: int, refine: int) -> np.ndarray:
 
 
 def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
-                  refine: int = 1, start=None) -> SimResult:
+                  refine: int = 1, start=None, stops=STOPS) -> SimResult:
     t_end = periods * sat.period
+    ev = event_parameters(sat, model, stops)  # stops: the stopping events watched
     m, air = _kernel_args(sat, model, t_end)
     p = parameter_vector(sat, model)
     pw = p.copy()
@@ -340,40 +341,39 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
     out_y = np.full((out_t.size, state_size(m)), np.nan)
     out_y[0] = y
     counters = np.zeros(5, dtype=np.int64)
-    t, h, i_out, status, message, calls = 0.0, 0.0, 1, "ok", "", 0
+    t, h, i_out, status, message, calls, stop = 0.0, 0.0, 1, "ok", "", 0, {}
     max_steps = int(MAX_STEPS_PER_PERIOD * periods)
     # this model's compiled loop, chosen (compiled or loaded) once, before the bar
     # starts: its rate, hence its ETA, then counts integration only
-    loop = specialised(dop853_run, m, (air, t, t_end, y, h, p, pw, rtol, atol, locate, out_t,
-                                       out_y, i_out, max_steps, counters, math.inf))
+    loop = specialised(dop853_run, m, (air, t, t_end, y, h, p, pw, ev, rtol, atol, locate,
+                                       out_t, out_y, i_out, max_steps, counters, math.inf))
     t0 = time.perf_counter()
     with _bar(periods, f"{sat.name} DOP853", progress) as bar:
         try:
             # pauses for Ctrl-C and the bar; they do not change the steps (dop853_run's
-            # t_pause), at whatever times they fall.  A free orbit pauses at least CHUNKS
-            # times, to stop soon after a re-entry (domain.py)
-            free = not has_com_orbit(m)
+            # t_pause), at whatever times they fall
             span = min(t_end / CHUNKS, sat.period)  # the first call: the loop's speed
             t_pause = span
             while True:
                 t_prev, t_call = t, time.perf_counter()
                 # the step budget is the whole run's, however many calls it takes
-                t, h, i_out, st = loop(m, air, t, t_end, y, h, p, pw, rtol, atol, locate,
-                                       out_t, out_y, i_out, max_steps - int(counters[4]),
-                                       counters, t_pause)
+                t, h, i_out, st, slot = loop(m, air, t, t_end, y, h, p, pw, ev, rtol, atol,
+                                             locate, out_t, out_y, i_out,
+                                             max_steps - int(counters[4]), counters, t_pause)
                 calls += 1
                 _advance(bar, t / sat.period)
+                if st == STATUS_EVENT:
+                    status, message, stop = _stopped(sat, slot, t)
+                    break
                 if st != STATUS_OK:
                     status = "diverged" if st == 1 else "failed"
                     message = {1: "state became non-finite", 2: "step size became too small",
                                3: "too many steps"}[st] + f" at t = {t:.6g} s"
                     break
-                if free and below_reentry(sat, model, out_y[i_out - 1]):
-                    break  # _within_domain finds the crossing and sets the status
                 if t >= t_end:
                     break
                 rate = (t - t_prev) / max(time.perf_counter() - t_call, 1e-9)  # sim s per s
-                if not free and rate * QUICK_RUN_S >= t_end - t:
+                if rate * QUICK_RUN_S >= t_end - t:
                     t_pause = math.inf
                 else:
                     span = min(t_end / CHUNKS, 10.0 * span, rate * PAUSE_S)
@@ -387,6 +387,10 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
                       else (out_t[:i_out].copy(), out_y[:i_out].copy()))
     t_out, y_out = ((fine_t, fine_y) if refine == 1
                     else (fine_t[::refine].copy(), fine_y[::refine].copy()))
+    if stop and t > fine_t[-1]:  # the located state: the last sample of both grids
+        fine_t, fine_y = np.append(fine_t, t), np.vstack([fine_y, y])
+        t_out, y_out = ((fine_t, fine_y) if refine == 1
+                        else (np.append(t_out, t), np.vstack([y_out, y])))
     return SimResult(sat, model, "adaptive", t_out, y_out,
                      fine_t=fine_t if refine > 1 else None,
                      fine_states=fine_y if refine > 1 else None,
@@ -397,4 +401,4 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
                      nfev=int(counters[0]) - max(calls - 1, 0),
                      n_accepted=int(counters[1]), n_rejected=int(counters[2]),
                      n_switches=int(counters[3]), status=status, message=message,
-                     wall_time=time.perf_counter() - t0)
+                     wall_time=time.perf_counter() - t0, **stop)

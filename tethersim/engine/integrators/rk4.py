@@ -4,7 +4,10 @@ The whole time loop runs in numba.  With ``locate=True`` a taut/slack switch
 inside a step is found by Illinois root finding on the tether margin of the
 step's end point (integrators.switching), the step is split there, and the
 rest of the step is taken on the other side of the switch: the right-hand
-side is smooth within every sub-step, which restores fourth order.
+side is smooth within every sub-step, which restores fourth order.  The
+stopping limits (engine/events.py) are evaluated at the end of every step,
+with or without ``locate``: a step that crosses one is redone, landing just
+past the crossing, and the run stops there.
 
 ``rk4_run`` is a thin wrapper: it makes the model index a compile-time literal
 (one specialised loop per model, cached on disk), allocates the scratch
@@ -18,66 +21,94 @@ import math
 import numpy as np
 from numba import literally, njit
 
-from tethersim.engine.dynamics import model_size, model_tether_margins
+from tethersim.engine.dynamics import model_size
+from tethersim.engine.events import N_EVENTS, N_SWITCH, model_events
 from tethersim.engine.integrators import switching
 from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.steps import copy_into, rk4_step
 
 ORDER = 4
 MAX_SPLITS = 16  # switches located in one step before it is finished unsplit (chattering)
+STATUS_OK, STATUS_NONFINITE, STATUS_EVENT = 0, 1, 2
 
 
 @njit(cache=True)
-def rk4_advance(model, air, t, y, h, p, pw, work, y_new, g0, g1, g):
-    """Advance y by h (in place), split at taut/slack switches.
+def rk4_advance(model, air, t, y, h, p, pw, ev, work, y_new, g0, g1, g, switches):
+    """Advance y by h (in place), split at events; stop at a stopping limit.
 
-    Out of line: only runs with locate=True.  Returns the number of switches
-    located inside the step.
+    Out of line: runs with switch location, or once when a step crossed a
+    stopping limit.  g0 holds the events at y on entry and at the new y on
+    return.  Returns (switches located inside the step, the slot of the
+    stopping limit reached or -1, the time reached).
     """
     splits = 0
     remaining = h
+    watch = switches  # the switch slots are still evaluated after MAX_SPLITS, not watched
     while remaining > 0.0:
         rk4_step(model, air, t, y, remaining, p, pw, work, y_new)
-        model_tether_margins(model, y, p, g0)
-        model_tether_margins(model, y_new, p, g1)
-        if switching.crossed(g0, g1) < 0:
+        model_events(model, y_new, p, ev, g1, switches)
+        if not switching.fired(g0, g1, watch):
             copy_into(y, y_new)
+            copy_into(g0, g1)
+            t += remaining
             break
-        tau = switching.locate(0, model, air, t, y, y, remaining, p, pw, work, y_new,
-                               g0, g1, g)
-        # y_new now holds the state just past the switch, at t + tau
+        tau, j = switching.locate(0, model, air, t, y, y, remaining, p, pw, ev, work, y_new,
+                                  g0, g1, g, watch)
+        # y_new now holds the state just past the event, at t + tau
         copy_into(y, y_new)
+        copy_into(g0, g1)
         t += tau
         remaining -= tau
+        if j >= N_SWITCH:
+            return splits, j, t
         splits += 1
         if splits > MAX_SPLITS:
-            rk4_step(model, air, t, y, remaining, p, pw, work, y_new)
-            copy_into(y, y_new)
-            break
-    return splits
+            watch = False  # finish the step unsplit, still watching the limits
+    return splits, -1, t
 
 
 @njit(cache=True, nogil=True)
-def _rk4_loop(model, air, k0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0,
+def _rk4_loop(model, air, k0, y, h, n_steps, stride, p, pw, ev, locate, out_t, out_y, row0,
               work, y_new, g):
     # every array is borrowed here, once: nothing below counts references
     y, p, pw, out_t, out_y = borrow(y), borrow(p), borrow(pw), borrow(out_t), borrow(out_y)
-    air = borrow(air)
+    air, ev = borrow(air), borrow(ev)
     work, y_new, g = borrow(work), borrow(y_new), borrow(g)
+    g0, g1 = g[0], g[1]
     n = model_size(model)  # a compile-time constant: the loops below unroll
     row = row0
     switches = 0
+    model_events(model, y, p, ev, g0, locate)
+    for j in range(N_SWITCH, N_EVENTS):
+        if not g0[j] > 0.0:  # the start is outside (or NaN): stop before any step
+            return 0, 0, STATUS_EVENT, j, k0 * h
     for k in range(1, n_steps + 1):
         # step k0 + k - 1 starts at (k0 + k - 1) h: the same time whether a run is one
         # call or resumed in chunks (t0 + (k - 1) h would round differently per chunk)
         t = (k0 + k - 1) * h
+        hit, t_hit = -1, t
         if locate:
-            switches += rk4_advance(model, air, t, y, h, p, pw, work, y_new,
-                                    g[0], g[1], g[2])
+            sw, hit, t_hit = rk4_advance(model, air, t, y, h, p, pw, ev, work, y_new, g0, g1,
+                                         g[2], True)
+            switches += sw
         else:
             rk4_step(model, air, t, y, h, p, pw, work, y_new)
-            for i in range(n):
-                y[i] = y_new[i]
+            model_events(model, y_new, p, ev, g1, False)
+            if switching.fired(g0, g1, False):  # a stopping limit: redo the step, located
+                _, hit, t_hit = rk4_advance(model, air, t, y, h, p, pw, ev, work, y_new, g0,
+                                            g1, g[2], False)
+            else:
+                for i in range(n):
+                    y[i] = y_new[i]
+                for i in range(N_EVENTS):
+                    g0[i] = g1[i]
+        if hit >= 0:  # the located state is the last row, at the event's time
+            if row < out_t.shape[0]:
+                out_t[row] = t_hit
+                for i in range(n):
+                    out_y[row, i] = y[i]
+                row += 1
+            return row - row0, switches, STATUS_EVENT, hit, t_hit
         if k % stride == 0:
             out_t[row] = (k0 + k) * h
             for i in range(n):
@@ -85,13 +116,13 @@ def _rk4_loop(model, air, k0, y, h, n_steps, stride, p, pw, locate, out_t, out_y
             row += 1
         for i in range(n):
             if not math.isfinite(y[i]):
-                return row - row0, switches, 1
-    return row - row0, switches, 0
+                return row - row0, switches, STATUS_NONFINITE, -1, t + h
+    return row - row0, switches, STATUS_OK, -1, (k0 + n_steps) * h
 
 
 # nogil: sweeps run many trajectories on threads (tethersim.experiments.sweep)
 @njit(cache=True, nogil=True)
-def rk4_run(model, air, k0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, row0):
+def rk4_run(model, air, k0, y, h, n_steps, stride, p, pw, ev, locate, out_t, out_y, row0):
     """n_steps RK4 steps of size h from step k0 (time k0 h) and state y, advanced in place.
 
     Parameters
@@ -110,8 +141,11 @@ def rk4_run(model, air, k0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, 
         Steps to take; every stride-th state is written out.
     p, pw : ndarray
         Parameter vector and a scratch copy of it.
+    ev : ndarray
+        The run's event limits (engine/events.py, event_parameters).
     locate : bool
-        Split steps at taut/slack switches (integrators.switching).
+        Split steps at taut/slack switches (integrators.switching).  The
+        stopping limits are located whatever this is.
     out_t, out_y : ndarray
         Output times and states, written from row row0 on.
     row0 : int
@@ -120,13 +154,17 @@ def rk4_run(model, air, k0, y, h, n_steps, stride, p, pw, locate, out_t, out_y, 
     Returns
     -------
     tuple
-        (rows written, switches located, status) with status 0 (ok) or 1
-        (non-finite state: the run stopped there).
+        (rows written, switches located, status, event slot, time reached) with
+        status STATUS_OK, STATUS_NONFINITE (the run stopped there) or
+        STATUS_EVENT: a stopping limit (engine/events.py slot ``event slot``) was
+        crossed; the run stopped just past it, at the located time, and that
+        state is y and the last row written (when the buffer has room).  The
+        event slot is -1 for the other statuses.
     """
     literally(model)
     n = y.shape[0]
     work = np.empty((5, n))
     y_new = np.empty(n)
-    g = np.empty((3, 2))  # tether margins at both ends of a step, and a trial
-    return _rk4_loop(model, air, k0, y, h, n_steps, stride, p, pw, locate, out_t, out_y,
+    g = np.empty((3, N_EVENTS))  # events at both ends of a step, and a trial
+    return _rk4_loop(model, air, k0, y, h, n_steps, stride, p, pw, ev, locate, out_t, out_y,
                      row0, work, y_new, g)

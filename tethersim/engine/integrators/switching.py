@@ -1,18 +1,22 @@
-"""Locating taut/slack switches of the tethers inside a step.
+"""Locating events inside a step: tether switches and the stopping limits.
 
-A tether is taut when its margin g = λ − l0 > 0 (Eqs 3.35-3.36).  When a step
-from y to y_new changes the tautness of a tether, the step size τ that lands
-on the switch is found by Illinois (modified regula falsi) iteration on
-φ(τ) = g(step(y, τ)), using the integrator's own step so that the landing
-point is as accurate as a normal step.  The returned τ is the bracket end
-just *past* the switch, so the next step starts on the new side and its
-right-hand side is smooth.
+The events are the slots of engine/events.py's vector g(y), positive inside:
+slots 0, 1 are the tethers' taut/slack margins λ_j − l_j0 (Eqs 3.35-3.36; the run
+continues across them), the others the stopping limits (re-entry, roll, balloon
+reach, tether stretch).  When a step from y to y_new changes the sign of a slot
+that is watched, the step size τ that lands on the earliest crossing is found by
+Illinois (modified regula falsi) iteration on φ(τ) = g_j(step(y, τ)), slot by
+slot, each search bracketed by the best τ so far; the integrator's own step is
+the trial, so that the landing point is as accurate as a normal step.  The
+returned τ is the bracket end just *past* the crossing: after a switch the next
+step starts on the new side and its right-hand side is smooth; after a stopping
+limit the run ends just outside, |g_j| within the bracket's width times |ġ_j|.
 """
 from __future__ import annotations
 
 from numba import njit
 
-from tethersim.engine.dynamics import model_tether_margins
+from tethersim.engine.events import N_SWITCH, model_events
 from tethersim.engine.integrators.steps import copy_into, dop853_step, rk4_step
 
 RTOL_TAU = 1e-12  # bracket width, relative to the step, at which the search stops
@@ -20,44 +24,53 @@ MAX_ITER = 60
 
 
 @njit(cache=True)
-def crossed(g0, g1):
-    """Index of a tether whose tautness differs between g0 and g1, else -1."""
-    for j in range(g0.shape[0]):
+def fired(g0, g1, switches):
+    """Whether a watched slot changed sign from g0 to g1.
+
+    The switch slots (both directions) only when ``switches``; a stopping limit
+    whenever it goes from inside (> 0) to outside (<= 0).
+    """
+    first = 0 if switches else N_SWITCH
+    for j in range(first, g0.shape[0]):
         if (g0[j] > 0.0) != (g1[j] > 0.0):
-            return j
-    return -1
+            return True
+    return False
 
 
 @njit(cache=True)
-def _trial(method, model, air, t, y, f, tau, p, pw, work, y_new, g):
+def _trial(method, model, air, t, y, f, tau, p, pw, ev, work, y_new, g, switches):
     if method == 0:
         rk4_step(model, air, t, y, tau, p, pw, work, y_new)
     else:
         dop853_step(model, air, t, y, f, tau, p, pw, work[:16], work[16], y_new)
-    model_tether_margins(model, y_new, p, g)
+    model_events(model, y_new, p, ev, g, switches)
 
 
-# Out of line on purpose: switches are rare, and keeping this search (with its
-# own copies of the step functions) out of the time loops keeps them small.
+# Out of line on purpose: events are rare, and keeping this search (with its own
+# copies of the step functions) out of the time loops keeps them small.
 @njit(cache=True)
-def locate(method, model, air, t, y, f, h, p, pw, work, y_new, g0, g1, g):
-    """Step size τ in (0, h] landing just past the earliest switch.
+def locate(method, model, air, t, y, f, h, p, pw, ev, work, y_new, g0, g1, g, switches):
+    """(τ in (0, h] landing just past the earliest crossing, its slot).
 
     method 0: RK4 (work is (5, n)); method 1: DOP853 (work is (17, n): stages
     then a stage state; f = f(t, y)).  model, air: dynamics.derivative.
-    g is a scratch vector like g1.  On return y_new holds step(y, τ).
+    g0, g1: the events at y and at step(y, h); g is a scratch vector like them.
+    switches: whether the switch slots are watched (``fired``).  On return
+    y_new holds step(y, τ) and g1 the events there.
     """
     tau_best = h
+    j_best = -1
     copy_into(g, g1)
-    for j in range(g0.shape[0]):
+    first = 0 if switches else N_SWITCH
+    for j in range(first, g0.shape[0]):
         if (g0[j] > 0.0) == (g1[j] > 0.0):
             continue
         lo, hi = 0.0, tau_best
         f_lo = g0[j]
-        _trial(method, model, air, t, y, f, hi, p, pw, work, y_new, g)
+        _trial(method, model, air, t, y, f, hi, p, pw, ev, work, y_new, g, switches)
         f_hi = g[j]
         if (f_hi > 0.0) == (f_lo > 0.0):
-            continue  # no switch of this tether before an earlier one
+            continue  # no crossing of this slot before an earlier one
         side = 0
         for _ in range(MAX_ITER):
             if hi - lo <= RTOL_TAU * h:
@@ -65,7 +78,7 @@ def locate(method, model, air, t, y, f, h, p, pw, work, y_new, g0, g1, g):
             mid = (lo * f_hi - hi * f_lo) / (f_hi - f_lo)
             if not (lo < mid < hi):
                 mid = 0.5 * (lo + hi)
-            _trial(method, model, air, t, y, f, mid, p, pw, work, y_new, g)
+            _trial(method, model, air, t, y, f, mid, p, pw, ev, work, y_new, g, switches)
             f_mid = g[j]
             if (f_mid > 0.0) == (f_lo > 0.0):
                 lo, f_lo = mid, f_mid
@@ -78,5 +91,6 @@ def locate(method, model, air, t, y, f, h, p, pw, work, y_new, g0, g1, g):
                     f_lo *= 0.5
                 side = 1
         tau_best = hi
-    _trial(method, model, air, t, y, f, tau_best, p, pw, work, y_new, g1)
-    return tau_best
+        j_best = j
+    _trial(method, model, air, t, y, f, tau_best, p, pw, ev, work, y_new, g1, switches)
+    return tau_best, j_best

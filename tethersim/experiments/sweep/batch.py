@@ -1,9 +1,9 @@
 """A block of sweep points: Python builds the inputs, one compiled call runs them all.
 
 Per point, Python only builds the satellite, its parameter vector, initial
-state and output grid, and (one LAPACK call for the block) the RK4
-amplification; ``kernel.sweep_block`` then integrates, checks the domain and
-measures every point without the GIL, and Python writes the records.  The
+state, output grid and event limits, and (one LAPACK call for the block) the
+RK4 amplification; ``kernel.sweep_block`` then integrates (the loops stop at the
+domain's limits themselves) and measures every point without the GIL, and Python writes the records.  The
 records are the per-point path's (point.run_point) bit for bit
 (tests/experiments/test_sweep_batch.py) and do not depend on the block a point
 is in, so a resumed or distributed sweep is still identical to an
@@ -23,8 +23,8 @@ import numpy as np
 from tethersim.analysis.classify import classify
 from tethersim.analysis.metrics import SS_FRACTION, PitchMetrics
 from tethersim.analysis.metrics_kernel import sums_match_numpy
-from tethersim.engine.domain import MAX_STRETCH, reach
 from tethersim.engine.dynamics import has_com_orbit, initial_state
+from tethersim.engine.events import event_parameters
 from tethersim.engine.guards import API_SUBJECT, check_simulation
 from tethersim.engine.integrators.select import specialised
 from tethersim.engine.linearise import rk4_amplifications
@@ -130,13 +130,12 @@ def _compiled(sats: list, spec: SweepSpec) -> list:
         span = np.array([periods * s.period for s in sats])
         grids = {}
         T = np.stack([_grid(t_end, n_out, refine, grids) for t_end in span])
-    geom = np.array([[reach(s) ** 2, s.l10, s.l20, MAX_STRETCH, s.a, s.b] for s in sats])
-    cols = np.array([lay.state.index(c) if c in lay.state else -1 for c in COL_FIELDS],
-                    dtype=np.int64)
+    EV = np.stack([event_parameters(s, spec.model) for s in sats])  # as simulate() builds it
+    cols = np.array([lay.state.index(c) for c in COL_FIELDS], dtype=np.int64)
     rec_f = np.empty((n, len(F_FIELDS)))
     rec_i = np.empty((n, len(I_FIELDS)), dtype=np.int64)
     args = (_AIR, faithful, T, Y0, P, span, n_steps, spec.rtol, spec.rtol * ATOL_PER_RTOL,
-            int(MAX_STEPS_PER_PERIOD * periods), geom, cols, float(spec.tol), SS_FRACTION, rec_f, rec_i)
+            int(MAX_STEPS_PER_PERIOD * periods), EV, cols, float(spec.tol), SS_FRACTION, rec_f, rec_i)
     specialised(sweep_block, m, args)(m, *args)  # releases the GIL
     amps = rk4_amplifications(sats, [s.period / FAITHFUL_STEPS_PER_PERIOD for s in sats],
                               spec.model)

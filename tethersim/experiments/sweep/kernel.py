@@ -2,16 +2,16 @@
 
 ``sweep_block`` runs each point of a block through the engine's own compiled
 loop (``dop853_run`` or ``rk4_run``, called exactly as ``simulate`` calls them
-with ``progress=False``: same arguments, same single call, hence the same
-trajectory bit for bit), then, still in compiled code and without the GIL:
+with ``progress=False``: same arguments and event limits, same single call, hence
+the same trajectory bit for bit, and the same stop at a limit of the model's
+domain, located by the loop itself: engine/events.py), then, still in compiled
+code and without the GIL:
 
-* the domain check of engine/domain.py for a circular orbit (balloon reach,
-  tether stretch, over the samples before the first non-finite one);
-* outcome.py's rule: a point counts when its run ended ok, stayed in the
-  domain, has at least two samples and every one of them is finite;
+* outcome.py's rule: a point counts when its run ended ok (so stayed in the
+  domain), has at least two samples and every one of them is finite;
 * for a counting point, the pitch metrics and the trail (analysis.metrics_kernel,
   the same bits as metrics.py) and the largest family force on each
-  coordinate (evaluate's own compiled loops: _domain_scan, _family_force_peaks).
+  coordinate (evaluate's own compiled loop _family_force_peaks).
 
 Python then builds the block's inputs and writes the records
 (tethersim.experiments.sweep.batch).  What a point needs beyond this (per-body
@@ -33,29 +33,40 @@ import numpy as np
 from numba import literally, njit
 
 from tethersim.analysis.metrics_kernel import N_PITCH, pitch_metrics_into, window_mean
-from tethersim.engine.evaluate import _domain_scan, _family_force_peaks
+from tethersim.engine.evaluate import _family_force_peaks
 from tethersim.engine.integrators.borrow import borrow
+from tethersim.engine.integrators.dop853 import STATUS_EVENT as DOP853_EVENT
 from tethersim.engine.integrators.dop853 import dop853_run
+from tethersim.engine.integrators.rk4 import STATUS_EVENT as RK4_EVENT
 from tethersim.engine.integrators.rk4 import rk4_run
 from tethersim.engine.result import STATUSES
 
 F_FIELDS = ("mean_pitch", "steady_state_pitch", "settling_time", "trail_delta_x",
             "trail_delta_y", "max_force_delta_x", "max_force_delta_y", "max_force_theta")
 I_FIELDS = ("status", "counts", "tumbled", "upside_down", "nfev")
-# where the block reads each point's domain limits (GEOM[j]) and state columns (cols)
-GEOM_FIELDS = ("reach_squared", "l10", "l20", "max_stretch", "a", "b")
-COL_FIELDS = ("delta_x", "delta_y", "theta", "delta_z")  # delta_z: -1 for a planar model
+# the state columns the block measures (cols)
+COL_FIELDS = ("delta_x", "delta_y", "theta")
 # the engine's status names, coded by their index in STATUSES (the store's flag_values)
 STATUS_OK, STATUS_NONFINITE, STATUS_FAILED, STATUS_LEFT_DOMAIN = (
     STATUSES.index(s) for s in ("ok", "diverged", "failed", "left-domain"))
 
 
 @njit(cache=True, nogil=True)
-def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_steps, geom,
+def _all_finite(Y, n):
+    """Whether the first n rows of Y are all finite (outcome.py's rule)."""
+    for i in range(n):
+        for k in range(Y.shape[1]):
+            if not math.isfinite(Y[i, k]):
+                return False
+    return True
+
+
+@njit(cache=True, nogil=True)
+def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_steps, EV,
                 cols, tol, ss_fraction, rec_f, rec_i, out_t, out_y, pw, counters, buf, pm):
     # every array is borrowed here, once (integrators/borrow.py)
-    air, T, Y0, P, span, geom, cols = (borrow(air), borrow(T), borrow(Y0), borrow(P),
-                                       borrow(span), borrow(geom), borrow(cols))
+    air, T, Y0, P, span, EV, cols = (borrow(air), borrow(T), borrow(Y0), borrow(P),
+                                     borrow(span), borrow(EV), borrow(cols))
     rec_f, rec_i, out_t, out_y = borrow(rec_f), borrow(rec_i), borrow(out_t), borrow(out_y)
     pw, counters = borrow(pw), borrow(counters)
     buf, pm = borrow(buf), borrow(pm)
@@ -66,34 +77,32 @@ def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
     locate = not faithful  # DOP853 locates the switches, the thesis's RK4 does not
     one = np.int64(1)
     for j in range(P.shape[0]):
-        y, p = Y0[j], P[j]
+        y, p, ev = Y0[j], P[j], EV[j]
         for i in range(p.shape[0]):
             pw[i] = p[i]
         for i in range(ns):
             out_y[0, i] = y[i]
         if faithful:  # simulate._run_rk4, progress=False: one call for every step
             out_t[0] = 0.0
-            rows, _, st = rk4_run(model, air, 0, y, span[j], n_steps, one, p, pw, locate,
-                                  out_t, out_y, one)
+            rows, _, st, _, _ = rk4_run(model, air, 0, y, span[j], n_steps, one, p, pw, ev,
+                                        locate, out_t, out_y, one)
             n = 1 + rows
-            nfev = 4 * n_steps
-            status = STATUS_OK if st == 0 else STATUS_NONFINITE
+            # a run stopped at a limit took the steps up to it (simulate._run_rk4)
+            nfev = 4 * (rows if st == RK4_EVENT else n_steps)
+            status = (STATUS_OK if st == 0 else STATUS_LEFT_DOMAIN if st == RK4_EVENT
+                      else STATUS_NONFINITE)
             t = out_t
         else:  # simulate._run_adaptive, progress=False, circular orbit: one call
             t = T[j]
             for i in range(counters.shape[0]):
                 counters[i] = 0
-            _, _, n, st = dop853_run(model, air, 0.0, span[j], y, 0.0, p, pw, rtol, atol, locate,
-                                     t, out_y, one, max_steps, counters, math.inf)
+            _, _, n, st, _ = dop853_run(model, air, 0.0, span[j], y, 0.0, p, pw, ev, rtol,
+                                        atol, locate, t, out_y, one, max_steps, counters,
+                                        math.inf)
             nfev = counters[0]
-            status = STATUS_OK if st == 0 else (STATUS_NONFINITE if st == 1 else STATUS_FAILED)
-        # engine/domain.py's checks of a circular orbit, the same compiled pass
-        last, i_far, _, i_over, _, _ = _domain_scan(model, out_y[:n], p, ix, iy, cols[3],
-                                                    geom[j, 1], geom[j, 2], geom[j, 4],
-                                                    geom[j, 5], geom[j, 0], geom[j, 3])
-        if i_far >= 0 or i_over >= 0:
-            status = STATUS_LEFT_DOMAIN
-        counts = status == STATUS_OK and last == n and n >= 2
+            status = (STATUS_OK if st == 0 else STATUS_NONFINITE if st == 1
+                      else STATUS_LEFT_DOMAIN if st == DOP853_EVENT else STATUS_FAILED)
+        counts = status == STATUS_OK and n >= 2 and _all_finite(out_y, n)
         for k in range(rec_f.shape[1]):
             rec_f[j, k] = math.nan
         rec_i[j, 0] = status
@@ -115,7 +124,7 @@ def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
 
 # nogil: the sweep's threads run blocks side by side
 @njit(cache=True, nogil=True)
-def sweep_block(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_steps, geom,
+def sweep_block(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_steps, EV,
                 cols, tol, ss_fraction, rec_f, rec_i):
     """Integrate and measure every point of a block (one compiled call, no GIL).
 
@@ -141,10 +150,10 @@ def sweep_block(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
         Adaptive tolerances.
     max_steps : int
         Adaptive step limit (simulate's MAX_STEPS_PER_PERIOD x periods).
-    geom : ndarray
-        (points, 6): squared balloon reach [m²], l10, l20 [m], largest stretch, a, b [m].
+    EV : ndarray
+        (points, N_EV): each point's event limits (engine/events.py event_parameters).
     cols : ndarray
-        int64 state columns of δx, δy, θ, δz (−1: none).
+        int64 state columns of δx, δy, θ.
     tol, ss_fraction : float
         Settling band [rad] and steady-state fraction (metrics.py).
     rec_f, rec_i : ndarray
@@ -159,5 +168,5 @@ def sweep_block(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
     counters = np.zeros(5, dtype=np.int64)
     buf = np.empty(rows)
     pm = np.empty(N_PITCH)
-    _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_steps, geom,
+    _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_steps, EV,
                 cols, tol, ss_fraction, rec_f, rec_i, out_t, out_y, pw, counters, buf, pm)

@@ -1,0 +1,162 @@
+"""Every model's event functions: one table, one compiled vector g(y), located in the loops.
+
+An event is a function g_i of the integrated state, positive inside.  The
+integrators evaluate the whole vector at the end of every step and, where a
+slot changes sign inside the step, land the step on the earliest crossing
+(integrators/switching.py) as scipy's ``solve_ivp(events=...)``, heyoka's and
+Orekit's event detectors do:
+
+=====  ===============  ========  ====================================================
+slot   name             kind      g (positive: inside)
+=====  ===============  ========  ====================================================
+0, 1   tether 1/2       switch    λ_j − l_j0: taut/slack (the run continues across it;
+                                  located when ``locate_switches``)
+2      re-entry         terminal  r − R_E − h_min: free-orbit models only
+3      roll             terminal  ROLL_LIMIT − |φ|: 3-D models only
+4      balloon reach    terminal  reach² − |δ|²
+5, 6   tether stretch   terminal  MAX_STRETCH l_j0 − λ_j
+=====  ===============  ========  ====================================================
+
+A slot a model lacks is +1 (it never fires).  A terminal event fires when its
+slot goes from positive to non-positive; the run stops just past it (status
+``re-entered`` for the re-entry, else ``left-domain``: engine/domain.py).  The
+limits of one run (h_min, the reach, MAX_STRETCH, ROLL_LIMIT) come in the small
+vector :func:`event_parameters` builds once in Python: nothing satellite-specific
+is compiled in.
+"""
+from __future__ import annotations
+
+import math
+from collections import namedtuple
+
+import numpy as np
+from numba import literally, njit
+from numba.extending import overload
+
+from tethersim.engine.dynamics import literal_index, model_tether_margins
+from tethersim.engine.integrators.select import call
+from tethersim.model.constants import R_EARTH
+from tethersim.model.registry import MODELS
+
+Event = namedtuple("Event", "name terminal status")
+#: the single table of events: slot order of model_events' vector (module docstring)
+EVENTS = (
+    Event("tether 1 switch", False, ""),
+    Event("tether 2 switch", False, ""),
+    Event("re-entry", True, "re-entered"),
+    Event("roll", True, "left-domain"),
+    Event("balloon reach", True, "left-domain"),
+    Event("tether 1 stretch", True, "left-domain"),
+    Event("tether 2 stretch", True, "left-domain"),
+)
+N_EVENTS = len(EVENTS)
+N_SWITCH = sum(not e.terminal for e in EVENTS)  # the switch slots come first
+SLOT = {e.name: i for i, e in enumerate(EVENTS)}
+STOPS = tuple(e.name for e in EVENTS if e.terminal)
+# the event parameter vector (event_parameters): where each limit sits
+EV_H_MIN, EV_ROLL, EV_REACH2, EV_STRETCH, EV_L10, EV_L20, EV_NEAR2 = range(7)
+N_EV = 7
+
+
+def event_parameters(sat, model: str, stops=STOPS) -> np.ndarray:
+    """The limits the compiled event function reads, for one run of ``sat`` with ``model``.
+
+    Parameters
+    ----------
+    sat : Satellite
+        The satellite (its re-entry altitude, tether rest lengths, boom ends).
+    model : str
+        Model name (tethersim.model.registry).
+    stops : iterable of str, optional
+        The terminal events that stop the run (names in :data:`EVENTS`); the
+        others are given limits they never reach (a released balloon,
+        engine/release.py, stops only at re-entry).
+
+    Returns
+    -------
+    numpy.ndarray
+        float64[N_EV]: h_min [m], roll limit [rad], reach² [m²], largest stretch,
+        l10, l20 [m], and the squared balloon distance below which no tether can
+        be over its stretch limit (the tether lengths are then not evaluated).
+    """
+    from tethersim.engine.domain import MAX_STRETCH, ROLL_LIMIT, reach
+
+    stops = set(stops)
+    unknown = stops - set(STOPS)
+    if unknown:
+        raise ValueError(f"stops = {sorted(unknown)!r}: allowed values {', '.join(STOPS)}")
+    inf = math.inf
+    stretch_on = {"tether 1 stretch", "tether 2 stretch"} & stops
+    stretch = MAX_STRETCH if stretch_on else inf
+    ev = np.empty(N_EV)
+    ev[EV_H_MIN] = sat.reentry_altitude if "re-entry" in stops else -inf
+    ev[EV_ROLL] = ROLL_LIMIT if "roll" in stops else inf
+    ev[EV_REACH2] = reach(sat) ** 2 if "balloon reach" in stops else inf
+    ev[EV_STRETCH] = stretch
+    ev[EV_L10], ev[EV_L20] = sat.l10, sat.l20
+    # tether j runs from the balloon (|δ| from the COM) to a boom end (b or a from it):
+    # λ_j <= |δ| + end_j, so λ_j > stretch l_j0 needs |δ| > stretch l_j0 − end_j.  The
+    # margin 1e-9 keeps the bound conservative against the rounding of |δ|²
+    near = max(min(stretch * sat.l10 - sat.b, stretch * sat.l20 - sat.a), 0.0) * (1.0 - 1e-9)
+    ev[EV_NEAR2] = near * near
+    return ev
+
+
+def model_events(model, y, p, ev, g, switches):
+    """g[i] = event i of model ``model`` at state y (compiled code, literal model only).
+
+    ``switches``: whether slots 0, 1 (the tether margins) are wanted; when not, and
+    the balloon is too close for any stretch limit, the tether lengths are not
+    evaluated and slots 0, 1, 5, 6 are +1.
+    """
+    raise NotImplementedError("model_events is only callable from compiled code")
+
+
+@overload(model_events, inline="always", prefer_literal=True)
+def _model_events(model, y, p, ev, g, switches):
+    if (k := literal_index(model)) is None:
+        return None
+    names = MODELS[k].state
+    ix, iy = names.index("delta_x"), names.index("delta_y")
+    iz = names.index("delta_z") if "delta_z" in names else -1
+    i_r = names.index("r") if "r" in names else -1
+    i_phi = names.index("phi") if "phi" in names else -1
+
+    def impl(model, y, p, ev, g, switches):
+        if i_r >= 0:
+            g[2] = (y[i_r] - R_EARTH) - ev[EV_H_MIN]
+        else:
+            g[2] = 1.0
+        if i_phi >= 0:
+            g[3] = ev[EV_ROLL] - abs(y[i_phi])
+        else:
+            g[3] = 1.0
+        d2 = y[ix] * y[ix] + y[iy] * y[iy]
+        if iz >= 0:
+            d2 = d2 + y[iz] * y[iz]
+        g[4] = ev[EV_REACH2] - d2
+        if switches or d2 > ev[EV_NEAR2]:
+            model_tether_margins(model, y, p, g)  # writes g[0], g[1]
+            l10, l20, s = ev[EV_L10], ev[EV_L20], ev[EV_STRETCH]
+            g[5] = s * l10 - (g[0] + l10)
+            g[6] = s * l20 - (g[1] + l20)
+        else:
+            g[0] = 1.0
+            g[1] = 1.0
+            g[5] = 1.0
+            g[6] = 1.0
+    return impl
+
+
+@njit(cache=True)
+def _events_at(model, y, p, ev, switches):
+    literally(model)
+    g = np.empty(N_EVENTS)
+    model_events(model, y, p, ev, g, switches)
+    return g
+
+
+def events_at(model: int, y, p, ev, switches: bool = True) -> np.ndarray:
+    """The event vector g (module docstring) of model index ``model`` at one state, from
+    Python, as the loops evaluate it (``switches``: model_events)."""
+    return call(_events_at, model, np.ascontiguousarray(y, dtype=float), p, ev, switches)
