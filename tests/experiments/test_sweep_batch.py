@@ -99,11 +99,6 @@ def test_a_block_refuses_an_output_too_large_as_a_point_does(monkeypatch, method
             run()
 
 
-def test_a_numpy_whose_sums_differ_sends_every_point_to_the_per_point_path(monkeypatch):
-    monkeypatch.setattr(batch, "sums_match_numpy", lambda: False)
-    assert not servable(SweepSpec(SAT, (("E2", [0.0427]),), periods=1.0), SAT)
-
-
 @pytest.mark.slow
 @pytest.mark.parametrize("method", ["adaptive", "faithful"])
 def test_a_3d_model_runs_per_point_for_its_roll_guard(method):

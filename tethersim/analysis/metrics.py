@@ -19,6 +19,8 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from tethersim.analysis.metrics_kernel import N_PITCH, pitch_metrics_into, window_mean
+
 SETTLING_TOL = 0.05  # rad, thesis stability criterion (p. 5-18)
 SS_FRACTION = 0.2  # last fifth of the run defines the steady state
 # The gravity-gradient pitch librates at √3 ω (thesis Eq 4.5 with point masses,
@@ -80,28 +82,71 @@ def steady_state_window(t, ss_fraction: float = SS_FRACTION) -> np.ndarray:
 
 def pitch_metrics(t, theta, tol: float = SETTLING_TOL,
                   ss_fraction: float = SS_FRACTION) -> PitchMetrics:
-    """Metrics of θ(t) [rad] sampled at times t [s] (uniform or not)."""
-    t = np.asarray(t, dtype=float)
+    """Metrics of θ(t) [rad] sampled at times t [s] (uniform or not).
+
+    Parameters
+    ----------
+    t, theta : array_like
+        Sample times [s] (increasing) and pitch [rad], at least two samples.
+    tol : float, optional
+        Settling band [rad] (default the thesis's 0.05).
+    ss_fraction : float, optional
+        The steady-state window: the last ``ss_fraction`` of the run (default 0.2).
+
+    Returns
+    -------
+    PitchMetrics
+    """
     theta = np.asarray(theta, dtype=float)
+    return steady_metrics(t, theta.reshape(-1, 1), 0, (), tol, ss_fraction)[0]
+
+
+def steady_state_mean(t, values, ss_fraction: float = SS_FRACTION) -> float:
+    """Mean of ``values`` over the last ``ss_fraction`` of the run (the steady-state
+    window of the pitch metrics, docs/metrics.md; the same compiled mean); units of
+    ``values``."""
+    t = np.ascontiguousarray(t, dtype=float)
+    v = np.ascontiguousarray(values, dtype=float).reshape(-1, 1)
+    n = t.size
+    return float(window_mean(t, v, n, 0, t[-1] - ss_fraction * (t[-1] - t[0]), np.empty(n)))
+
+
+def steady_metrics(t, Y, col: int, trail: tuple = (), tol: float = SETTLING_TOL,
+                   ss_fraction: float = SS_FRACTION) -> tuple:
+    """The pitch metrics of θ = Y[:, col] and the steady-state means of columns ``trail``.
+
+    One compiled implementation (analysis.metrics_kernel) serves this function,
+    :func:`pitch_metrics`, ``outcome()`` and a sweep's compiled blocks.
+
+    Parameters
+    ----------
+    t : array_like
+        Sample times [s], increasing, at least two.
+    Y : array_like
+        Samples (n, columns).
+    col : int
+        The pitch column.
+    trail : tuple of int, optional
+        Columns averaged over the steady-state window (outcome's trail δx, δy).
+    tol, ss_fraction : float, optional
+        As :func:`pitch_metrics`.
+
+    Returns
+    -------
+    tuple
+        (PitchMetrics, tuple of the trail columns' window means).
+    """
+    t = np.ascontiguousarray(t, dtype=float)
+    Y = np.ascontiguousarray(Y, dtype=float)
     if t.size < 2:
         raise ValueError("pitch_metrics needs at least two samples")
     tol = check_tol(tol)
     if not 0 < ss_fraction <= 1:
         raise ValueError(f"ss_fraction = {ss_fraction}: allowed range (0, 1]")
-    tail = steady_state_window(t, ss_fraction)
-    theta_ss = float(np.mean(theta[tail]))
-    outside = np.nonzero(np.abs(theta - theta_ss) > tol)[0]
-    if outside.size == 0:
-        settling = float(t[0])
-    elif np.any(tail[outside]):
-        # a run is settled only if its whole steady-state window stays in the band
-        settling = math.nan
-    else:
-        settling = float(t[outside[-1] + 1])
-    return PitchMetrics(
-        mean_pitch=float(np.mean(theta)),
-        steady_state_pitch=float(wrap(theta_ss)),  # 0-d array -> float
-        settling_time=settling,
-        tumbled=bool(np.any(np.abs(theta) >= math.pi)),
-        upside_down=bool(abs(wrap(theta_ss)) > 3 * math.pi / 4),
-    )
+    n = t.size
+    buf, out = np.empty(n), np.empty(N_PITCH)
+    threshold = pitch_metrics_into(t, Y, n, col, tol, float(ss_fraction), buf, out)
+    means = tuple(float(window_mean(t, Y, n, c, threshold, buf)) for c in trail)
+    return PitchMetrics(mean_pitch=float(out[0]), steady_state_pitch=float(out[1]),
+                        settling_time=float(out[2]), tumbled=bool(out[3]),
+                        upside_down=bool(out[4])), means

@@ -17,7 +17,6 @@ Callers that must not record a truncated run (sweeps, headlines) test
 from __future__ import annotations
 
 import math
-import warnings
 from dataclasses import asdict, dataclass, field, replace
 
 import numpy as np
@@ -27,8 +26,7 @@ from tethersim.analysis.metrics import (
     SETTLING_TOL,
     PitchMetrics,
     check_tol,
-    pitch_metrics,
-    steady_state_window,
+    steady_metrics,
 )
 from tethersim.engine.evaluate import family_force_peaks
 from tethersim.engine.result import SimResult, dominant_error
@@ -207,16 +205,10 @@ def outcome(res: SimResult, tol: float = SETTLING_TOL, forces: bool = True) -> O
         reason = f"non-finite state at t = {res.t[n]:.6g} s"
     elif n < 2:
         reason = "fewer than two samples"
-    m = None
+    m, trail = None, (math.nan, math.nan)
     if n >= 2:
-        with warnings.catch_warnings(), np.errstate(all="ignore"):
-            warnings.simplefilter("ignore", RuntimeWarning)  # a diverging run's huge values
-            m = pitch_metrics(t, states[:, ith], tol=tol)
+        m, trail = steady_metrics(t, states, ith, (ix, iy), tol=tol)
     cls = FAILED if reason else classify(m, tol=tol, run_orbits=run_orbits(res))
-    trail = (math.nan, math.nan)
-    if n >= 2:
-        tail = steady_state_window(t)
-        trail = (float(np.mean(states[tail, ix])), float(np.mean(states[tail, iy])))
     peak = NAN3
     if forces and n >= 1:
         q = family_force_peaks(res.layout.index, res.air, t, states, res.parameters)

@@ -6,7 +6,7 @@ from dataclasses import replace
 import numpy as np
 
 from tethersim.analysis.classify import UNDECIDED
-from tethersim.analysis.metrics import min_run_orbits, steady_state_window, wrap
+from tethersim.analysis.metrics import min_run_orbits, steady_state_mean, wrap
 from tethersim.analysis.outcome import Outcome, finite_prefix, outcome
 from tethersim.engine.result import SimResult
 
@@ -93,13 +93,12 @@ def out_of_plane_summary(res: SimResult) -> dict:
         res = replace(res, t=res.fine_t, states=res.fine_states, fine_t=None, fine_states=None)
     n = max(1, finite_prefix(res))
     t = res.t[:n]
-    tail = steady_state_window(t)
     phi, psi, dz = (res.series(k)[:n] for k in ("phi", "psi", "delta_z"))
     return {
         "largest |roll phi| [rad]": float(np.max(np.abs(phi))),
         "largest |yaw psi| [rad]": float(np.max(np.abs(psi))),
-        "steady-state roll [rad]": float(wrap(np.mean(phi[tail]))),
-        "steady-state yaw [rad]": float(wrap(np.mean(psi[tail]))),
+        "steady-state roll [rad]": float(wrap(steady_state_mean(t, phi))),
+        "steady-state yaw [rad]": float(wrap(steady_state_mean(t, psi))),
         "final roll phi [rad]": float(phi[-1]),
         "final yaw psi [rad]": float(psi[-1]),
         "largest |delta_z| [m]": float(np.max(np.abs(dz))),

@@ -22,7 +22,6 @@ import math
 
 import numpy as np
 
-from tethersim.analysis.metrics import SS_FRACTION, steady_state_window
 from tethersim.analysis.outcome import ROW_COLUMNS, outcome
 from tethersim.engine.result import SimResult
 from tethersim.model.registry import NAMES, THESIS_VARIANTS, model_for_orbit
@@ -90,12 +89,6 @@ def compare(sat: Satellite, models=THESIS_VARIANTS, **simulate_kwargs) -> list:
         if res.status == "interrupted":
             break
     return results
-
-
-def steady_state_mean(t, values, ss_fraction: float = SS_FRACTION) -> float:
-    """Mean of ``values`` over the last ``ss_fraction`` of the run (the window of
-    the steady-state pitch, docs/metrics.md); same units as ``values``."""
-    return float(np.mean(np.asarray(values, dtype=float)[steady_state_window(t, ss_fraction)]))
 
 
 def theta_difference(res: SimResult, ref: SimResult) -> tuple:

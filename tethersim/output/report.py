@@ -100,11 +100,12 @@ def section_nominal(page: Page, periods: float) -> dict:
         sat = load_preset(n)
         res = simulate(sat, periods, check=True, progress=False)  # the table reports it
         results[n] = res
-        m = outcome(res, forces=False).metrics
+        o = outcome(res, forces=False)
+        m = o.metrics
         tail = steady_state_window(res.t)
         rows.append((sat.name, _g(m.mean_pitch, "+.4f"), _g(m.steady_state_pitch, "+.4f"),
                      _g(m.settling_time / 3600, ".1f"), _g(m.settling_time / sat.period, ".1f"),
-                     _g(float(np.mean(res.x[tail])), ".1f"),
+                     _g(o.trail_delta_x, ".1f"),
                      _g(float(np.ptp(res.y[tail])) / 2, ".2f"), res.converged))
         paths = plot_result(res, page.out / "img", prefix=f"{n}_nominal_")
         figs.append(page.img(paths[-1], f"{sat.name} nominal, {periods:g} orbits ({res.label})"))
@@ -126,8 +127,7 @@ def section_nominal(page: Page, periods: float) -> dict:
               "consequence of c, which the thesis's lost table held")
     for n in ("satII", "dumbsat"):
         r = results[n]
-        tail = steady_state_window(r.t)
-        trail = float(np.mean(r.x[tail]))
+        trail = outcome(r, forces=False).trail_delta_x
         page.fact(f"{r.satellite.name}: balloon settles about 28 m in the wake", "5-19, 5-23",
                   f"{trail:.1f} m", "yes" if 25 <= trail <= 31 else "no",
                   "set by drag (A3, m3) against the tethers' 6 m length: a preset choice")

@@ -186,16 +186,16 @@ def balanced_at(E1: float) -> tuple:
 def run_satI() -> dict:
     """SatI, 50 orbits, adaptive: settling, trail and largest forces (README)."""
     from tethersim.analysis.force_peaks import largest_forces
-    from tethersim.analysis.metrics import steady_state_window
     from tethersim.analysis.outcome import outcome
     from tethersim.engine.simulate import simulate
 
     s = load_preset("satI")
     res = simulate(s, 50.0, progress=False)
-    m = outcome(res, forces=False).metrics
+    o = outcome(res, forces=False)
+    m = o.metrics
     peaks = {r.coordinate: r.peak for r in largest_forces(res)}
     return {"settling_h": m.settling_time / 3600, "settling_orbits": m.settling_time / s.period,
-            "trail": float(np.mean(res.x[steady_state_window(res.t)])), **peaks}
+            "trail": o.trail_delta_x, **peaks}
 
 
 @cache

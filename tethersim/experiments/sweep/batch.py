@@ -10,9 +10,9 @@ is in, so a resumed or distributed sweep is still identical to an
 uninterrupted one.
 
 A point the block cannot serve runs the per-point path: per-body air (its
-air vector depends on the run), a free orbit (it stops at re-entry between
-chunks), or an installed numpy whose summation the compiled means cannot
-reproduce (metrics_kernel.sums_match_numpy).
+air vector depends on the run) or a free orbit (it stops at re-entry between
+chunks).  Both paths measure with the same compiled metrics
+(analysis.metrics_kernel).
 """
 from __future__ import annotations
 
@@ -22,7 +22,6 @@ import numpy as np
 
 from tethersim.analysis.classify import classify
 from tethersim.analysis.metrics import SS_FRACTION, PitchMetrics
-from tethersim.analysis.metrics_kernel import sums_match_numpy
 from tethersim.engine.dynamics import has_com_orbit, initial_state
 from tethersim.engine.events import event_parameters
 from tethersim.engine.guards import API_SUBJECT, check_simulation
@@ -52,7 +51,7 @@ def servable(spec: SweepSpec, sat) -> bool:
     # the 3-D models' roll guard (engine/domain.py) is not in the block kernel: per point
     return (model == spec.model and has_com_orbit(model_index(model))
             and get_model(model).geometry == "planar"
-            and sat.density_mode != "per-body" and sums_match_numpy())
+            and sat.density_mode != "per-body")
 
 
 def run_block(spec: SweepSpec, ks: list) -> list:

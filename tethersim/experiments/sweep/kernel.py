@@ -10,7 +10,7 @@ code and without the GIL:
 * outcome.py's rule: a point counts when its run ended ok (so stayed in the
   domain), has at least two samples and every one of them is finite;
 * for a counting point, the pitch metrics and the trail (analysis.metrics_kernel,
-  the same bits as metrics.py) and the largest family force on each
+  the one implementation outcome() uses) and the largest family force on each
   coordinate (evaluate's own compiled loop _family_force_peaks).
 
 Python then builds the block's inputs and writes the records

@@ -1,0 +1,89 @@
+"""Small dense linear algebra for the compiled loops: LU with partial pivoting, kept.
+
+The implicit scheme (integrators/radau.py) factors its iteration matrices once
+and solves with them for many Newton iterations and steps; numpy's solve,
+the only dense solver numba offers in compiled code, refactors on every call.
+And the Jacobian those matrices need, by finite differences of any model's
+generated right-hand side (per-body air included), so no model needs a
+generated Jacobian to run implicitly.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from tethersim.engine.dynamics import derivative, model_size
+
+EPS = np.finfo(float).eps
+
+
+@njit(cache=True)
+def lu_factor(A, piv):
+    """LU factorisation with partial pivoting of the square A, in place (LAPACK getrf's).
+
+    The factors are kept across Newton iterations and steps, which numpy's solve
+    (a factorisation per call) cannot do inside compiled code.
+    """
+    n = A.shape[0]
+    for k in range(n):
+        p = k
+        big = abs(A[k, k])
+        for i in range(k + 1, n):
+            if abs(A[i, k]) > big:
+                big, p = abs(A[i, k]), i
+        piv[k] = p
+        if p != k:
+            for j in range(n):
+                A[k, j], A[p, j] = A[p, j], A[k, j]
+        d = A[k, k]
+        if d == 0.0:
+            continue  # singular: the solve gives inf/NaN and the step is rejected
+        for i in range(k + 1, n):
+            A[i, k] /= d
+            a = A[i, k]
+            if a != 0.0:
+                for j in range(k + 1, n):
+                    A[i, j] -= a * A[k, j]
+
+
+@njit(cache=True)
+def lu_solve(A, piv, b):
+    """Solve (the factored A) x = b in place of b (A, piv from lu_factor)."""
+    n = A.shape[0]
+    for k in range(n):
+        p = piv[k]
+        if p != k:
+            b[k], b[p] = b[p], b[k]
+    for i in range(n):
+        s = b[i]
+        for j in range(i):
+            s -= A[i, j] * b[j]
+        b[i] = s
+    for i in range(n - 1, -1, -1):
+        s = b[i]
+        for j in range(i + 1, n):
+            s -= A[i, j] * b[j]
+        b[i] = s / A[i, i]
+
+
+@njit(cache=True)
+def fd_jacobian(model, air, t, y, f, p, pw, J, ys, fs):
+    """J[i, j] = ∂f_i/∂y_j by forward differences of the generated rhs (f = f(t, y)).
+
+    Steps √eps · max(|y_j|, 1) in each state's SI unit: a relative error of
+    ~1e-8 in J, which only slows the simplified Newton iteration, never the
+    accuracy of the converged step.  ys, fs: scratch vectors.
+    """
+    n = model_size(model)
+    for i in range(n):
+        ys[i] = y[i]
+    for j in range(n):
+        d = math.sqrt(EPS) * max(abs(y[j]), 1.0)
+        ys[j] = y[j] + d
+        d = ys[j] - y[j]  # the step actually represented
+        derivative(model, air, t, ys, p, pw, fs)
+        for i in range(n):
+            J[i, j] = (fs[i] - f[i]) / d
+        ys[j] = y[j]
