@@ -11,6 +11,7 @@ from numba import literally, njit
 
 import tethersim as ts
 from tethersim.engine.dynamics import derivative, initial_state
+from tethersim.engine.events import SLOT, event_parameters
 from tethersim.engine.integrators.linalg import fd_jacobian, lu_factor, lu_solve
 from tethersim.engine.integrators.radau import N_COUNTERS, carry_size, radau_run
 from tethersim.engine.integrators.select import call, specialised
@@ -36,12 +37,12 @@ def _radau(sat, periods, rtol, pauses=(), model="derived", atol=1e-12, locate=Tr
     out_y[0] = y
     counters = np.zeros(N_COUNTERS, dtype=np.int64)
     carry = np.zeros(carry_size(y.size))
+    ev = event_parameters(sat, model)
     t, h, i_out = 0.0, 0.0, 1
     for t_pause in (*pauses, math.inf):
-        loop = specialised(radau_run, m, (air, t, t_end, y, h, p, pw, rtol, atol, locate,
-                                          out_t, out_y, i_out, 10**8, counters, carry, t_pause))
-        t, h, i_out, status = loop(m, air, t, t_end, y, h, p, pw, rtol, atol, locate, out_t,
-                                   out_y, i_out, 10**8, counters, carry, t_pause)
+        args = (air, t, t_end, y, h, p, pw, ev, rtol, atol, locate, out_t, out_y, i_out, 10**8,
+                counters, carry, t_pause)
+        t, h, i_out, status, _ = specialised(radau_run, m, args)(m, *args)
         assert status == 0
     assert t == t_end and i_out == out_t.size
     return y, counters, out_y
@@ -116,3 +117,26 @@ def test_stiff_tethers_with_switches_agree_with_dop853():
     y, c, _ = _radau(STIFF, periods, 1e-9)
     assert c[3] > 0  # switches located
     assert np.allclose(y[:6], ref.states[-1, :6], rtol=1e-5, atol=1e-6)
+
+
+def test_simulate_implicit_agrees_with_dop853_and_says_which_scheme():
+    ref = ts.simulate(SAT, 1, rtol=1e-13, atol=1e-14, progress=False)
+    res = ts.simulate(SAT, 1, method="implicit", rtol=1e-9, progress=False)
+    assert res.method == "implicit" and res.status == "ok" and res.t.size == ref.t.size
+    scale = np.maximum(np.abs(ref.states[:, :6]).max(axis=0), 1.0)
+    assert np.all(np.abs(res.states[:, :6] - ref.states[:, :6]) <= 1e-6 * scale)
+    # its error estimate reruns the same scheme, tighter
+    assert res.estimate_error().converged
+
+
+def test_a_tether_stretch_is_located_by_the_implicit_scheme_to_a_microsecond():
+    """The blown-out balloon of tests/engine/test_events.py (115 km): Radau locates the stretch
+    limit on its dense output and lands a converged step there; the time agrees with
+    scipy's DOP853 event location from the last sample before it."""
+    from tests.engine.test_events import LOCATED, _ivp_root
+    blown = SAT.replace(altitude=115e3, allow_implausible=True)
+    res = ts.simulate(blown, periods=0.05, method="implicit", rtol=1e-12, atol=1e-14,
+                      progress=False)
+    assert res.event in ("tether 1 stretch", "tether 2 stretch")
+    assert res.status == "left-domain" and res.t[-1] == res.event_time
+    assert abs(res.event_time - _ivp_root(res, SLOT[res.event])) <= LOCATED

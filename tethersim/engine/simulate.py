@@ -1,11 +1,12 @@
 """simulate(): the driver that runs an integrator on a satellite and returns a SimResult.
 
 Methods: "adaptive" (DOP853, error controlled, switches located; the default
-for analysis) and "rk4" (fixed step as in thesis Eqs 4.1-4.5; with
+for analysis), "rk4" (fixed step as in thesis Eqs 4.1-4.5; with
 ``locate_switches=False``, the default for RK4, it is the thesis's scheme and
-the result is labelled faithful).  Both run their whole loop in numba, in
-chunks so that a progress bar can be shown and Ctrl-C keeps what finished.
-Both locate the model's stopping limits (engine/events.py) in the loop and end
+the result is labelled faithful) and "implicit" (Radau IIA of order 5, error
+controlled, switches located: for stiff, real tethers, docs/tethers.md).  All
+run their whole loop in numba, in chunks so that a progress bar can be shown
+and Ctrl-C keeps what finished.  All locate the model's stopping limits (engine/events.py) in the loop and end
 a run that reaches one just past it: its last sample is the located state.
 """
 from __future__ import annotations
@@ -21,6 +22,8 @@ from tethersim.engine.domain import event_message
 from tethersim.engine.dynamics import initial_state, state_size
 from tethersim.engine.events import EVENTS, STOPS, event_parameters
 from tethersim.engine.integrators.dop853 import STATUS_EVENT, STATUS_OK, dop853_run
+from tethersim.engine.integrators.radau import N_COUNTERS as RADAU_COUNTERS
+from tethersim.engine.integrators.radau import carry_size, radau_run
 from tethersim.engine.integrators.rk4 import STATUS_EVENT as RK4_EVENT
 from tethersim.engine.integrators.rk4 import rk4_run
 from tethersim.engine.integrators.select import specialised
@@ -30,7 +33,7 @@ from tethersim.model.inputs import air_vector, initial_model_state, parameter_ve
 from tethersim.model.registry import DEFAULT_MODEL, model_for_orbit, model_index
 from tethersim.model.satellite import Satellite
 
-METHODS = ("adaptive", "rk4")
+METHODS = ("adaptive", "rk4", "implicit")
 STEPS_PER_PERIOD = 300  # thesis default: 1500 steps for 5 periods (p. 5-1)
 FAITHFUL_STEPS_PER_PERIOD = 200  # thesis chapter 5 runs: 50 periods in 10,000 steps, 26.55 s (p. 5-7)
 SAMPLES_PER_PERIOD = 200  # adaptive output grid when no steps are given
@@ -116,9 +119,10 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
         RK4: the number of steps (step = periods x period / steps; default 300
         per orbit).  Adaptive: the number of output samples, unless ``samples``
         is given (default 200 per orbit).
-    method : {"adaptive", "rk4"}, optional
-        DOP853 with error control and taut/slack switch location (default), or
-        the thesis's fixed-step RK4 (Eqs 4.1-4.5).
+    method : {"adaptive", "rk4", "implicit"}, optional
+        DOP853 with error control and taut/slack switch location (default),
+        the thesis's fixed-step RK4 (Eqs 4.1-4.5), or Radau IIA (order 5,
+        L-stable, error controlled, switches located) for stiff tethers.
     model : str, optional
         Any name in ``tethersim.MODELS`` (default ``"derived"``).
     rtol, atol : float, optional
@@ -198,7 +202,8 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
     # (METRIC_SAMPLES_PER_PERIOD), whatever output the caller asked for: the output is
     # every refine-th sample of it, exactly the grid asked for (docs/metrics.md)
     refine = max(1, math.ceil(METRIC_SAMPLES_PER_PERIOD * periods / n_out))
-    run = _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress, refine)
+    run = _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress, refine,
+                        scheme=method)
     return estimate_error(run) if check else run
 
 
@@ -236,7 +241,8 @@ def estimate_error(run: SimResult) -> SimResult:
                         run.locate_switches, False, False)
     else:
         fine = _run_adaptive(run.satellite, run.periods, run.t.size - 1, run.model,
-                             run.rtol / 100, run.atol / 100, run.locate_switches, False)
+                             run.rtol / 100, run.atol / 100, run.locate_switches, False,
+                             scheme=run.method)
     return _with_error(run, fine)
 
 
@@ -328,7 +334,7 @@ def refined_grid(t_end: float, n_out: int, refine: int) -> np.ndarray:
 
 
 def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
-                  refine: int = 1, start=None, stops=STOPS) -> SimResult:
+                  refine: int = 1, start=None, stops=STOPS, scheme="adaptive") -> SimResult:
     t_end = periods * sat.period
     ev = event_parameters(sat, model, stops)  # stops: the stopping events watched
     m, air = _kernel_args(sat, model, t_end)
@@ -340,15 +346,25 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
     out_t = refined_grid(t_end, n_out, refine)
     out_y = np.full((out_t.size, state_size(m)), np.nan)
     out_y[0] = y
-    counters = np.zeros(5, dtype=np.int64)
     t, h, i_out, status, message, calls, stop = 0.0, 0.0, 1, "ok", "", 0, {}
     max_steps = int(MAX_STEPS_PER_PERIOD * periods)
+    # the scheme's loop and what it keeps between calls: DOP853 (explicit), or Radau IIA
+    # (implicit, for stiff tethers: engine/integrators/radau.py) with its carry (Jacobian,
+    # controller memory, last dense output) so that the pauses do not change its steps
+    if scheme == "implicit":
+        run_fn, name = radau_run, "Radau"
+        counters = np.zeros(RADAU_COUNTERS, dtype=np.int64)
+        kept = (counters, np.zeros(carry_size(y.size)))
+    else:
+        run_fn, name = dop853_run, "DOP853"
+        counters = np.zeros(5, dtype=np.int64)
+        kept = (counters,)
     # this model's compiled loop, chosen (compiled or loaded) once, before the bar
     # starts: its rate, hence its ETA, then counts integration only
-    loop = specialised(dop853_run, m, (air, t, t_end, y, h, p, pw, ev, rtol, atol, locate,
-                                       out_t, out_y, i_out, max_steps, counters, math.inf))
+    loop = specialised(run_fn, m, (air, t, t_end, y, h, p, pw, ev, rtol, atol, locate,
+                                   out_t, out_y, i_out, max_steps, *kept, math.inf))
     t0 = time.perf_counter()
-    with _bar(periods, f"{sat.name} DOP853", progress) as bar:
+    with _bar(periods, f"{sat.name} {name}", progress) as bar:
         try:
             # pauses for Ctrl-C and the bar; they do not change the steps (dop853_run's
             # t_pause), at whatever times they fall
@@ -359,7 +375,7 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
                 # the step budget is the whole run's, however many calls it takes
                 t, h, i_out, st, slot = loop(m, air, t, t_end, y, h, p, pw, ev, rtol, atol,
                                              locate, out_t, out_y, i_out,
-                                             max_steps - int(counters[4]), counters, t_pause)
+                                             max_steps - int(counters[4]), *kept, t_pause)
                 calls += 1
                 _advance(bar, t / sat.period)
                 if st == STATUS_EVENT:
@@ -391,7 +407,7 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
         fine_t, fine_y = np.append(fine_t, t), np.vstack([fine_y, y])
         t_out, y_out = ((fine_t, fine_y) if refine == 1
                         else (np.append(t_out, t), np.vstack([y_out, y])))
-    return SimResult(sat, model, "adaptive", t_out, y_out,
+    return SimResult(sat, model, scheme, t_out, y_out,
                      fine_t=fine_t if refine > 1 else None,
                      fine_states=fine_y if refine > 1 else None,
                      periods=periods,

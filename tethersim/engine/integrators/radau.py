@@ -13,24 +13,28 @@ import math
 import numpy as np
 from numba import literally, njit
 
-from tethersim.engine.dynamics import derivative, model_size, model_tether_margins
+from tethersim.engine.dynamics import derivative, model_size
+from tethersim.engine.events import N_EVENTS, N_SWITCH, model_events
 from tethersim.engine.integrators import switching
 from tethersim.engine.integrators.borrow import borrow
+from tethersim.engine.integrators.dop853 import (
+    STATUS_EVENT,
+    STATUS_MAX_STEPS,
+    STATUS_NONFINITE,
+    STATUS_OK,
+    STATUS_STEP_TOO_SMALL,
+)
 from tethersim.engine.integrators.linalg import EPS, fd_jacobian, lu_solve
 from tethersim.engine.integrators.radau_step import (
     MAX_FACTOR,
     MIN_FACTOR,
     NEWTON_MAXITER,
-    STATUS_MAX_STEPS,
-    STATUS_NONFINITE,
-    STATUS_OK,
-    STATUS_STEP_TOO_SMALL,
     C,
     E,
     _dense,
     _dense_q,
+    _dense_tau,
     _factor,
-    _locate_dense,
     _predict_factor,
     _rms,
     initial_step,
@@ -51,10 +55,10 @@ _C_J = 8
 
 
 @njit(cache=True, nogil=True)
-def _radau_loop(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y, i_out,
+def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_t, out_y, i_out,
                 max_steps, counters, carry, t_pause, Z, W, F, Q, J, LR, LC, pr, pc, v, bc, g):
     y, p, pw, out_t, out_y = borrow(y), borrow(p), borrow(pw), borrow(out_t), borrow(out_y)
-    air, counters, carry = borrow(air), borrow(counters), borrow(carry)
+    air, ev, counters, carry = borrow(air), borrow(ev), borrow(counters), borrow(carry)
     Z, W, F, Q, J, LR, LC = borrow(Z), borrow(W), borrow(F), borrow(Q), borrow(J), borrow(LR), borrow(LC)
     pr, pc, v, bc, g = borrow(pr), borrow(pc), borrow(v), borrow(bc), borrow(g)
     n = model_size(model)
@@ -68,11 +72,16 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, o
             Q[i, k] = carry[_C_J + n * n + 3 * i + k]
         y_old[i] = carry[_C_J + n * n + 3 * n + i]
     t = t0
+    g0, g1 = g[0], g[1]
+    model_events(model, y, p, ev, g0, locate)
+    for j in range(N_SWITCH, N_EVENTS):
+        if not g0[j] > 0.0:  # the start is outside (or NaN): stop before any step
+            return t, h, i_out, STATUS_EVENT, j
     derivative(model, air, t, y, p, pw, f)
     counters[0] += 1
     for i in range(n):
         if not math.isfinite(f[i]):
-            return t, h, i_out, STATUS_NONFINITE
+            return t, h, i_out, STATUS_NONFINITE, -1
     if carry[_C_STARTED] == 0.0:
         fd_jacobian(model, air, t, y, f, p, pw, J, ys, fs)
         counters[0] += n
@@ -86,14 +95,14 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, o
         h = initial_step(model, air, t, y, f, p, pw, rtol, atol, t_end, ys, fs)
         counters[0] += 1
     if not math.isfinite(h):
-        return t, h, i_out, STATUS_NONFINITE
+        return t, h, i_out, STATUS_NONFINITE, -1
     newton_tol = max(10 * EPS / rtol, min(0.03, rtol ** 0.5))
     h_abs = h
     lu_h = -1.0  # the step the LU factors are for (-1: none)
     steps = 0
     while t < t_end and t < t_pause:
         if steps >= max_steps:
-            return t, h_abs, i_out, STATUS_MAX_STEPS
+            return t, h_abs, i_out, STATUS_MAX_STEPS, -1
         steps += 1
         min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
         if h_abs < min_step:
@@ -102,7 +111,7 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, o
         h_start = h_abs  # the controller's memory is the step predicted, not the one taken
         while True:
             if not (h_abs >= min_step):
-                return t, h_abs, i_out, STATUS_STEP_TOO_SMALL
+                return t, h_abs, i_out, STATUS_STEP_TOO_SMALL, -1
             t_new = min(t + h_abs, t_end)
             hs = t_new - t
             for i in range(n):
@@ -176,30 +185,41 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, o
             lu_h = -1.0
         h_next = hs * factor
         _dense_q(n, Z, Q)
-        if locate:
-            model_tether_margins(model, y, p, g[0])
-            model_tether_margins(model, y_new, p, g[1])
-            if switching.crossed(g[0], g[1]) >= 0:
-                x = _locate_dense(model, n, Q, y, p, g[0], g[1], g[2], ys)
-                if x < 1.0:  # retake the step to land just past the switch
-                    hx = x * hs
-                    for s in range(3):
-                        _dense(n, Q, y, x * C[s], ys)
-                        for i in range(n):
-                            Z[s, i] = ys[i] - y[i]
-                    _factor(n, hx, J, LR, LC, pr, pc)
-                    counters[6] += 1
-                    lu_h = -1.0
-                    ok, it, _ = radau_newton(model, air, t, y, hx, p, pw, Z, W, F, ys, br, bc,
-                                             scale, newton_tol, LR, LC, pr, pc)
-                    counters[0] += 3 * it
-                    if ok:  # else the full step stands, with its cubic Q
-                        hs = hx
-                        t_new = t + hx
-                        for i in range(n):
-                            y_new[i] = y[i] + Z[2, i]
-                        _dense_q(n, Z, Q)
-                        counters[3] += 1
+        # events (engine/events.py): located on the step's collocation cubic
+        # (switching.locate, method 2), then the step is retaken to land on the crossing
+        hit = -1
+        model_events(model, y_new, p, ev, g1, locate)
+        if switching.fired(g0, g1, locate):
+            _dense_tau(n, Q, hs, W)
+            tau, hit = switching.locate(2, model, air, t, y, f, hs, p, pw, ev, W, y_new, g0,
+                                        g1, g[2], locate)
+            if tau < hs:  # y_new is the cubic's value there; a converged step replaces it
+                for s in range(3):
+                    for i in range(n):
+                        Z[s, i] = C[s] * tau * (W[0, i] + C[s] * tau * (W[1, i] + C[s] * tau
+                                                                          * W[2, i]))
+                _factor(n, tau, J, LR, LC, pr, pc)
+                counters[6] += 1
+                lu_h = -1.0
+                ok, it, _ = radau_newton(model, air, t, y, tau, p, pw, Z, W, F, ys, br, bc,
+                                         scale, newton_tol, LR, LC, pr, pc)
+                counters[0] += 3 * it
+                if ok:
+                    for i in range(n):
+                        y_new[i] = y[i] + Z[2, i]
+                    _dense_q(n, Z, Q)
+                    model_events(model, y_new, p, ev, g1, locate)
+                else:  # the cubic's state stands, and the cubic, rescaled to the shorter step
+                    r = tau / hs
+                    for i in range(n):
+                        Q[i, 0] *= r
+                        Q[i, 1] *= r * r
+                        Q[i, 2] *= r * r * r
+                hs = tau
+                t_new = t + tau
+            if hit < N_SWITCH:
+                counters[3] += 1
+                hit = -1
         counters[1] += 1
         derivative(model, air, t_new, y_new, p, pw, f_new)
         counters[0] += 1
@@ -210,7 +230,9 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, o
             current_jac = True
         else:
             current_jac = False
-        while i_out < out_t.shape[0] and out_t[i_out] <= t_new:
+        # a step that ends on a stopping limit writes the outputs before it only (dop853.py)
+        t_last = t_new if hit < 0 else np.nextafter(t_new, -np.inf)
+        while i_out < out_t.shape[0] and out_t[i_out] <= t_last:
             _dense(n, Q, y, (out_t[i_out] - t) / hs, out_y[i_out])
             i_out += 1
         h_abs_old, err_old = h_start, err_norm
@@ -218,12 +240,17 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, o
             y_old[i] = y[i]
             y[i] = y_new[i]
             f[i] = f_new[i]
+        for i in range(N_EVENTS):
+            g0[i] = g1[i]
         t_old, h_last, have_sol = t, hs, True
         t = t_new
         h_abs = h_next
+        if hit >= 0:
+            counters[4] += steps
+            return t, h_abs, i_out, STATUS_EVENT, hit
         for i in range(n):
             if not math.isfinite(y[i]):
-                return t, h_abs, i_out, STATUS_NONFINITE
+                return t, h_abs, i_out, STATUS_NONFINITE, -1
     counters[4] += steps
     # what the next call needs to continue exactly as one call would
     carry[_C_CURRENT_JAC] = 1.0 if current_jac else 0.0
@@ -235,11 +262,11 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, o
         for k in range(3):
             carry[_C_J + n * n + 3 * i + k] = Q[i, k]
         carry[_C_J + n * n + 3 * n + i] = y_old[i]
-    return t, h_abs, i_out, STATUS_OK
+    return t, h_abs, i_out, STATUS_OK, -1
 
 
 @njit(cache=True, nogil=True)
-def radau_run(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y, i_out,
+def radau_run(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_t, out_y, i_out,
               max_steps, counters, carry, t_pause=math.inf):
     """Integrate y (in place) from t0 to t_end with Radau IIA (order 5).
 
@@ -261,7 +288,7 @@ def radau_run(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out
     pc = np.empty(2 * n, dtype=np.int64)
     v = np.empty((9, n))
     bc = np.empty(2 * n)
-    g = np.empty((3, 2))
-    return _radau_loop(model, air, t0, t_end, y, h, p, pw, rtol, atol, locate, out_t, out_y,
+    g = np.empty((3, N_EVENTS))  # events at both ends of a step, and a trial
+    return _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_t, out_y,
                        i_out, max_steps, counters, carry, t_pause, Z, W, F, Q, J, LR, LC, pr,
                        pc, v, bc, g)

@@ -31,8 +31,7 @@ import math
 import numpy as np
 from numba import njit
 
-from tethersim.engine.dynamics import derivative, model_size, model_tether_margins
-from tethersim.engine.integrators import switching
+from tethersim.engine.dynamics import derivative, model_size
 from tethersim.engine.integrators.linalg import lu_factor, lu_solve
 
 S6 = 6 ** 0.5
@@ -59,7 +58,6 @@ ERROR_ESTIMATOR_ORDER = 3
 NEWTON_MAXITER = 6
 MIN_FACTOR = 0.2
 MAX_FACTOR = 10.0
-STATUS_OK, STATUS_NONFINITE, STATUS_STEP_TOO_SMALL, STATUS_MAX_STEPS = 0, 1, 2, 3
 
 
 @njit(cache=True)
@@ -169,47 +167,20 @@ def _dense(n, Q, y_old, x, out):
 
 
 @njit(cache=True)
+def _dense_tau(n, Q, h, W):
+    """W[k] = Q[:, k] / h^(k+1): the cubic's coefficients per power of τ = t − t_old, the
+    form integrators/switching.py's trial (method 2) evaluates."""
+    for i in range(n):
+        W[0, i] = Q[i, 0] / h
+        W[1, i] = Q[i, 1] / (h * h)
+        W[2, i] = Q[i, 2] / (h * h * h)
+
+
+@njit(cache=True)
 def _dense_q(n, Z, Q):
     for i in range(n):
         for k in range(3):
             Q[i, k] = Z[0, i] * P[0, k] + Z[1, i] * P[1, k] + Z[2, i] * P[2, k]
-
-
-@njit(cache=True)
-def _locate_dense(model, n, Q, y_old, p, g0, g1, g, ys):
-    """Fraction x in (0, 1] of the step just past its earliest taut/slack switch, found
-    by Illinois iteration on the tether margins of the dense output (bracket 1e-12)."""
-    x_best = 1.0
-    for j in range(g0.shape[0]):
-        if (g0[j] > 0.0) == (g1[j] > 0.0):
-            continue
-        lo, hi, f_lo = 0.0, x_best, g0[j]
-        _dense(n, Q, y_old, hi, ys)
-        model_tether_margins(model, ys, p, g)
-        f_hi = g[j]
-        if (f_hi > 0.0) == (f_lo > 0.0):
-            continue
-        side = 0
-        for _ in range(switching.MAX_ITER):
-            if hi - lo <= switching.RTOL_TAU:
-                break
-            mid = (lo * f_hi - hi * f_lo) / (f_hi - f_lo)
-            if not (lo < mid < hi):
-                mid = 0.5 * (lo + hi)
-            _dense(n, Q, y_old, mid, ys)
-            model_tether_margins(model, ys, p, g)
-            if (g[j] > 0.0) == (f_lo > 0.0):
-                lo, f_lo = mid, g[j]
-                if side == -1:
-                    f_hi *= 0.5
-                side = -1
-            else:
-                hi, f_hi = mid, g[j]
-                if side == 1:
-                    f_lo *= 0.5
-                side = 1
-        x_best = hi
-    return x_best
 
 
 @njit(cache=True)

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from numba import njit
 
+from tethersim.engine.dynamics import model_size
 from tethersim.engine.events import N_SWITCH, model_events
 from tethersim.engine.integrators.steps import copy_into, dop853_step, rk4_step
 
@@ -41,6 +42,11 @@ def fired(g0, g1, switches):
 def _trial(method, model, air, t, y, f, tau, p, pw, ev, work, y_new, g, switches):
     if method == 0:
         rk4_step(model, air, t, y, tau, p, pw, work, y_new)
+    elif method == 2:
+        # Radau (integrators/radau.py): the step's collocation cubic, work[k] the
+        # coefficient of τ^(k+1); the loop then retakes the step to land there
+        for i in range(model_size(model)):
+            y_new[i] = y[i] + tau * (work[0, i] + tau * (work[1, i] + tau * work[2, i]))
     else:
         dop853_step(model, air, t, y, f, tau, p, pw, work[:16], work[16], y_new)
     model_events(model, y_new, p, ev, g, switches)
@@ -53,7 +59,8 @@ def locate(method, model, air, t, y, f, h, p, pw, ev, work, y_new, g0, g1, g, sw
     """(τ in (0, h] landing just past the earliest crossing, its slot).
 
     method 0: RK4 (work is (5, n)); method 1: DOP853 (work is (17, n): stages
-    then a stage state; f = f(t, y)).  model, air: dynamics.derivative.
+    then a stage state; f = f(t, y)); method 2: Radau's dense output (work is
+    (3, n), the cubic's coefficients per power of τ).  model, air: dynamics.derivative.
     g0, g1: the events at y and at step(y, h); g is a scratch vector like them.
     switches: whether the switch slots are watched (``fired``).  On return
     y_new holds step(y, τ) and g1 the events there.
