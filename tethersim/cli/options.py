@@ -187,17 +187,19 @@ def add_integrator(parser, *, rtol: float = 1e-10, fixed_step: bool = True) -> N
     g = parser.add_argument_group("integrator")
     g.add_argument("--faithful", action="store_true", help=_faithful_help())
     if fixed_step:
-        g.add_argument("--method", choices=("adaptive", "rk4"), default=None,
-                       help="adaptive DOP853 (default, converged) or fixed-step RK4")
+        g.add_argument("--method", choices=("adaptive", "rk4", "implicit"), default=None,
+                       help="adaptive DOP853 (default, converged), fixed-step RK4, or implicit "
+                            "Radau IIA (stiff, real tethers: docs/tethers.md)")
         g.add_argument("--steps", type=positive_int, default=None, metavar="N",
                        help=f"RK4: number of steps in the whole run (default "
                             f"{FAITHFUL_STEPS_PER_PERIOD} per orbit with --faithful, "
-                            f"{STEPS_PER_PERIOD} per orbit with --method rk4); adaptive: "
-                            f"number of output samples")
+                            f"{STEPS_PER_PERIOD} per orbit with --method rk4); adaptive, "
+                            f"implicit: number of output samples")
         g.add_argument("--locate-switches", action="store_true",
                        help="RK4: split steps at taut/slack switches (not with --faithful)")
     g.add_argument("--rtol", type=rtol_float, default=rtol,
-                   help=f"adaptive DOP853 relative tolerance (default {rtol:g})")
+                   help=f"relative tolerance of the adaptive and implicit schemes (default "
+                        f"{rtol:g})")
 
 
 def model_names() -> tuple:
@@ -229,7 +231,7 @@ def satellite(args):
 class Integrator:
     """How a command integrates, resolved once from the integrator options.
 
-    method: "rk4" or "adaptive"; steps: RK4 steps of the whole run (None for
+    method: "rk4", "adaptive" or "implicit"; steps: RK4 steps of the whole run (None for
     adaptive); locate: locate taut/slack switches; faithful: the thesis's scheme;
     rtol: adaptive tolerance; samples: adaptive output samples (None: the default).
     """
@@ -246,7 +248,8 @@ class Integrator:
         ch. 5), switches not located``; ``period`` [s] of the orbit, ``periods`` run."""
         located = "switches located" if self.locate else "switches not located"
         if self.method != "rk4":
-            return f"DOP853 adaptive, rtol {self.rtol:g}, {located}"
+            scheme = "Radau IIA implicit" if self.method == "implicit" else "DOP853 adaptive"
+            return f"{scheme}, rtol {self.rtol:g}, {located}"
         per_orbit = self.steps / periods
         thesis = self.faithful and self.steps == faithful_steps(periods)
         why = ", thesis ch. 5" if thesis else ""
@@ -277,8 +280,8 @@ def integrator(args) -> Integrator:
     steps = getattr(args, "steps", None)
     locate_flag = getattr(args, "locate_switches", False)
     if args.faithful:
-        if method == "adaptive":
-            raise UsageError("--faithful with --method adaptive: --faithful is fixed-step RK4")
+        if method in ("adaptive", "implicit"):
+            raise UsageError(f"--faithful with --method {method}: --faithful is fixed-step RK4")
         if locate_flag:
             raise UsageError("--faithful with --locate-switches: the thesis's scheme does not "
                              "locate switches")
@@ -286,8 +289,8 @@ def integrator(args) -> Integrator:
     if method == "rk4":
         return Integrator("rk4", steps or max(1, round(STEPS_PER_PERIOD * args.periods)),
                           locate_flag, False, args.rtol)
-    # adaptive: DOP853 always locates switches; --steps sets the output samples
-    return Integrator("adaptive", None, True, False, args.rtol, samples=steps)
+    # adaptive, implicit: always locate switches; --steps sets the output samples
+    return Integrator(method or "adaptive", None, True, False, args.rtol, samples=steps)
 
 
 def progress(args):

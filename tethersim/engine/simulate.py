@@ -97,6 +97,34 @@ def _check_range(name, value, bounds):
     return v
 
 
+def check_scheme(sat: Satellite, method: str) -> None:
+    """Refuse tethers or dampers too stiff for an explicit scheme, in one line.
+
+    RK4 and DOP853 must resolve a tether's axial oscillation step by step (a real fibre
+    line's is a fraction of a second: docs/tethers.md); the implicit scheme need not.
+    A satellite made with ``allow_implausible`` runs anyway (slowly).
+
+    Parameters
+    ----------
+    sat : Satellite
+        The satellite.
+    method : str
+        ``"adaptive"``, ``"rk4"`` (explicit) or ``"implicit"``.
+
+    Raises
+    ------
+    ValueError
+        Naming the tether, its period and the way out.
+    """
+    if method == "implicit" or sat.allow_implausible:
+        return
+    from tethersim.model.plausibility import stiffness_problems
+    stiff = stiffness_problems(sat)
+    if stiff:
+        raise ValueError(f"{stiff[0]}; method='implicit' (--method implicit) integrates stiff "
+                         f"tethers (docs/tethers.md)")
+
+
 def _kernel_args(sat: Satellite, model: str, duration: float) -> tuple:
     """(model index, air vector): the compiled loop is chosen by the first."""
     return model_index(model), air_vector(sat, duration)
@@ -182,6 +210,7 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
                         f"(the method's default)")
     if method not in METHODS:
         raise ValueError(f"method = {method!r}: allowed values {', '.join(METHODS)}")
+    check_scheme(sat, method)
     model = model_for_orbit(model, sat.orbit)  # orbit = "free": the model's free twin
     if method == "rk4":
         steps = _check_positive("steps", steps if steps is not None

@@ -20,7 +20,7 @@ import math
 # Generous factors, documented in docs and messages: the thesis presets sit far inside.
 REACH_FACTOR = 10.0  # balloon start <= this x the longest tether-plus-boom reach
 BOOM_FACTOR = 10.0  # l10 + l20 >= (a + b) / this: tethers spanning the boom
-T_TETHER_MIN = 0.1  # s, shortest tether oscillation period the integrator resolves
+T_TETHER_MIN = 0.1  # s, shortest tether oscillation period the explicit schemes resolve
 # (DOP853 is capped at 1e6 steps per orbit, ~5 ms at 200 km: 20 steps per 0.1 s period)
 # s, shortest damper time m3_eff / c: an overdamped decay need not be resolved, only
 # integrated stably, which DOP853 does while step x c / m3_eff < ~5: 1 ms at ~5 ms steps,
@@ -92,6 +92,29 @@ def _cross_problems(sat) -> list:
         out.append(f"l10 + l20 = {sat.l10 + sat.l20:g} m: plausible range >= {span:.4g} m "
                    f"((a + b) / {BOOM_FACTOR:g}: shorter tethers would always be stretched "
                    f"over {BOOM_FACTOR:g}x across the boom)")
+    return out
+
+
+def stiffness_problems(sat) -> list:
+    """Tethers and dampers faster than the explicit schemes resolve, one line each.
+
+    Not a property of the satellite: a real fibre tether (docs/tethers.md) oscillates
+    axially in a fraction of a second, which the implicit scheme (``method="implicit"``)
+    integrates and RK4 and DOP853 cannot; simulate() refuses such a satellite for the
+    explicit schemes unless it allows implausible input (engine/simulate.py).
+
+    Parameters
+    ----------
+    sat : tethersim.model.satellite.Satellite
+        A satellite that passed its hard checks.
+
+    Returns
+    -------
+    list of str
+        Messages naming the field, the largest value the explicit schemes resolve and
+        the tether's period or damper time; empty if none.
+    """
+    out = []
     from .params import PARAMETERS
     per_edge = PARAMETERS["E1"].factor  # N per N/mm^2 (1: the 1 mm^2 cross-section)
     m = _balloon_mass(sat)
@@ -100,15 +123,14 @@ def _cross_problems(sat) -> list:
         e_max = m * l0 * (2 * math.pi / T_TETHER_MIN) ** 2
         if E > e_max:
             period = 2 * math.pi * math.sqrt(m * l0 / E)
-            out.append(f"E{i} = {E / per_edge:g} N/mm^2: plausible range <= "
-                       f"{e_max / per_edge:.4g} N/mm^2 for "
-                       f"m3 and l{i}0 (tether {i} would oscillate with period {period:.3g} s, "
-                       f"under the {T_TETHER_MIN:g} s the integrator resolves)")
+            out.append(f"E{i} = {E / per_edge:g} N/mm^2: tether {i} would oscillate with period "
+                       f"{period:.3g} s, under the {T_TETHER_MIN:g} s the explicit schemes "
+                       f"resolve (E{i} <= {e_max / per_edge:.4g} N/mm^2 for m3 and l{i}0)")
         c_max = m / T_DAMPER_MIN
         if c > c_max:
             out.append(f"c{i} = {c:g} N s/m: plausible range <= {c_max:.4g} N s/m for m3 "
                        f"(damper time m3/c{i} = {m / c:.3g} s, under the {T_DAMPER_MIN:g} s "
-                       f"the integrator resolves)")
+                       f"the explicit schemes resolve)")
     return out
 
 
@@ -131,13 +153,15 @@ def _rate_problems(sat, reach_limit: float) -> list:
     return out
 
 
-def problems(sat) -> list:
+def problems(sat, stiffness: bool = True) -> list:
     """Every plausibility violation of ``sat``, one line each.
 
     Parameters
     ----------
     sat : tethersim.model.satellite.Satellite
         A satellite that passed its hard checks.
+    stiffness : bool, optional
+        Include :func:`stiffness_problems` (what the explicit schemes cannot resolve).
 
     Returns
     -------
@@ -145,7 +169,8 @@ def problems(sat) -> list:
         Messages naming the field (SI field names, edge units: E in N/mm^2,
         altitude in km), the plausible range and why; empty if plausible.
     """
-    return _table_problems(sat) + _cross_problems(sat)
+    return (_table_problems(sat) + _cross_problems(sat)
+            + (stiffness_problems(sat) if stiffness else []))
 
 
 def check(sat, where: str = "") -> None:
@@ -165,7 +190,8 @@ def check(sat, where: str = "") -> None:
     """
     if getattr(sat, "allow_implausible", False):
         return
-    found = problems(sat)
+    # stiff tethers are refused by the scheme that cannot integrate them (simulate), not here
+    found = problems(sat, stiffness=False)
     if found:
         from .satellite import SatelliteError
         raise SatelliteError(f"{where}{found[0]}; {HINT}")

@@ -31,6 +31,7 @@ from tethersim.engine.simulate import (
     FAITHFUL_STEPS_PER_PERIOD,
     MAX_STEPS_PER_PERIOD,
     METRIC_SAMPLES_PER_PERIOD,
+    check_scheme,
     refined_grid,
 )
 from tethersim.experiments.sweep.kernel import COL_FIELDS, F_FIELDS, I_FIELDS, sweep_block
@@ -115,6 +116,8 @@ def _compiled(sats: list, spec: SweepSpec) -> list:
     lay = get_model(spec.model)
     periods = float(spec.periods)  # as simulate() takes it
     faithful = spec.method == "faithful"
+    for s in sats:  # what simulate() refuses, each point's run refuses here too
+        check_scheme(s, "rk4" if faithful else "adaptive")
     n = len(sats)
     P = np.stack([parameter_vector(s, spec.model) for s in sats])
     Y0 = np.stack([initial_state(m, initial_model_state(s, spec.model), s.r0, s.r0 * s.omega)
