@@ -49,3 +49,15 @@ def test_the_command_line_refuses_and_then_runs_it(tmp_path, capsys):
     argv += ["--set", "l10=30.83", "--set", "l20=28.92"]
     assert main([*argv, "--method", "implicit", "--out", str(tmp_path / "b")]) == 0
     assert "Radau IIA implicit" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("change, expected", [
+    (dict(E1=5e4), ["E1 = 50000 N/mm^2: tether 1 would oscillate", "<= 2.348e+04 N/mm^2"]),
+    (dict(c2=500.0), ["c2 = 500 N s/m: damper time", "<= 99.14 N s/m"]),
+])
+def test_a_stiff_tether_or_damper_loads_and_the_explicit_run_says_why_not(change, expected):
+    sat = SAT.replace(**change)  # a valid satellite (thesis units: E x 1 mm^2 = N)
+    with pytest.raises(ValueError) as e:
+        ts.simulate(sat, periods=0.01, progress=False)
+    line = one_line(str(e.value))
+    assert all(text in line for text in expected), line

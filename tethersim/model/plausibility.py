@@ -128,9 +128,9 @@ def stiffness_problems(sat) -> list:
                        f"resolve (E{i} <= {e_max / per_edge:.4g} N/mm^2 for m3 and l{i}0)")
         c_max = m / T_DAMPER_MIN
         if c > c_max:
-            out.append(f"c{i} = {c:g} N s/m: plausible range <= {c_max:.4g} N s/m for m3 "
-                       f"(damper time m3/c{i} = {m / c:.3g} s, under the {T_DAMPER_MIN:g} s "
-                       f"the explicit schemes resolve)")
+            out.append(f"c{i} = {c:g} N s/m: damper time m3/c{i} = {m / c:.3g} s, under the "
+                       f"{T_DAMPER_MIN:g} s the explicit schemes resolve (c{i} <= {c_max:.4g} "
+                       f"N s/m for m3)")
     return out
 
 
