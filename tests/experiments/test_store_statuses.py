@@ -42,8 +42,10 @@ def test_stored_codes_are_the_engine_statuses_in_both_paths():
     assert set(STATUS) == set(STATUSES)
     # the compiled block path writes the same codes
     assert [STATUSES[c] for c in (kernel.STATUS_OK, kernel.STATUS_NONFINITE,
-                                  kernel.STATUS_FAILED, kernel.STATUS_LEFT_DOMAIN)] == \
-        ["ok", "diverged", "failed", "left-domain"]
+                                  kernel.STATUS_FAILED)] == ["ok", "diverged", "failed"]
+    from tethersim.engine.events import EVENTS
+    assert [STATUSES[c] for c, e in zip(kernel.EVENT_STATUS, EVENTS) if e.terminal] == \
+        [e.status for e in EVENTS if e.terminal]
 
 
 def test_a_balloon_blown_away_is_stored_as_left_domain_in_the_store_and_the_csv(tmp_path,

@@ -84,6 +84,10 @@ def event_message(sat, name: str, t: float) -> str:
     if name == "re-entry":
         return (f"re-entered: the boom's COM fell below {sat.reentry_altitude / 1e3:g} km "
                 f"at t = {t:.6g} s ({t / 3600:.3g} h)")
+    if name in ("tether 1 break", "tether 2 break"):
+        j = name[7]
+        return (f"tether {j} broke: its tension reached the breaking load Fb{j} = "
+                f"{getattr(sat, 'Fb' + j):.4g} N at t = {t:.6g} s ({t / 3600:.3g} h)")
     what = {"roll": f"roll |phi| passed {ROLL_LIMIT_DEG:g} deg",
             "balloon reach": f"balloon passed {reach(sat):.4g} m from the COM",
             "tether 1 stretch": f"tether 1 stretched past {MAX_STRETCH:g} x its rest length",

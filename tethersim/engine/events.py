@@ -15,11 +15,17 @@ slot   name             kind      g (positive: inside)
 3      roll             terminal  ROLL_LIMIT − |φ|: 3-D models only
 4      balloon reach    terminal  reach² − |δ|²
 5, 6   tether stretch   terminal  MAX_STRETCH l_j0 − λ_j
+7, 8   tether break     terminal  l_j0 Fb_j / E_j − (λ_j − l_j0): the spring's tension
+                                  E_j (λ_j − l_j0) / l_j0 reaches the breaking load Fb_j
+                                  (``Satellite.Fb1``, ``Fb2``; 0: never breaks)
 =====  ===============  ========  ====================================================
 
 A slot a model lacks is +1 (it never fires).  A terminal event fires when its
 slot goes from positive to non-positive; the run stops just past it (status
-``re-entered`` for the re-entry, else ``left-domain``: engine/domain.py).  The
+``re-entered`` for the re-entry, ``tether-broke`` for a break, else
+``left-domain``: engine/domain.py).  The break is judged on the spring's tension,
+the damper's share left out: the damper stands for the line's internal loss, and
+a dashpot force on a fast snap is not a load the fibre's strength is quoted for.  The
 limits of one run (h_min, the reach, MAX_STRETCH, ROLL_LIMIT) come in the small
 vector :func:`event_parameters` builds once in Python: nothing satellite-specific
 is compiled in.
@@ -48,14 +54,16 @@ EVENTS = (
     Event("balloon reach", True, "left-domain"),
     Event("tether 1 stretch", True, "left-domain"),
     Event("tether 2 stretch", True, "left-domain"),
+    Event("tether 1 break", True, "tether-broke"),
+    Event("tether 2 break", True, "tether-broke"),
 )
 N_EVENTS = len(EVENTS)
 N_SWITCH = sum(not e.terminal for e in EVENTS)  # the switch slots come first
 SLOT = {e.name: i for i, e in enumerate(EVENTS)}
 STOPS = tuple(e.name for e in EVENTS if e.terminal)
 # the event parameter vector (event_parameters): where each limit sits
-EV_H_MIN, EV_ROLL, EV_REACH2, EV_STRETCH, EV_L10, EV_L20, EV_NEAR2 = range(7)
-N_EV = 7
+EV_H_MIN, EV_ROLL, EV_REACH2, EV_STRETCH, EV_L10, EV_L20, EV_NEAR2, EV_BREAK1, EV_BREAK2 = range(9)
+N_EV = 9
 
 
 def event_parameters(sat, model: str, stops=STOPS) -> np.ndarray:
@@ -76,8 +84,10 @@ def event_parameters(sat, model: str, stops=STOPS) -> np.ndarray:
     -------
     numpy.ndarray
         float64[N_EV]: h_min [m], roll limit [rad], reach² [m²], largest stretch,
-        l10, l20 [m], and the squared balloon distance below which no tether can
-        be over its stretch limit (the tether lengths are then not evaluated).
+        l10, l20 [m], the squared balloon distance below which no tether can be
+        over its stretch or break limit (the tether lengths are then not
+        evaluated), and each tether's extension at its breaking load [m] (inf:
+        never breaks).
     """
     from tethersim.engine.domain import MAX_STRETCH, ROLL_LIMIT, reach
 
@@ -94,10 +104,18 @@ def event_parameters(sat, model: str, stops=STOPS) -> np.ndarray:
     ev[EV_REACH2] = reach(sat) ** 2 if "balloon reach" in stops else inf
     ev[EV_STRETCH] = stretch
     ev[EV_L10], ev[EV_L20] = sat.l10, sat.l20
+    # the extension λ − l0 at which the spring's tension E (λ − l0) / l0 is the breaking load
+    for slot, j, fb, e, l0 in ((EV_BREAK1, 1, sat.Fb1, sat.E1, sat.l10),
+                               (EV_BREAK2, 2, sat.Fb2, sat.E2, sat.l20)):
+        on = f"tether {j} break" in stops and fb > 0 and e > 0
+        ev[slot] = l0 * fb / e if on else inf
     # tether j runs from the balloon (|δ| from the COM) to a boom end (b or a from it):
-    # λ_j <= |δ| + end_j, so λ_j > stretch l_j0 needs |δ| > stretch l_j0 − end_j.  The
-    # margin 1e-9 keeps the bound conservative against the rounding of |δ|²
-    near = max(min(stretch * sat.l10 - sat.b, stretch * sat.l20 - sat.a), 0.0) * (1.0 - 1e-9)
+    # λ_j <= |δ| + end_j, so λ_j > its limit L_j (stretch l_j0, or l_j0 + the break
+    # extension) needs |δ| > L_j − end_j.  The margin 1e-9 keeps the bound conservative
+    # against the rounding of |δ|²
+    lim1 = min(stretch * sat.l10, sat.l10 + ev[EV_BREAK1])
+    lim2 = min(stretch * sat.l20, sat.l20 + ev[EV_BREAK2])
+    near = max(min(lim1 - sat.b, lim2 - sat.a), 0.0) * (1.0 - 1e-9)
     ev[EV_NEAR2] = near * near
     return ev
 
@@ -106,8 +124,8 @@ def model_events(model, y, p, ev, g, switches):
     """g[i] = event i of model ``model`` at state y (compiled code, literal model only).
 
     ``switches``: whether slots 0, 1 (the tether margins) are wanted; when not, and
-    the balloon is too close for any stretch limit, the tether lengths are not
-    evaluated and slots 0, 1, 5, 6 are +1.
+    the balloon is too close for any stretch or break limit, the tether lengths are
+    not evaluated and slots 0, 1, 5-8 are +1.
     """
     raise NotImplementedError("model_events is only callable from compiled code")
 
@@ -140,11 +158,15 @@ def _model_events(model, y, p, ev, g, switches):
             l10, l20, s = ev[EV_L10], ev[EV_L20], ev[EV_STRETCH]
             g[5] = s * l10 - (g[0] + l10)
             g[6] = s * l20 - (g[1] + l20)
+            g[7] = ev[EV_BREAK1] - g[0]
+            g[8] = ev[EV_BREAK2] - g[1]
         else:
             g[0] = 1.0
             g[1] = 1.0
             g[5] = 1.0
             g[6] = 1.0
+            g[7] = 1.0
+            g[8] = 1.0
     return impl
 
 

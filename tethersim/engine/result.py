@@ -28,7 +28,9 @@ CONVERGED_POSITION = 1e-2  # m
 # every model is an angle or a length (registry state_units)
 CONVERGED_TOLERANCE = {"rad": CONVERGED_THETA, "m": CONVERGED_POSITION}
 #: every status a run can end with (simulate); a stored status code is its index here
-STATUSES = ("ok", "diverged", "failed", "re-entered", "left-domain", "interrupted")
+# appended, never reordered: a sweep store codes a status by its index here
+STATUSES = ("ok", "diverged", "failed", "re-entered", "left-domain", "interrupted",
+            "tether-broke")
 DISSIPATIVE = ("drag1", "drag2", "drag3", "damper1", "damper2")
 
 
@@ -92,7 +94,8 @@ class SimResult:
         Right-hand-side evaluations, accepted and rejected steps, switches located.
     status : str
         One of :data:`STATUSES`: ``"ok"``, ``"diverged"``, ``"failed"``,
-        ``"re-entered"``, ``"left-domain"`` or ``"interrupted"``.
+        ``"re-entered"``, ``"left-domain"``, ``"interrupted"`` or ``"tether-broke"``
+        (a tether's tension reached its breaking load ``Satellite.Fb1``/``Fb2``).
     message : str
         What happened, for a status other than ok.
     error_estimate : tuple or None

@@ -14,7 +14,7 @@ from tethersim.model.constants import CD_DEFAULT, MU_EARTH, OMEGA_EARTH, R_EARTH
 
 # fields that must be > 0 and >= 0 (units in UNITS)
 _POSITIVE = ("m1", "m2", "m3", "A1", "A2", "A3", "a", "b", "l10", "l20")
-_NON_NEGATIVE = ("E1", "E2", "c1", "c2", "CD")
+_NON_NEGATIVE = ("E1", "E2", "c1", "c2", "CD", "Fb1", "Fb2")
 MAX_NAME = 100  # characters of a name: a label in summaries, plot titles and files
 COM_RTOL = 1e-6  # relative tolerance of the COM-on-the-boom condition m1 b = m2 a
 DENSITY_MODES = ("uniform", "per-body")
@@ -26,11 +26,12 @@ INITIAL_3D = {"delta_z": "m", "phi": "rad", "psi": "rad", "delta_z_dot": "m/s",
 # largest |roll| of the 3-D models' domain [deg]: the roll-pitch-yaw angles are singular at
 # 90 deg; why 80 (the kinematic matrix's conditioning): tethersim.engine.domain
 ROLL_LIMIT_DEG = 80.0
-_OPTIONAL = ("allow_implausible", "orbit", "j2", "eccentricity", "reentry_altitude", "atmosphere",
-             "epoch", "f107", "f107a", "ap", "density_scale", "inertia", "I1", "I2")
+_OPTIONAL = ("Fb1", "Fb2", "allow_implausible", "orbit", "j2", "eccentricity",
+             "reentry_altitude", "atmosphere", "epoch", "f107", "f107a", "ap", "density_scale",
+             "inertia", "I1", "I2")
 UNITS = {"m1": "kg", "m2": "kg", "m3": "kg", "A1": "m^2", "A2": "m^2", "A3": "m^2",
          "a": "m", "b": "m", "l10": "m", "l20": "m", "E1": "N", "E2": "N",
-         "c1": "N s/m", "c2": "N s/m", "CD": "1", "altitude": "m"}
+         "c1": "N s/m", "c2": "N s/m", "CD": "1", "altitude": "m", "Fb1": "N", "Fb2": "N"}
 
 
 class SatelliteError(ValueError):
@@ -67,6 +68,10 @@ class Satellite:
         (δx, δy, θ, δẋ, δẏ, θ̇) at t = 0 in m, m, rad, m/s, m/s, rad/s.
     CD : float
         Drag coefficient of every body.
+    Fb1, Fb2 : float
+        Tether breaking loads [N] (0, the default: never breaks).  A run ends
+        ``tether-broke`` when a tether's spring tension E (λ − l0) / l0 reaches it,
+        at the located time (engine/events.py; docs/tethers.md).
     density_mode : str
         "uniform" (thesis: ρ at the orbit altitude for every body) or
         "per-body" (each body at its own altitude).  Given as None (the default),
@@ -110,6 +115,8 @@ class Satellite:
     altitude: float
     initial: tuple = (0.0, 0.0, math.pi / 6, 0.0, 0.0, 0.0)
     CD: float = CD_DEFAULT
+    Fb1: float = 0.0  # N, breaking load of tether 1 (0: never breaks; docs/tethers.md)
+    Fb2: float = 0.0  # N
     density_mode: str | None = None  # None: follows the orbit (DENSITY_BY_ORBIT)
     source: str = field(default="", compare=False)
     allow_implausible: bool = False  # run outside tethersim.model.plausibility's ranges knowingly

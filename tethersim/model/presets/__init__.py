@@ -7,6 +7,7 @@ File layout (units in the key name where they are not SI)::
                    inertia = "boxes" | "points" (thesis Eq 4.4 boxes, or point masses),
                    I1 = [roll, pitch, yaw], I2 = [...] [kg m^2] (tip-mass, bus overrides)
     [tethers]      l10 l20 [m]  E1_N_per_mm2 E2_N_per_mm2 [N/mm^2]  c1 c2 [N s/m]
+                   (optional: Fb1 Fb2 [N], breaking loads)
     [orbit]        altitude_km [km]; optional: orbit = "circular" | "free", j2 = true | false,
                    eccentricity [-] (altitude_km is then the perigee), reentry_altitude_km [km]
     [initial]      delta_x delta_y [m]  theta0_deg [deg]  delta_x_dot delta_y_dot [m/s]
@@ -56,7 +57,8 @@ INITIAL_3D_KEYS = {"delta_z": ("m", "delta_z", 1.0), "phi0_deg": ("deg", "phi", 
 # optional keys of required tables
 OPTIONAL_KEYS = {"orbit": {"orbit": "circular | free", "j2": "true | false",
                            "eccentricity": "1", "reentry_altitude_km": "km"},
-                 "satellite": {"inertia": "boxes | points", "I1": "kg m^2", "I2": "kg m^2"}}
+                 "satellite": {"inertia": "boxes | points", "I1": "kg m^2", "I2": "kg m^2"},
+                 "tethers": {"Fb1": "N", "Fb2": "N"}}
 _TEXT = {"density": str, "orbit": str, "atmosphere": str, "epoch": str, "j2": bool,
          "allow_implausible": bool, "inertia": str}
 _ARRAYS = ("I1", "I2")  # [roll, pitch, yaw]: checked by the Satellite (tethersim.model.inertia)
@@ -149,7 +151,7 @@ def _options(vals: dict) -> dict:
                                 "f107a", "ap", "density_scale") if k in vals}
     if "reentry_altitude_km" in vals:
         out["reentry_altitude"] = vals["reentry_altitude_km"] * 1e3
-    out.update({k: vals[k] for k in ("inertia", *_ARRAYS) if k in vals})
+    out.update({k: vals[k] for k in ("inertia", *_ARRAYS, "Fb1", "Fb2") if k in vals})
     return out
 
 

@@ -33,6 +33,7 @@ def dumps(sat: Satellite, notes: dict | None = None, header: str = "") -> str:
     if "reentry_altitude" in changed:
         tables["orbit"]["reentry_altitude_km"] = sat.reentry_altitude / 1e3
     tables["satellite"].update({k: changed[k] for k in ("inertia", "I1", "I2") if k in changed})
+    tables["tethers"].update({k: changed[k] for k in ("Fb1", "Fb2") if k in changed})
     air = {k: changed[k] for k in ("atmosphere", "epoch", "f107", "f107a", "ap", "density_scale")
            if k in changed}
     if air:

@@ -20,7 +20,8 @@ from tethersim.output.files import save_figure
 from tethersim.output.plots.run import FAST_PNG
 
 # a marker per status other than ok (tethersim.engine.result.STATUSES) on the class map
-STATUS_MARKERS = {"diverged": "^", "failed": "X", "re-entered": "v", "left-domain": "s"}
+STATUS_MARKERS = {"diverged": "^", "failed": "X", "re-entered": "v", "left-domain": "s",
+                  "tether-broke": "*"}
 
 
 def _edges(v):
