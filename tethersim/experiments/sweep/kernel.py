@@ -22,7 +22,8 @@ Layout of the outputs, per point j:
 ``rec_f[j]``  mean pitch, steady-state pitch, settling time, trail δx, trail δy,
               largest family force on δx, δy, θ (NaN where not computed)
 ``rec_i[j]``  status code (the index of the engine's status in
-              tethersim.engine.result.STATUSES: ok, diverged, failed, left-domain),
+              tethersim.engine.result.STATUSES: ok, diverged, failed, or the stopping
+              event's status, left-domain for a circular orbit),
               counts (0/1), tumbled, upside down, right-hand-side evaluations
 """
 from __future__ import annotations
@@ -34,6 +35,7 @@ from numba import literally, njit
 
 from tethersim.analysis.metrics_kernel import N_PITCH, pitch_metrics_into, window_mean
 from tethersim.engine.evaluate import _family_force_peaks
+from tethersim.engine.events import EVENTS
 from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.dop853 import STATUS_EVENT as DOP853_EVENT
 from tethersim.engine.integrators.dop853 import dop853_run
@@ -47,8 +49,12 @@ I_FIELDS = ("status", "counts", "tumbled", "upside_down", "nfev")
 # the state columns the block measures (cols)
 COL_FIELDS = ("delta_x", "delta_y", "theta")
 # the engine's status names, coded by their index in STATUSES (the store's flag_values)
-STATUS_OK, STATUS_NONFINITE, STATUS_FAILED, STATUS_LEFT_DOMAIN = (
-    STATUSES.index(s) for s in ("ok", "diverged", "failed", "left-domain"))
+STATUS_OK, STATUS_NONFINITE, STATUS_FAILED = (
+    STATUSES.index(s) for s in ("ok", "diverged", "failed"))
+# the status code of a run stopped by each event slot (engine/events.py EVENTS; -1: a
+# switch, which stops nothing): a constant array of the compiled block
+EVENT_STATUS = np.array([STATUSES.index(e.status) if e.terminal else -1 for e in EVENTS],
+                        dtype=np.int64)
 
 
 @njit(cache=True, nogil=True)
@@ -84,24 +90,24 @@ def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
             out_y[0, i] = y[i]
         if faithful:  # simulate._run_rk4, progress=False: one call for every step
             out_t[0] = 0.0
-            rows, _, st, _, _ = rk4_run(model, air, 0, y, span[j], n_steps, one, p, pw, ev,
-                                        locate, out_t, out_y, one)
+            rows, _, st, slot, _ = rk4_run(model, air, 0, y, span[j], n_steps, one, p, pw,
+                                           ev, locate, out_t, out_y, one)
             n = 1 + rows
             # a run stopped at a limit took the steps up to it (simulate._run_rk4)
             nfev = 4 * (rows if st == RK4_EVENT else n_steps)
-            status = (STATUS_OK if st == 0 else STATUS_LEFT_DOMAIN if st == RK4_EVENT
+            status = (STATUS_OK if st == 0 else EVENT_STATUS[slot] if st == RK4_EVENT
                       else STATUS_NONFINITE)
             t = out_t
         else:  # simulate._run_adaptive, progress=False, circular orbit: one call
             t = T[j]
             for i in range(counters.shape[0]):
                 counters[i] = 0
-            _, _, n, st, _ = dop853_run(model, air, 0.0, span[j], y, 0.0, p, pw, ev, rtol,
-                                        atol, locate, t, out_y, one, max_steps, counters,
-                                        math.inf)
+            _, _, n, st, slot = dop853_run(model, air, 0.0, span[j], y, 0.0, p, pw, ev, rtol,
+                                           atol, locate, t, out_y, one, max_steps, counters,
+                                           math.inf)
             nfev = counters[0]
             status = (STATUS_OK if st == 0 else STATUS_NONFINITE if st == 1
-                      else STATUS_LEFT_DOMAIN if st == DOP853_EVENT else STATUS_FAILED)
+                      else EVENT_STATUS[slot] if st == DOP853_EVENT else STATUS_FAILED)
         counts = status == STATUS_OK and n >= 2 and _all_finite(out_y, n)
         for k in range(rec_f.shape[1]):
             rec_f[j, k] = math.nan
