@@ -101,13 +101,17 @@ def test_a_block_refuses_an_output_too_large_as_a_point_does(monkeypatch, method
 
 @pytest.mark.slow
 @pytest.mark.parametrize("method", ["adaptive", "faithful"])
-def test_a_3d_model_runs_per_point_for_its_roll_guard(method):
-    """The 3-D models' roll limit (engine/domain.py) is not in the block kernel: their
-    points take the per-point path, and a block of them gives the per-point records."""
-    spec = SweepSpec(SAT, (("E2", [0.0427, 0.06]),), periods=0.5, model="3d", method=method)
-    assert not servable(spec, SAT)
-    recs = run_block(spec, [0, 1])
-    assert [_bits(r) for _, r in recs] == [_bits(run_point(spec, k)) for k in (0, 1)]
+def test_a_3d_model_runs_in_the_block_with_its_roll_limit(method):
+    """The 3-D models' roll limit is an event of the loops (engine/events.py), so their
+    points run in the block; a block of them, one point rolling past 80°, gives the
+    per-point records."""
+    for base in (SAT, SAT.replace(initial_3d={"phi_dot": 10 * SAT.omega})):
+        spec = SweepSpec(base, (("E2", [0.0427, 0.06]),), periods=0.5, model="3d",
+                         method=method)
+        assert servable(spec, base)
+        recs = run_block(spec, [0, 1])
+        assert [_bits(r) for _, r in recs] == [_bits(run_point(spec, k)) for k in (0, 1)]
+    assert {r["status"] for _, r in recs} == {STATUS["left-domain"]}
 
 
 def test_the_block_kernel_releases_the_gil():

@@ -65,6 +65,8 @@ def run_summary(res: SimResult, out: Outcome | None = None) -> dict:
         "final delta_x [m]": float(res.x[n - 1]),
         "final delta_y [m]": float(res.y[n - 1]),
         "status": res.status,
+        # the stopping limit that ended the run, and its located time (engine/events.py)
+        **({"event": res.event, "event time [s]": res.event_time} if res.event else {}),
         **out_of_plane_summary(res),
         **orbit_summary(res, out),
         **implausible_summary(res.satellite),

@@ -146,6 +146,8 @@ def _series(res: SimResult, attrs: dict | None = None) -> tuple:
     found = res.satellite.implausible if res.satellite.allow_implausible else ()
     meta = {"satellite": res.satellite.name, "model": res.model, "method": res.method,
             "label": res.label, "status": res.status, "message": res.message,
+            # the stopping limit that ended the run, and its located time (engine/events.py)
+            **({"event": res.event, "event_time": res.event_time} if res.event else {}),
             **({"implausible_inputs": "; ".join(found)} if found else {}),
             "conventions": "docs/conventions.md: local frame rotating with omega z, "
                            "COM moves along -x, theta from +y towards +x"}

@@ -156,8 +156,6 @@ QUANTITIES.update({
 })
 FIGURES += [
     Figure(LIMITS, ("a 3-D model's roll passes ",), "roll_limit"),
-    Figure(LIMITS, ("a 3-D model's roll passes ", "could have come within "),
-           "roll_limit_band"),
     Figure(LIMITS, ("(1 + sin\\|φ\\|)/cos φ is ",), "roll_cond_limit"),
     Figure(LIMITS, ("(1 + sin\\|φ\\|)/cos φ is ", "at 80° and "), "roll_cond_89"),
     Figure(LIMITS, ("a boom within ",), "roll_limit_band"),

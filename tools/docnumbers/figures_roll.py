@@ -216,6 +216,6 @@ for _i, (_e, _r) in enumerate(MAP_POINTS):
         FIGURES.append(Figure(R, (_M, f"| {_e:g}, {_r:g} | ") + (" | ",) * _j + _left, _key))
 FIGURES += [
     Figure(R, ("past 80° in orbit ",), "roll_map_4_4"),
-    Figure(R, ("past 80° in orbit ", "objective damper; "), "roll_map_4_5"),
-    Figure(R, ("first sample beyond) and orbit ",), "roll_map_4_1"),
+    Figure(R, ("the limit, ",), "roll_map_4_5"),
+    Figure(R, ("rad) and orbit ",), "roll_map_4_1"),
 ]

@@ -88,7 +88,7 @@ def _dop853_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out
     t = t0
     model_events(model, y, p, ev, g0, locate)
     for j in range(N_SWITCH, N_EVENTS):
-        if not g0[j] > 0.0:  # the start is outside (or NaN): stop before any step
+        if g0[j] <= 0.0:  # the start is outside: stop before any step
             return t, h, i_out, STATUS_EVENT, j
     derivative(model, air, t, y, p, pw, f)
     counters[0] += 1

@@ -80,7 +80,7 @@ def _rk4_loop(model, air, k0, y, h, n_steps, stride, p, pw, ev, locate, out_t, o
     switches = 0
     model_events(model, y, p, ev, g0, locate)
     for j in range(N_SWITCH, N_EVENTS):
-        if not g0[j] > 0.0:  # the start is outside (or NaN): stop before any step
+        if g0[j] <= 0.0:  # the start is outside: stop before any step
             return 0, 0, STATUS_EVENT, j, k0 * h
     for k in range(1, n_steps + 1):
         # step k0 + k - 1 starts at (k0 + k - 1) h: the same time whether a run is one

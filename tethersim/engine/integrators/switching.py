@@ -24,16 +24,26 @@ RTOL_TAU = 1e-12  # bracket width, relative to the step, at which the search sto
 MAX_ITER = 60
 
 
+@njit(cache=True, inline="always")
+def _crosses(j, a, b):
+    """Whether slot j crosses from value a to b: a switch either way, a stopping limit
+    from inside (> 0) to outside (<= 0; NaN is no crossing)."""
+    if j < N_SWITCH:
+        return (a > 0.0) != (b > 0.0)
+    return a > 0.0 and b <= 0.0
+
+
 @njit(cache=True)
 def fired(g0, g1, switches):
     """Whether a watched slot changed sign from g0 to g1.
 
     The switch slots (both directions) only when ``switches``; a stopping limit
-    whenever it goes from inside (> 0) to outside (<= 0).
+    whenever it goes from inside (> 0) to outside (<= 0; a NaN is no crossing:
+    the loops report a non-finite state as such).
     """
     first = 0 if switches else N_SWITCH
     for j in range(first, g0.shape[0]):
-        if (g0[j] > 0.0) != (g1[j] > 0.0):
+        if _crosses(j, g0[j], g1[j]):
             return True
     return False
 
@@ -70,13 +80,13 @@ def locate(method, model, air, t, y, f, h, p, pw, ev, work, y_new, g0, g1, g, sw
     copy_into(g, g1)
     first = 0 if switches else N_SWITCH
     for j in range(first, g0.shape[0]):
-        if (g0[j] > 0.0) == (g1[j] > 0.0):
+        if not _crosses(j, g0[j], g1[j]):
             continue
         lo, hi = 0.0, tau_best
         f_lo = g0[j]
         _trial(method, model, air, t, y, f, hi, p, pw, ev, work, y_new, g, switches)
         f_hi = g[j]
-        if (f_hi > 0.0) == (f_lo > 0.0):
+        if not _crosses(j, f_lo, f_hi):
             continue  # no crossing of this slot before an earlier one
         side = 0
         for _ in range(MAX_ITER):

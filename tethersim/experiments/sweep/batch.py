@@ -10,9 +10,8 @@ is in, so a resumed or distributed sweep is still identical to an
 uninterrupted one.
 
 A point the block cannot serve runs the per-point path: per-body air (its
-air vector depends on the run) or a free orbit (it stops at re-entry between
-chunks).  Both paths measure with the same compiled metrics
-(analysis.metrics_kernel).
+air vector depends on the run) or a free orbit.  Both paths measure with the
+same compiled metrics (analysis.metrics_kernel).
 """
 from __future__ import annotations
 
@@ -49,9 +48,9 @@ _I = {name: i for i, name in enumerate(I_FIELDS)}
 def servable(spec: SweepSpec, sat) -> bool:
     """Whether a point with satellite ``sat`` runs in a compiled block (else run_point)."""
     model = model_for_orbit(spec.model, sat.orbit)
-    # the 3-D models' roll guard (engine/domain.py) is not in the block kernel: per point
+    # any circular-orbit model, planar or 3-D: the loops stop at the domain's limits
+    # (engine/events.py: the roll too) in the block as in simulate()
     return (model == spec.model and has_com_orbit(model_index(model))
-            and get_model(model).geometry == "planar"
             and sat.density_mode != "per-body")
 
 

@@ -22,7 +22,8 @@ Layout of the outputs, per point j:
 ``rec_f[j]``  mean pitch, steady-state pitch, settling time, trail δx, trail δy,
               largest family force on δx, δy, θ (NaN where not computed)
 ``rec_i[j]``  status code (the index of the engine's status in
-              tethersim.engine.result.STATUSES),
+              tethersim.engine.result.STATUSES: ok, diverged, failed, or the stopping
+              event's status, left-domain for a circular orbit),
               counts (0/1), tumbled, upside down, right-hand-side evaluations
 """
 from __future__ import annotations
@@ -50,8 +51,9 @@ COL_FIELDS = ("delta_x", "delta_y", "theta")
 # the engine's status names, coded by their index in STATUSES (the store's flag_values)
 STATUS_OK, STATUS_NONFINITE, STATUS_FAILED = (
     STATUSES.index(s) for s in ("ok", "diverged", "failed"))
-# the status a run stopped by each event slot ends with (engine/events.py's table)
-EVENT_STATUS = np.array([STATUSES.index(e.status) if e.terminal else STATUS_OK for e in EVENTS],
+# the status code of a run stopped by each event slot (engine/events.py EVENTS; -1: a
+# switch, which stops nothing): a constant array of the compiled block
+EVENT_STATUS = np.array([STATUSES.index(e.status) if e.terminal else -1 for e in EVENTS],
                         dtype=np.int64)
 
 
@@ -88,8 +90,8 @@ def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
             out_y[0, i] = y[i]
         if faithful:  # simulate._run_rk4, progress=False: one call for every step
             out_t[0] = 0.0
-            rows, _, st, slot, _ = rk4_run(model, air, 0, y, span[j], n_steps, one, p, pw, ev,
-                                           locate, out_t, out_y, one)
+            rows, _, st, slot, _ = rk4_run(model, air, 0, y, span[j], n_steps, one, p, pw,
+                                           ev, locate, out_t, out_y, one)
             n = 1 + rows
             # a run stopped at a limit took the steps up to it (simulate._run_rk4)
             nfev = 4 * (rows if st == RK4_EVENT else n_steps)
