@@ -15,8 +15,8 @@ import pytest
 
 from tethersim import load_preset
 from tethersim.analysis.classify import CLASSES
-from tethersim.experiments.sweep import SweepSpec, batch, run_point
-from tethersim.experiments.sweep.batch import run_block, servable
+from tethersim.experiments.sweep import SweepSpec, run_point
+from tethersim.experiments.sweep.batch import run_block
 from tethersim.experiments.sweep.point import STATUS
 
 SAT = load_preset("satI")
@@ -74,19 +74,29 @@ def test_a_record_does_not_depend_on_its_block(blocks):
                 [_bits(recs[k][1]) for k in part]
 
 
-def test_points_the_block_cannot_serve_run_the_per_point_path(monkeypatch):
-    per_body = SAT.replace(density_mode="per-body")
+@pytest.mark.parametrize("air", [dict(density_mode="per-body"),
+                                 dict(density_mode="per-body", atmosphere="nrlmsise00")])
+def test_per_body_air_runs_in_the_block_with_the_per_point_records(monkeypatch, air):
+    """Each body's own density (Vallado's table or NRLMSISE-00): no fallback to simulate()."""
+    from tethersim.experiments.sweep import point
+    base = SAT.replace(**air)
+    spec = SweepSpec(base, (("E2", [0.04, 0.0427]), ("altitude", [200.0, 210.0])), periods=0.5)
+    with monkeypatch.context() as m:
+        m.setattr(point, "simulate", lambda *a, **k: pytest.fail("a point ran simulate()"))
+        recs = run_block(spec, [3, 0, 1, 2])
+    assert [_bits(r) for _, r in recs] == [_bits(run_point(spec, k)) for k in (3, 0, 1, 2)]
+
+
+@pytest.mark.slow  # compiles the free-orbit block
+@pytest.mark.parametrize("method", ["adaptive", "faithful"])
+def test_a_free_orbit_runs_in_the_block_with_its_re_entry(method):
+    """A free orbit (its free twin model, per-body air), one point re-entering (the
+    re-entry altitude 1 km under the start): the block gives the per-point records."""
     free = SAT.replace(orbit="free")
-    assert servable(SweepSpec(SAT, (("E2", [0.0427]),), periods=1.0), SAT)
-    assert not servable(SweepSpec(per_body, (("E2", [0.0427]),), periods=1.0), per_body)
-    assert not servable(SweepSpec(free, (("E2", [0.0427]),), periods=1.0), free)
-    spec = SweepSpec(per_body, (("E2", [0.04, 0.0427]),), periods=0.5)
-    calls = []
-    monkeypatch.setattr(batch, "run_point", lambda s, k: calls.append(k) or run_point(s, k))
-    monkeypatch.setattr(batch, "_compiled", lambda *a: pytest.fail("per-body air in a block"))
-    recs = run_block(spec, [1, 0])
-    assert calls == [1, 0]
-    assert [_bits(r) for _, r in recs] == [_bits(run_point(spec, k)) for k in (1, 0)]
+    spec = SweepSpec(free, (("reentry_altitude", [120.0, 199.0]),), periods=1.0, method=method)
+    recs = run_block(spec, [0, 1])
+    assert [_bits(r) for _, r in recs] == [_bits(run_point(spec, k)) for k in (0, 1)]
+    assert recs[1][1]["status"] == STATUS["re-entered"]
 
 
 @pytest.mark.parametrize("method", ["adaptive", "faithful"])
@@ -108,7 +118,6 @@ def test_a_3d_model_runs_in_the_block_with_its_roll_limit(method):
     for base in (SAT, SAT.replace(initial_3d={"phi_dot": 10 * SAT.omega})):
         spec = SweepSpec(base, (("E2", [0.0427, 0.06]),), periods=0.5, model="3d",
                          method=method)
-        assert servable(spec, base)
         recs = run_block(spec, [0, 1])
         assert [_bits(r) for _, r in recs] == [_bits(run_point(spec, k)) for k in (0, 1)]
     assert {r["status"] for _, r in recs} == {STATUS["left-domain"]}

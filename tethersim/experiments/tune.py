@@ -23,7 +23,7 @@ import numpy as np
 
 from tethersim.analysis.classify import CLASSES, STABLE, TUMBLING, UPSIDE_DOWN
 from tethersim.analysis.metrics import SETTLING_TOL, long_enough, min_run_orbits
-from tethersim.experiments.sweep.point import run_point
+from tethersim.experiments.sweep.batch import run_block
 from tethersim.experiments.sweep.runner import map_points
 from tethersim.experiments.sweep.spec import SweepSpec
 from tethersim.model.params import from_si
@@ -58,7 +58,7 @@ def check_periods(periods: float) -> None:
 
 def _run(sat: Satellite, name: str, value_si: float, periods: float, model: str) -> dict:
     spec = SweepSpec(sat, ((name, [from_si(name, value_si)]),), periods=periods, model=model)
-    return run_point(spec, 0)
+    return run_block(spec, [0])[0][1]  # the sweep's compiled path, not simulate() + outcome()
 
 
 def _theta_ss(rec: dict) -> float:

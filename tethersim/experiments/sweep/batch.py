@@ -3,15 +3,13 @@
 Per point, Python only builds the satellite, its parameter vector, initial
 state, output grid and event limits, and (one LAPACK call for the block) the
 RK4 amplification; ``kernel.sweep_block`` then integrates (the loops stop at the
-domain's limits themselves) and measures every point without the GIL, and Python writes the records.  The
-records are the per-point path's (point.run_point) bit for bit
-(tests/experiments/test_sweep_batch.py) and do not depend on the block a point
-is in, so a resumed or distributed sweep is still identical to an
-uninterrupted one.
-
-A point the block cannot serve runs the per-point path: per-body air (its
-air vector depends on the run) or a free orbit.  Both paths measure with the
-same compiled metrics (analysis.metrics_kernel).
+domain's limits themselves) and measures every point without the GIL, and Python
+writes the records.  Every model and air runs here: there is no fallback path.  The
+records are those of simulate() then outcome() (point.run_point, the tests' truth)
+bit for bit (tests/experiments/test_sweep_batch.py): the same compiled loops, called
+as simulate calls them, and the same compiled metrics (analysis.metrics_kernel).
+They do not depend on the block a point is in, so a resumed or distributed sweep is
+still identical to an uninterrupted one.
 """
 from __future__ import annotations
 
@@ -21,7 +19,7 @@ import numpy as np
 
 from tethersim.analysis.classify import classify
 from tethersim.analysis.metrics import SS_FRACTION, PitchMetrics
-from tethersim.engine.dynamics import has_com_orbit, initial_state
+from tethersim.engine.dynamics import initial_state
 from tethersim.engine.events import event_parameters
 from tethersim.engine.guards import API_SUBJECT, check_simulation
 from tethersim.engine.integrators.select import specialised
@@ -34,28 +32,22 @@ from tethersim.engine.simulate import (
     refined_grid,
 )
 from tethersim.experiments.sweep.kernel import COL_FIELDS, F_FIELDS, I_FIELDS, sweep_block
-from tethersim.experiments.sweep.point import record, run_point
+from tethersim.experiments.sweep.point import record
 from tethersim.experiments.sweep.spec import ATOL_PER_RTOL, SweepSpec
-from tethersim.model.air.vector import uniform_air
-from tethersim.model.inputs import initial_model_state, parameter_vector
+from tethersim.model.inputs import air_vector, initial_model_state, parameter_vector
 from tethersim.model.registry import get_model, model_for_orbit, model_index
 
-_AIR = uniform_air()
 _F = {name: i for i, name in enumerate(F_FIELDS)}
 _I = {name: i for i, name in enumerate(I_FIELDS)}
 
 
-def servable(spec: SweepSpec, sat) -> bool:
-    """Whether a point with satellite ``sat`` runs in a compiled block (else run_point)."""
-    model = model_for_orbit(spec.model, sat.orbit)
-    # any circular-orbit model, planar or 3-D: the loops stop at the domain's limits
-    # (engine/events.py: the roll too) in the block as in simulate()
-    return (model == spec.model and has_com_orbit(model_index(model))
-            and sat.density_mode != "per-body")
-
-
 def run_block(spec: SweepSpec, ks: list) -> list:
     """[(k, record)] of flat points ks of ``spec``, in the order of ks.
+
+    Every point runs in a compiled block, whatever its model (planar or 3-D,
+    circular or free orbit) and air (uniform, per-body, NRLMSISE-00): the points are
+    grouped by the model their orbit runs and by their air vector (equal for points
+    that differ only in the satellite's other parameters), one compiled call per group.
 
     Parameters
     ----------
@@ -70,9 +62,16 @@ def run_block(spec: SweepSpec, ks: list) -> list:
         (k, record) pairs; each record as point.run_point returns it.
     """
     sats = [spec.satellite_at(k) for k in ks]
-    block = [i for i, s in enumerate(sats) if servable(spec, s)]
-    records = dict(zip(block, _compiled([sats[i] for i in block], spec))) if block else {}
-    return [(k, records[i] if i in records else run_point(spec, k)) for i, k in enumerate(ks)]
+    periods = float(spec.periods)
+    groups = {}  # (model, air vector bytes) -> (air vector, indices into ks)
+    for i, s in enumerate(sats):
+        model = model_for_orbit(spec.model, s.orbit)  # a free orbit runs the free twin
+        air = air_vector(s, periods * s.period)  # as simulate() builds it
+        groups.setdefault((model, air.tobytes()), (air, []))[1].append(i)
+    records = {}
+    for (model, _), (air, idx) in groups.items():
+        records.update(zip(idx, _compiled([sats[i] for i in idx], spec, model, air)))
+    return [(k, records[i]) for i, k in enumerate(ks)]
 
 
 def _sizes(spec: SweepSpec) -> tuple:
@@ -109,17 +108,18 @@ def _grid(t_end: float, n_out: int, refine: int, cache: dict) -> np.ndarray:
     return cache[key]
 
 
-def _compiled(sats: list, spec: SweepSpec) -> list:
-    """The records of points whose satellites are ``sats`` (all servable), one compiled call."""
-    m = model_index(spec.model)
-    lay = get_model(spec.model)
+def _compiled(sats: list, spec: SweepSpec, model: str, air: np.ndarray) -> list:
+    """The records of points whose satellites are ``sats``, all running ``model`` in the
+    air vector ``air``, in one compiled call."""
+    m = model_index(model)
+    lay = get_model(model)
     periods = float(spec.periods)  # as simulate() takes it
     faithful = spec.method == "faithful"
     for s in sats:  # what simulate() refuses, each point's run refuses here too
         check_scheme(s, "rk4" if faithful else "adaptive")
     n = len(sats)
-    P = np.stack([parameter_vector(s, spec.model) for s in sats])
-    Y0 = np.stack([initial_state(m, initial_model_state(s, spec.model), s.r0, s.r0 * s.omega)
+    P = np.stack([parameter_vector(s, model) for s in sats])
+    Y0 = np.stack([initial_state(m, initial_model_state(s, model), s.r0, s.r0 * s.omega)
                    for s in sats])
     n_steps, n_out = _sizes(spec)
     check_point_size(spec)  # the output-size guard simulate() applies to each point
@@ -131,15 +131,15 @@ def _compiled(sats: list, spec: SweepSpec) -> list:
         span = np.array([periods * s.period for s in sats])
         grids = {}
         T = np.stack([_grid(t_end, n_out, refine, grids) for t_end in span])
-    EV = np.stack([event_parameters(s, spec.model) for s in sats])  # as simulate() builds it
+    EV = np.stack([event_parameters(s, model) for s in sats])  # as simulate() builds it
     cols = np.array([lay.state.index(c) for c in COL_FIELDS], dtype=np.int64)
     rec_f = np.empty((n, len(F_FIELDS)))
     rec_i = np.empty((n, len(I_FIELDS)), dtype=np.int64)
-    args = (_AIR, faithful, T, Y0, P, span, n_steps, spec.rtol, spec.rtol * ATOL_PER_RTOL,
+    args = (air, faithful, T, Y0, P, span, n_steps, spec.rtol, spec.rtol * ATOL_PER_RTOL,
             int(MAX_STEPS_PER_PERIOD * periods), EV, cols, float(spec.tol), SS_FRACTION, rec_f, rec_i)
     specialised(sweep_block, m, args)(m, *args)  # releases the GIL
     amps = rk4_amplifications(sats, [s.period / FAITHFUL_STEPS_PER_PERIOD for s in sats],
-                              spec.model)
+                              model)
     # the run length outcome.run_orbits gives the per-point path: the orbits asked for
     return [_record(rec_f[j], rec_i[j], amps[j], spec.tol, periods) for j in range(n)]
 

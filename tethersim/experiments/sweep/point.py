@@ -41,10 +41,9 @@ STATUS = {name: code for code, name in enumerate(STATUSES)}
 def run_point(spec: SweepSpec, k: int) -> dict:
     """Simulate flat grid point k of ``spec`` and return its record (SI).
 
-    The per-point path: simulate() then outcome(), in Python.  A sweep runs
-    its points in compiled blocks (tethersim.experiments.sweep.batch), which
-    give these records bit for bit, and falls back to this for a point the
-    blocks cannot serve (per-body air, a free orbit).
+    simulate() then outcome(), in Python: the definition of a record.  A sweep
+    runs every point in compiled blocks (tethersim.experiments.sweep.batch),
+    which give these records bit for bit (the tests check it).
     """
     sat = spec.satellite_at(k)
     if spec.method == "faithful":

@@ -53,8 +53,10 @@ def executor(workers: int | None = None, scheduler: str | None = None, dask_work
             client = Client(scheduler)
             cluster = None
         else:
+            # the diagnostics server on a free port: None means distributed's fixed 8787,
+            # and a second sweep (or any Dask user) holding it made this one warn
             cluster = LocalCluster(n_workers=dask_workers, threads_per_worker=1, processes=True,
-                                   dashboard_address=None)
+                                   dashboard_address=":0")
             client = Client(cluster)
         try:
             # blocks of points amortise Dask's per-task cost (~1 ms) over ~0.1 s runs
