@@ -33,26 +33,24 @@ def _planar(out: Path) -> list:
 
 
 def _three_d(out: Path) -> list:
-    """The 3-D models, their layout and dispatch."""
+    """The 3-D models."""
     lines = []
     geometry3d = codegen3d.geometry_lines()
     for defn in DEFINITIONS_3D:
         fname = codegen3d.module_filename(defn.name)
         (out / fname).write_text(codegen3d.module_source(derive3d(defn), geometry3d))
         lines.append(f"  {defn.name:<19} -> {out.name}/{fname}")
-    (out / "layout3d.py").write_text(codegen3d.layout_source(DEFINITIONS_3D))
-    (out / "dispatch3d.py").write_text(codegen3d.dispatch_source(DEFINITIONS_3D))
     return lines
 
 
 def _free(out: Path) -> list:
-    """The free-orbit models (issue 12), own layout."""
+    """The free-orbit models (issue 12)."""
     return [f"  {f[:-3].replace('_', '-'):<17} -> {out.name}/{f}"
             for f in orbit_codegen.write_free_models(out)]
 
 
 def _free3d(out: Path) -> list:
-    """The 3-D models on a free orbit, own layout."""
+    """The 3-D models on a free orbit."""
     return [f"  {d.name:<24} -> {out.name}/{f}"
             for f, d in zip(free3d_codegen.write_free3d_models(out), FREE3D_DEFINITIONS)]
 
@@ -80,13 +78,13 @@ def main(argv=None) -> int:
             "",
             "Each module carries its own layout (STATE, STATE_UNITS, PARAMETERS,",
             "PARAMETER_UNITS, FAMILIES), what it models (DESCRIPTION, GEOMETRY, ORBIT)",
-            "and the kernels rhs, family_forces, jacobi, jacobian, tether_margins and",
-            "body_radii.  tethersim.model.registry reads this table; nothing else lists",
-            'the models."""',
-            *(f"from . import {n}" for n in modules), "",
+            "and the kernels rhs, family_forces, jacobi, tether_margins and body_radii;",
+            "the thesis's planar models also jacobian (tethersim/engine/jacobian.py",
+            "differentiates the others' rhs).  tethersim.model.registry reads this table;",
+            'nothing else lists the models."""',
+            "from . import (", *(f"    {n}," for n in sorted(modules)), ")", "",
             "MODELS = {", *(f"    {d.name!r}: {n}," for d, n in zip(every, modules)), "}", ""]
     (out / "__init__.py").write_text("\n".join(init))
-    (out / "dispatch.py").write_text(codegen.dispatch_source(every))
     print(f"derive: {len(every)} models in {time.perf_counter() - t0:.1f} s "
           f"({workers} processes)")
     return 0

@@ -14,10 +14,10 @@ symbols from fixed prefixes, and the header has no timestamp.
 from __future__ import annotations
 
 import sympy as sp
-from sympy.printing.pycode import PythonCodePrinter
 
 from .geometry import geometry_source
 from .pipeline import Q_SYMBOLS, DerivedModel
+from .printer import INDENT, NumbaPrinter, constant, cse_block, kernel, paragraph
 from .symbols import (
     PARAMETERS,
     STATE_NAMES,
@@ -28,22 +28,8 @@ from .symbols import (
     state_substitution,
 )
 
-INDENT = "    "
 _SIN, _COS = sp.Symbol("sin_theta", real=True), sp.Symbol("cos_theta", real=True)
 _CODE_NAMES = {p.symbol: sp.Symbol(p.name, positive=True) for p in PARAMETERS}
-
-
-class NumbaPrinter(PythonCodePrinter):
-    """Python printer for scalar numba code (math module, no numpy)."""
-
-    def __init__(self):
-        super().__init__({"fully_qualified_modules": True, "standard": "python3"})
-
-    def _print_InverseSqrtMinusOne(self, expr):
-        return f"math.expm1(-0.5*math.log1p({self._print(expr.args[0])}))"
-
-    def _print_InverseCubeMinusOne(self, expr):
-        return f"math.expm1(-1.5*math.log1p({self._print(expr.args[0])}))"
 
 
 def _prepare(expr):
@@ -55,13 +41,7 @@ def _prepare(expr):
 
 def _block(targets, exprs, prefix, indent, op="="):
     """cse a group of expressions; return code lines assigning them to targets."""
-    printer = NumbaPrinter()
-    exprs = [_prepare(e) for e in exprs]
-    repl, reduced = sp.cse(exprs, symbols=sp.numbered_symbols(prefix), order="canonical")
-    lines = [f"{indent}{s} = {printer.doprint(v)}" for s, v in repl]
-    for tgt, e in zip(targets, reduced):
-        lines.append(f"{indent}{tgt} {op} {printer.doprint(e)}")
-    return lines
+    return cse_block(targets, [_prepare(e) for e in exprs], prefix, indent, op)
 
 
 def _unpack(indent) -> list:
@@ -87,9 +67,9 @@ def _sum_families(model: DerivedModel, tether):
 
 def rhs_source(model: DerivedModel, length_defs) -> list:
     i1, i2 = INDENT, INDENT * 2
-    out = ["@njit(cache=True, inline=\"always\")", "def rhs(t, y, p, dydt):",
-           f'{i1}"""State derivative dy/dt of model {model.name!r} (SI; layout in generated/layout.py)."""']
-    out += _unpack(i1)
+    head = ["@njit(cache=True, inline=\"always\")", "def rhs(t, y, p, dydt):",
+            f'{i1}"""State derivative dy/dt of model {model.name!r} (SI; layout in generated/layout.py)."""']
+    out = []
     qnames = [str(q) for q in Q_SYMBOLS]
     drag, fams = _sum_families(model, None)
     out.append(f"{i1}# air drag on the three bodies ({fams[0].equation})")
@@ -104,14 +84,14 @@ def rhs_source(model: DerivedModel, length_defs) -> list:
     out.append(f"{i1}# accelerations from M q'' + f(q, q') = Q (Lagrange, 3.26-3.30)")
     out += [f"{i1}dydt[{k}] = {STATE_NAMES[k + 3]}" for k in range(3)]
     out += _block([f"dydt[{k + 3}]" for k in range(3)], acc, "a", i1)
-    return out
+    return kernel(head, _unpack(i1), out)
 
 
 def family_forces_source(model: DerivedModel, length_defs) -> list:
     i1, i2 = INDENT, INDENT * 2
-    out = ["@njit(cache=True)", "def family_forces(y, p, out):",
-           f'{i1}"""out[f, k] = generalized force of family FAMILIES[f] on q_k (N, N, N m)."""']
-    out += _unpack(i1)
+    head = ["@njit(cache=True)", "def family_forces(y, p, out):",
+            f'{i1}"""out[f, k] = generalized force of family FAMILIES[f] on q_k (N, N, N m)."""']
+    out = []
     out += [_tether_length_line(j, i1, length_defs) for j in range(2)]
     out.append(f"{i1}out[:, :] = 0.0")
     for f_idx, fam in enumerate(model.families):
@@ -122,7 +102,7 @@ def family_forces_source(model: DerivedModel, length_defs) -> list:
         else:
             out.append(f"{i1}if {_gate(fam.tether - 1)}:")
             out += _block(targets, fam.Q, f"f{f_idx}_", i2)
-    return out
+    return kernel(head, _unpack(i1), out)
 
 
 def _d_dy(exprs, length_defs):
@@ -147,9 +127,9 @@ def jacobian_source(model: DerivedModel, length_defs) -> list:
     the ∂Q/∂y of each family block is accumulated inside its gate.
     """
     i1, i2 = INDENT, INDENT * 2
-    out = ["@njit(cache=True)", "def jacobian(t, y, p, J):",
-           f'{i1}"""J[i, j] = ∂(dy_i/dt)/∂y_j of model {model.name!r} (units of y_i/s per y_j)."""']
-    out += _unpack(i1)
+    head = ["@njit(cache=True)", "def jacobian(t, y, p, J):",
+            f'{i1}"""J[i, j] = ∂(dy_i/dt)/∂y_j of model {model.name!r} (units of y_i/s per y_j)."""']
+    out = []
     dq = [[f"dQ{k}_{j}" for j in range(6)] for k in range(3)]
     drag, _ = _sum_families(model, None)
     rows = _d_dy(drag, length_defs)
@@ -173,17 +153,17 @@ def jacobian_source(model: DerivedModel, length_defs) -> list:
             exprs.append(e)
             targets.append(f"J[{k + 3}, {c}]")
     out += _block(targets, exprs, "ja", i1)
-    return out
+    return kernel(head, _unpack(i1), out)
 
 
 def jacobi_source(model: DerivedModel, length_defs) -> list:
     i1, i2 = INDENT, INDENT * 2
-    out = ["@njit(cache=True)", "def jacobi(y, p):",
-           f'{i1}"""Jacobi integral h = Σ q̇ ∂L/∂q̇ − L plus taut-tether spring energy [J].',
-           "",
+    head = ["@njit(cache=True)", "def jacobi(y, p):",
+            f'{i1}"""Jacobi integral h = Σ q̇ ∂L/∂q̇ − L plus taut-tether spring energy [J].',
+            "",
            f"{i1}Constant with drag and dampers off; otherwise dh/dt = power of drag and dampers.",
            f'{i1}"""']
-    out += _unpack(i1)
+    out = []
     out += _block(["h"], [model.jacobi], "e", i1)
     for j in range(2):
         pots = [f.potential for f in model.families if f.tether == j + 1 and f.potential is not None]
@@ -192,7 +172,7 @@ def jacobi_source(model: DerivedModel, length_defs) -> list:
             out.append(f"{i1}if {_gate(j)}:")
             out += _block(["h"], [sum(pots)], f"u{j + 1}_", i2, op="+=")
     out.append(f"{i1}return h")
-    return out
+    return kernel(head, _unpack(i1), out)
 
 
 def _index_tables() -> list:
@@ -209,7 +189,7 @@ def header(model: DerivedModel) -> list:
     return [
         '"""GENERATED FILE - DO NOT EDIT.',
         "",
-        f"Model {model.name!r}: {model.definition.description}.",
+        *paragraph(f"Model {model.name!r}: {model.definition.description}."),
         "Produced by `make derive` (python -m derive) from derive/; regenerate instead",
         f"of editing.  sympy {sp.__version__}.",
         "",
@@ -220,14 +200,14 @@ def header(model: DerivedModel) -> list:
         "from numba import njit",
         "",
         f"MODEL = {model.name!r}",
-        f"DESCRIPTION = {model.definition.description!r}",
+        *constant("DESCRIPTION", model.definition.description),
         'GEOMETRY = "planar"  # (δx, δy, θ): the thesis plane',
         'ORBIT = "circular"  # the COM held on a circle of radius r0 at rate ω (Eq 3.14)',
-        f"STATE = {STATE_NAMES!r}",
-        f"STATE_UNITS = {STATE_UNITS!r}",
-        f"PARAMETERS = {tuple(p.name for p in PARAMETERS)!r}",
-        f"PARAMETER_UNITS = {tuple(p.unit for p in PARAMETERS)!r}",
-        f"FAMILIES = {tuple(f.name for f in model.families)!r}",
+        *constant("STATE", STATE_NAMES),
+        *constant("STATE_UNITS", STATE_UNITS),
+        *constant("PARAMETERS", tuple(p.name for p in PARAMETERS)),
+        *constant("PARAMETER_UNITS", tuple(p.unit for p in PARAMETERS)),
+        *constant("FAMILIES", tuple(f.name for f in model.families)),
     ]
 
 
@@ -257,10 +237,10 @@ def layout_source(families) -> str:
     """generated/layout.py: the index -> symbol -> unit tables and index constants."""
     lines = ['"""GENERATED FILE - DO NOT EDIT.  Produced by `make derive` from derive/symbols.py.',
              "", *_index_tables()]
-    lines += ['"""', "", f"STATE = {STATE_NAMES!r}", f"STATE_UNITS = {STATE_UNITS!r}",
-              f"PARAMETERS = {tuple(p.name for p in PARAMETERS)!r}",
-              f"PARAMETER_UNITS = {tuple(p.unit for p in PARAMETERS)!r}",
-              f"FAMILIES = {tuple(families)!r}", ""]
+    lines += ['"""', "", *constant("STATE", STATE_NAMES), *constant("STATE_UNITS", STATE_UNITS),
+              *constant("PARAMETERS", tuple(p.name for p in PARAMETERS)),
+              *constant("PARAMETER_UNITS", tuple(p.unit for p in PARAMETERS)),
+              *constant("FAMILIES", tuple(families)), ""]
     lines += [f"Y_{n.upper()} = {i}" for i, n in enumerate(STATE_NAMES)]
     lines += [""] + [f"P_{p.name.upper()} = {i}" for i, p in enumerate(PARAMETERS)]
     return "\n".join(lines) + "\n"
@@ -269,28 +249,3 @@ def layout_source(families) -> str:
 def module_filename(name: str) -> str:
     """Model name -> module file name ('3d-exact-gravity' -> 'three_d_exact_gravity.py')."""
     return name.replace("3d", "three_d").replace("-", "_") + ".py"
-
-
-def dispatch_source(definitions) -> str:
-    """generated/dispatch.py: one jitted entry point taking a model index.
-
-    Integrator loops call ``rhs(model, ...)`` with an integer model index, so
-    they are ordinary cacheable numba functions (no function arguments).
-    """
-    mods = [module_filename(d.name)[:-3] for d in definitions]
-    lines = ['"""GENERATED FILE - DO NOT EDIT.  Produced by `make derive` from derive/codegen.py."""',
-             "from numba import njit", "",
-             *(f"from . import {m}" for m in mods), "",
-             f"MODEL_NAMES = {tuple(d.name for d in definitions)!r}", ""]
-    kernels = (("rhs", "t, y, p, dydt"), ("family_forces", "y, p, out"), ("jacobi", "y, p"),
-               ("jacobian", "t, y, p, J"))
-    for fn, args in kernels:
-        lines += ["", "@njit(cache=True)", f"def {fn}(model, {args}):",
-                  f'    """{fn} of model MODEL_NAMES[model]."""']
-        ret = "return " if fn == "jacobi" else ""
-        for i, m in enumerate(mods):
-            kw = "if" if i == 0 else "elif"
-            lines += [f"    {kw} model == {i}:", f"        {ret}{m}.{fn}({args})"]
-        if ret:
-            lines += ["    return 0.0"]
-    return "\n".join(lines) + "\n"
