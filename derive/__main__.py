@@ -56,6 +56,9 @@ def _free3d(out: Path) -> list:
 
 
 GROUPS = (_planar, _three_d, _free, _free3d)  # independent: derived side by side
+# submitted longest first (the 3-D free pair shares one Lagrange derivation and takes
+# about as long as the other three together), so two workers finish close together
+LONGEST_FIRST = (_free3d, _three_d, _planar, _free)
 
 
 def main(argv=None) -> int:
@@ -67,8 +70,9 @@ def main(argv=None) -> int:
     # time as there are cores (each writes its own files; the output is the same bytes)
     workers = min(len(GROUPS), os.cpu_count() or 1)
     with ProcessPoolExecutor(max_workers=workers) as pool:
-        for future in [pool.submit(group, out) for group in GROUPS]:
-            print("\n".join(future.result()))
+        futures = {group: pool.submit(group, out) for group in LONGEST_FIRST}
+        for group in GROUPS:
+            print("\n".join(futures[group].result()))
     from .orbit import FREE_DEFINITIONS
     # one registry of every model, in one order: the thesis variants, 3-D, free orbit, 3-D free
     every = (tuple(DEFINITIONS) + tuple(DEFINITIONS_3D) + tuple(FREE_DEFINITIONS)
