@@ -11,6 +11,7 @@ from . import codegen, orbit_codegen
 from .kinematics import planar_kinematics
 from .models import DEFINITIONS, FAMILY_ORDER
 from .pipeline import derive
+from .printer import module_filename
 from .symbols import state_substitution
 from .three_d import codegen3d, free3d_codegen
 from .three_d.free3d import FREE3D_DEFINITIONS
@@ -25,7 +26,7 @@ def _planar(out: Path) -> list:
     length_defs = {lam: d.subs(sub) for lam, d in kin.tether_length_defs.items()}
     lines = []
     for defn in DEFINITIONS:
-        fname = codegen.module_filename(defn.name)
+        fname = module_filename(defn.name)
         (out / fname).write_text(codegen.module_source(derive(defn), length_defs, kin))
         lines.append(f"  {defn.name:<17} -> {out.name}/{fname}")
     (out / "layout.py").write_text(codegen.layout_source(FAMILY_ORDER))
@@ -37,7 +38,7 @@ def _three_d(out: Path) -> list:
     lines = []
     geometry3d = codegen3d.geometry_lines()
     for defn in DEFINITIONS_3D:
-        fname = codegen3d.module_filename(defn.name)
+        fname = module_filename(defn.name)
         (out / fname).write_text(codegen3d.module_source(derive3d(defn), geometry3d))
         lines.append(f"  {defn.name:<19} -> {out.name}/{fname}")
     return lines
@@ -77,7 +78,7 @@ def main(argv=None) -> int:
     # one registry of every model, in one order: the thesis variants, 3-D, free orbit, 3-D free
     every = (tuple(DEFINITIONS) + tuple(DEFINITIONS_3D) + tuple(FREE_DEFINITIONS)
              + tuple(FREE3D_DEFINITIONS))
-    modules = [codegen.module_filename(d.name)[:-3] for d in every]
+    modules = [module_filename(d.name)[:-3] for d in every]
     init = ['"""GENERATED FILE - DO NOT EDIT.  Numba kernels of every model, by name.',
             "",
             "Each module carries its own layout (STATE, STATE_UNITS, PARAMETERS,",

@@ -1,6 +1,8 @@
-"""Print a DerivedModel as a numba module: cse'd straight-line code.
+"""Print a DerivedModel (planar, circular orbit) as a numba module: the symbolic solve.
 
-Each generated module holds two kernels with plain float-array signatures:
+The shared parts come from derive/printer.py; here: q̈ in closed form (M is
+diagonal) and the analytic Jacobian.  Each generated module holds these kernels
+with plain float-array signatures:
 
 ``rhs(t, y, p, dydt)``            state derivative (δẋ, δẏ, θ̇, δẍ, δÿ, θ̈)
 ``family_forces(y, p, out)``      out[f, k]: generalized force of family f on q_k
@@ -17,7 +19,21 @@ import sympy as sp
 
 from .geometry import geometry_source
 from .pipeline import Q_SYMBOLS, DerivedModel
-from .printer import INDENT, NumbaPrinter, constant, cse_block, kernel, paragraph
+from .printer import (
+    INDENT,
+    NumbaPrinter,
+    Printing,
+    constant,
+    cse_block,
+    family_forces_source,
+    forces_lines,
+    gate,
+    index_tables,
+    jacobi_source,
+    kernel,
+    paragraph,
+    unpack_lines,
+)
 from .symbols import (
     PARAMETERS,
     STATE_NAMES,
@@ -44,11 +60,9 @@ def _block(targets, exprs, prefix, indent, op="="):
     return cse_block(targets, [_prepare(e) for e in exprs], prefix, indent, op)
 
 
-def _unpack(indent) -> list:
-    lines = [f"{indent}{n} = y[{i}]" for i, n in enumerate(STATE_NAMES)]
-    lines += [f"{indent}{p.name} = p[{i}]" for i, p in enumerate(PARAMETERS)]
-    lines += [f"{indent}sin_theta = math.sin(theta)", f"{indent}cos_theta = math.cos(theta)"]
-    return lines
+UNPACK = unpack_lines(STATE_NAMES, PARAMETERS, ("theta",))
+JACOBI_DOC = ("Jacobi integral h = Σ q̇ ∂L/∂q̇ − L plus taut-tether spring energy [J].", "",
+              f"{INDENT}Constant with drag and dampers off; otherwise dh/dt = power of drag and dampers.")
 
 
 def _tether_length_line(j: int, indent: str, defs) -> str:
@@ -56,8 +70,10 @@ def _tether_length_line(j: int, indent: str, defs) -> str:
     return f"{indent}{lam} = {NumbaPrinter().doprint(_prepare(defs[lam]))}"
 
 
-def _gate(j: int) -> str:
-    return f"{TETHER_LENGTHS[j]} > {_CODE_NAMES[TETHER_REST[j]]}"
+def printing(length_defs) -> Printing:
+    """The planar circular models' code names (derive/printer.py)."""
+    return Printing(UNPACK, _block, lambda j, indent: _tether_length_line(j, indent, length_defs),
+                    3, "N, N, N m")
 
 
 def _sum_families(model: DerivedModel, tether):
@@ -66,43 +82,15 @@ def _sum_families(model: DerivedModel, tether):
 
 
 def rhs_source(model: DerivedModel, length_defs) -> list:
-    i1, i2 = INDENT, INDENT * 2
+    i1 = INDENT
     head = ["@njit(cache=True, inline=\"always\")", "def rhs(t, y, p, dydt):",
             f'{i1}"""State derivative dy/dt of model {model.name!r} (SI; layout in generated/layout.py)."""']
-    out = []
-    qnames = [str(q) for q in Q_SYMBOLS]
-    drag, fams = _sum_families(model, None)
-    out.append(f"{i1}# air drag on the three bodies ({fams[0].equation})")
-    out += _block(qnames, drag, "d", i1)
-    for j in range(2):
-        tq, fams = _sum_families(model, j + 1)
-        names = ", ".join(f.name for f in fams)
-        out.append(_tether_length_line(j, i1, length_defs))
-        out.append(f"{i1}if {_gate(j)}:  # tether {j + 1} taut: {names}")
-        out += _block(qnames, tq, f"t{j + 1}_", i2, op="+=")
+    out = forces_lines(printing(length_defs), model.families, [str(q) for q in Q_SYMBOLS])
     acc = [_prepare(e) for e in model.qdd]
     out.append(f"{i1}# accelerations from M q'' + f(q, q') = Q (Lagrange, 3.26-3.30)")
     out += [f"{i1}dydt[{k}] = {STATE_NAMES[k + 3]}" for k in range(3)]
     out += _block([f"dydt[{k + 3}]" for k in range(3)], acc, "a", i1)
-    return kernel(head, _unpack(i1), out)
-
-
-def family_forces_source(model: DerivedModel, length_defs) -> list:
-    i1, i2 = INDENT, INDENT * 2
-    head = ["@njit(cache=True)", "def family_forces(y, p, out):",
-            f'{i1}"""out[f, k] = generalized force of family FAMILIES[f] on q_k (N, N, N m)."""']
-    out = []
-    out += [_tether_length_line(j, i1, length_defs) for j in range(2)]
-    out.append(f"{i1}out[:, :] = 0.0")
-    for f_idx, fam in enumerate(model.families):
-        targets = [f"out[{f_idx}, {k}]" for k in range(3)]
-        out.append(f"{i1}# {fam.name}: {fam.meaning} ({fam.equation})")
-        if fam.tether is None:
-            out += _block(targets, fam.Q, f"f{f_idx}_", i1)
-        else:
-            out.append(f"{i1}if {_gate(fam.tether - 1)}:")
-            out += _block(targets, fam.Q, f"f{f_idx}_", i2)
-    return kernel(head, _unpack(i1), out)
+    return kernel(head, UNPACK, out)
 
 
 def _d_dy(exprs, length_defs):
@@ -139,7 +127,7 @@ def jacobian_source(model: DerivedModel, length_defs) -> list:
         tq, _ = _sum_families(model, j + 1)
         rows = _d_dy(tq, length_defs)
         out.append(_tether_length_line(j, i1, length_defs))
-        out.append(f"{i1}if {_gate(j)}:")
+        out.append(f"{i1}if {gate(j)}:")
         out += _block([dq[k][c] for k in range(3) for c in range(6)],
                       [rows[k][c] for k in range(3) for c in range(6)], f"jt{j + 1}_", i2, op="+=")
     out.append(f"{i1}J[:, :] = 0.0")
@@ -153,36 +141,7 @@ def jacobian_source(model: DerivedModel, length_defs) -> list:
             exprs.append(e)
             targets.append(f"J[{k + 3}, {c}]")
     out += _block(targets, exprs, "ja", i1)
-    return kernel(head, _unpack(i1), out)
-
-
-def jacobi_source(model: DerivedModel, length_defs) -> list:
-    i1, i2 = INDENT, INDENT * 2
-    head = ["@njit(cache=True)", "def jacobi(y, p):",
-            f'{i1}"""Jacobi integral h = Σ q̇ ∂L/∂q̇ − L plus taut-tether spring energy [J].',
-            "",
-           f"{i1}Constant with drag and dampers off; otherwise dh/dt = power of drag and dampers.",
-           f'{i1}"""']
-    out = []
-    out += _block(["h"], [model.jacobi], "e", i1)
-    for j in range(2):
-        pots = [f.potential for f in model.families if f.tether == j + 1 and f.potential is not None]
-        if pots:
-            out.append(_tether_length_line(j, i1, length_defs))
-            out.append(f"{i1}if {_gate(j)}:")
-            out += _block(["h"], [sum(pots)], f"u{j + 1}_", i2, op="+=")
-    out.append(f"{i1}return h")
-    return kernel(head, _unpack(i1), out)
-
-
-def _index_tables() -> list:
-    """index -> symbol -> unit tables of y and p (the same in every generated file)."""
-    w = max(len(n) for n in STATE_NAMES + tuple(p.name for p in PARAMETERS))
-    lines = ["State vector y (index, name, unit):"]
-    lines += [f"  {i:2d}  {n:<{w}}  {u}" for i, (n, u) in enumerate(zip(STATE_NAMES, STATE_UNITS))]
-    lines += ["", "Parameter vector p (index, name, unit, meaning):"]
-    lines += [f"  {i:2d}  {p.name:<{w}}  {p.unit:<8}  {p.meaning}" for i, p in enumerate(PARAMETERS)]
-    return lines
+    return kernel(head, UNPACK, out)
 
 
 def header(model: DerivedModel) -> list:
@@ -193,7 +152,7 @@ def header(model: DerivedModel) -> list:
         "Produced by `make derive` (python -m derive) from derive/; regenerate instead",
         f"of editing.  sympy {sp.__version__}.",
         "",
-        *_index_tables(),
+        *index_tables(STATE_NAMES, STATE_UNITS, PARAMETERS),
         '"""',
         "import math",
         "",
@@ -219,15 +178,16 @@ def planar_geometry_source(kin) -> list:
     def comps(vec):
         return [printer.doprint(_prepare(vec.dot(axis).subs(sub))) for axis in (kin.L.x, kin.L.y)]
 
-    return geometry_source(_unpack(INDENT), [comps(v) for v in kin.tether_vectors],
+    return geometry_source(list(UNPACK), [comps(v) for v in kin.tether_vectors],
                            [_CODE_NAMES[r].name for r in TETHER_REST],
                            [comps(r) for r in kin.positions], " (Eqs 3.10-3.12)")
 
 
 def module_source(model: DerivedModel, length_defs, kin) -> str:
+    pr = printing(length_defs)
     lines = header(model) + ["", ""] + rhs_source(model, length_defs)
-    lines += ["", ""] + family_forces_source(model, length_defs)
-    lines += ["", ""] + jacobi_source(model, length_defs)
+    lines += ["", ""] + family_forces_source(pr, model.families)
+    lines += ["", ""] + jacobi_source(pr, model.families, model.jacobi, JACOBI_DOC)
     lines += ["", ""] + jacobian_source(model, length_defs)
     lines += ["", ""] + planar_geometry_source(kin)
     return "\n".join(lines) + "\n"
@@ -236,7 +196,7 @@ def module_source(model: DerivedModel, length_defs, kin) -> str:
 def layout_source(families) -> str:
     """generated/layout.py: the index -> symbol -> unit tables and index constants."""
     lines = ['"""GENERATED FILE - DO NOT EDIT.  Produced by `make derive` from derive/symbols.py.',
-             "", *_index_tables()]
+             "", *index_tables(STATE_NAMES, STATE_UNITS, PARAMETERS)]
     lines += ['"""', "", *constant("STATE", STATE_NAMES), *constant("STATE_UNITS", STATE_UNITS),
               *constant("PARAMETERS", tuple(p.name for p in PARAMETERS)),
               *constant("PARAMETER_UNITS", tuple(p.unit for p in PARAMETERS)),
@@ -244,8 +204,3 @@ def layout_source(families) -> str:
     lines += [f"Y_{n.upper()} = {i}" for i, n in enumerate(STATE_NAMES)]
     lines += [""] + [f"P_{p.name.upper()} = {i}" for i, p in enumerate(PARAMETERS)]
     return "\n".join(lines) + "\n"
-
-
-def module_filename(name: str) -> str:
-    """Model name -> module file name ('3d-exact-gravity' -> 'three_d_exact_gravity.py')."""
-    return name.replace("3d", "three_d").replace("-", "_") + ".py"

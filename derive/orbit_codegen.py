@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .codegen import _block, _gate, _prepare
+from .codegen import _block, _prepare
 from .orbit import (
     FREE_ACCELERATION_SYMBOLS,
     FREE_PARAMETERS,
@@ -38,7 +38,19 @@ from .orbit import (
     FreeDerivedModel,
     printable,
 )
-from .printer import INDENT, NumbaPrinter, constant, kernel, paragraph
+from .printer import (
+    INDENT,
+    NumbaPrinter,
+    Printing,
+    constant,
+    family_forces_source,
+    forces_lines,
+    index_tables,
+    jacobi_source,
+    kernel,
+    paragraph,
+    unpack_lines,
+)
 from .symbols import TETHER_LENGTHS
 
 
@@ -66,6 +78,8 @@ class FreeLayout:
         Header lines naming the derivation's modules.
     axial : tuple or None
         (index of ψ in q, condition on p that the axial inertia is zero).
+    force_units : str
+        Units of the generalized forces (family_forces' docstring).
     """
 
     state_names: tuple
@@ -80,6 +94,7 @@ class FreeLayout:
     geometry: str
     sources: tuple
     axial: tuple | None = None
+    force_units: str = "N, N, N m, N, N m"
 
     @property
     def n_q(self) -> int:
@@ -91,16 +106,22 @@ PLANAR = FreeLayout(FREE_STATE_NAMES, FREE_STATE_UNITS, FREE_STATE_SYMBOLS,
                     ("theta",), 'GEOMETRY = "planar"  # (δx, δy, θ) in the orbit plane',
                     ("Produced by `make derive` (python -m derive) from derive/orbit.py and",
                      "derive/orbit_codegen.py; regenerate instead of editing."))
+JACOBI_DOC = ("Total energy T + V (orbit and attitude) plus taut-tether spring energy [J].", "",
+              f"{INDENT}L = T − V has no explicit t, so this is the Jacobi integral: constant with drag",
+              f"{INDENT}and dampers off, otherwise dE/dt = Σ_k (Q_drag + Q_damper)_k q̇_k.")
+
+
 def _x(lay):
     return tuple(sp.Symbol(f"X{k}", real=True) for k in range(lay.n_q))  # q̈ inside the kernels
 
 
-def _unpack(lay, indent) -> list:
-    lines = [f"{indent}{n} = y[{i}]" for i, n in enumerate(lay.state_names)]
-    lines += [f"{indent}{p.name} = p[{i}]" for i, p in enumerate(lay.parameters)]
-    for a in lay.angles:
-        lines += [f"{indent}sin_{a} = math.sin({a})", f"{indent}cos_{a} = math.cos({a})"]
-    return lines
+def printing(lay, length_defs) -> Printing:
+    """The layout's code names, with H(u) printed through expm1/log1p (derive/printer.py)."""
+    return Printing(unpack_lines(lay.state_names, lay.parameters, lay.angles),
+                    lambda targets, exprs, prefix, indent, op="=": _pblock(lay, targets, exprs,
+                                                                           prefix, indent, op),
+                    lambda j, indent: _tether_length_line(lay, j, indent, length_defs),
+                    lay.n_q, lay.force_units, drag_note=", co-rotating air")
 
 
 def _pblock(lay, targets, exprs, prefix, indent, op="="):
@@ -110,25 +131,6 @@ def _pblock(lay, targets, exprs, prefix, indent, op="="):
 def _tether_length_line(lay, j: int, indent: str, defs) -> str:
     lam = TETHER_LENGTHS[j]
     return f"{indent}{lam} = {NumbaPrinter().doprint(lay.prepare(defs[lam]))}"
-
-
-def _sum_families(lay, model: FreeDerivedModel, tether):
-    fams = [f for f in model.families if f.tether == tether]
-    return tuple(sum(f.Q[k] for f in fams) for k in range(lay.n_q)), fams
-
-
-def _forces_lines(lay, model, length_defs, targets) -> list:
-    """Summed forces (drag ungated, each tether's families inside its taut gate)."""
-    i1, i2 = INDENT, INDENT * 2
-    drag, fams = _sum_families(lay, model, None)
-    out = [f"{i1}# air drag on the three bodies ({fams[0].equation}, co-rotating air)"]
-    out += _pblock(lay, targets, drag, "d", i1)
-    for j in range(2):
-        tq, fams = _sum_families(lay, model, j + 1)
-        out.append(_tether_length_line(lay, j, i1, length_defs))
-        out.append(f"{i1}if {_gate(j)}:  # tether {j + 1} taut: {', '.join(f.name for f in fams)}")
-        out += _pblock(lay, targets, tq, f"t{j + 1}_", i2, op="+=")
-    return out
 
 
 def _mass_matrix_lines(lay, model, indent) -> list:
@@ -175,7 +177,7 @@ def _accelerations(lay, model, length_defs) -> list:
     """Lines leaving q̈ in X0..X{n-1}: forces, M, factorisation, solve of M q̈ = Q − f."""
     i1, n = INDENT, lay.n_q
     qn = [str(q) for q in lay.q_symbols]
-    out = _forces_lines(lay, model, length_defs, qn)
+    out = forces_lines(printing(lay, length_defs), model.families, qn)
     out.append(f"{i1}# M q'' = Q - f (Lagrange, Eq 3.26 with r, nu as coordinates)")
     out += _pblock(lay, [f"B{k}" for k in range(n)],
                    [lay.q_symbols[k] - model.f[k] for k in range(n)], "fb", i1)
@@ -193,56 +195,7 @@ def rhs_source(lay, model: FreeDerivedModel, length_defs) -> list:
     out = _accelerations(lay, model, length_defs)
     out += [f"{i1}dydt[{k}] = {lay.state_names[k + n]}" for k in range(n)]
     out += [f"{i1}dydt[{k + n}] = X{k}" for k in range(n)]
-    return kernel(head, _unpack(lay, i1), out)
-
-
-def family_forces_source(lay, model: FreeDerivedModel, length_defs) -> list:
-    i1, i2 = INDENT, INDENT * 2
-    head = ["@njit(cache=True)", "def family_forces(y, p, out):",
-            f'{i1}"""out[f, k] = generalized force of family FAMILIES[f] on q_k (N, N, N m, N, N m)."""']
-    out = []
-    out += [_tether_length_line(lay, j, i1, length_defs) for j in range(2)]
-    out.append(f"{i1}out[:, :] = 0.0")
-    for f_idx, fam in enumerate(model.families):
-        targets = [f"out[{f_idx}, {k}]" for k in range(lay.n_q)]
-        out.append(f"{i1}# {fam.name}: {fam.meaning} ({fam.equation})")
-        if fam.tether is None:
-            out += _pblock(lay, targets, fam.Q, f"f{f_idx}_", i1)
-        else:
-            out.append(f"{i1}if {_gate(fam.tether - 1)}:")
-            out += _pblock(lay, targets, fam.Q, f"f{f_idx}_", i2)
-    return kernel(head, _unpack(lay, i1), out)
-
-
-def jacobi_source(lay, model: FreeDerivedModel, length_defs) -> list:
-    i1, i2 = INDENT, INDENT * 2
-    head = ["@njit(cache=True)", "def jacobi(y, p):",
-            f'{i1}"""Total energy T + V (orbit and attitude) plus taut-tether spring energy [J].',
-            "",
-           f"{i1}L = T − V has no explicit t, so this is the Jacobi integral: constant with drag",
-           f"{i1}and dampers off, otherwise dE/dt = Σ_k (Q_drag + Q_damper)_k q̇_k.",
-           f'{i1}"""']
-    out = []
-    out += _pblock(lay, ["h"], [model.energy], "e", i1)
-    for j in range(2):
-        pots = [f.potential for f in model.families if f.tether == j + 1 and f.potential is not None]
-        if pots:
-            out.append(_tether_length_line(lay, j, i1, length_defs))
-            out.append(f"{i1}if {_gate(j)}:")
-            out += _pblock(lay, ["h"], [sum(pots)], f"u{j + 1}_", i2, op="+=")
-    out.append(f"{i1}return h")
-    return kernel(head, _unpack(lay, i1), out)
-
-
-def _index_tables(lay) -> list:
-    w = max(len(n) for n in lay.state_names + tuple(p.name for p in lay.parameters))
-    lines = ["State vector y (index, name, unit):"]
-    lines += [f"  {i:2d}  {n:<{w}}  {u}"
-              for i, (n, u) in enumerate(zip(lay.state_names, lay.state_units))]
-    lines += ["", "Parameter vector p (index, name, unit, meaning):"]
-    lines += [f"  {i:2d}  {p.name:<{w}}  {p.unit:<8}  {p.meaning}"
-              for i, p in enumerate(lay.parameters)]
-    return lines
+    return kernel(head, printing(lay, length_defs).unpack, out)
 
 
 def _layout_constants(lay) -> list:
@@ -260,7 +213,8 @@ def module_source(model: FreeDerivedModel, length_defs, geometry=(), lay: FreeLa
              *paragraph(f"Model {model.name!r}: {model.definition.description}."),
              *lay.sources[:-1], f"{lay.sources[-1]}  sympy {sp.__version__}.",
              f"Reduces to the model {twin!r} on a circular orbit.", "",
-             *_index_tables(lay), '"""', "import math", "", "from numba import njit", "",
+             *index_tables(lay.state_names, lay.state_units, lay.parameters), '"""',
+             "import math", "", "from numba import njit", "",
              f"MODEL = {model.name!r}",
              *constant("DESCRIPTION", model.definition.description),
              lay.geometry,
@@ -268,8 +222,10 @@ def module_source(model: FreeDerivedModel, length_defs, geometry=(), lay: FreeLa
              f"CIRCULAR_TWIN = {twin!r}  # the model this one reduces to on a circular orbit",
              f"FAMILIES = {tuple(f.name for f in model.families)!r}",
              *_layout_constants(lay)]
-    for part in (rhs_source, family_forces_source, jacobi_source):
-        lines += ["", ""] + part(lay, model, length_defs)
+    pr = printing(lay, length_defs)
+    lines += ["", ""] + rhs_source(lay, model, length_defs)
+    lines += ["", ""] + family_forces_source(pr, model.families)
+    lines += ["", ""] + jacobi_source(pr, model.families, model.energy, JACOBI_DOC)
     if geometry:
         lines += ["", ""] + list(geometry)
     return "\n".join(lines) + "\n"
@@ -287,7 +243,8 @@ def geometry_lines(kin, sub, lay: FreeLayout = PLANAR, axes=None, note=None) -> 
     def comps(vec):
         return [printer.doprint(lay.prepare(vec.dot(axis).subs(sub))) for axis in axes]
 
-    return geometry_source(_unpack(lay, INDENT), [comps(v) for v in kin.tether_vectors],
+    unpack = list(unpack_lines(lay.state_names, lay.parameters, lay.angles))
+    return geometry_source(unpack, [comps(v) for v in kin.tether_vectors],
                            [_CODE_NAMES[r].name for r in TETHER_REST], [comps(r) for r in kin.positions],
                            note or " (Eqs 3.10-3.12 about the orbit radius r)")
 

@@ -1,4 +1,18 @@
-"""What every printer of generated/ shares: the numba code printer, cse blocks, kernels.
+"""The printer of generated/: everything but the solve for q̈.
+
+Every model's module is printed by the same functions here: the unpacking of y
+and p, the summed forces of the rhs (drag, then each tether's families inside
+its taut gate), ``family_forces``, ``jacobi``, the header tables and constants,
+and the line wrapping.  What a model's printer adds is its :class:`Printing`
+record (code names of its symbols) and the step that differs between models,
+the solve of M q̈ = Q − f:
+
+* derive/codegen.py: q̈ solved symbolically (M is diagonal for the planar
+  circular models), plus the analytic ``jacobian`` that the planar analyses need;
+* derive/three_d/codegen3d.py: M block diagonal, the balloon rows divided by m3,
+  the 3×3 attitude block by Cramer's rule (2×2 when the axial inertia is zero);
+* derive/orbit_codegen.py: M full (the orbit couples every row), an unrolled
+  LDLᵀ elimination; used for the planar and the 3-D free-orbit layouts.
 
 A kernel is a header (decorator, signature, docstring), the unpacking of y and p
 into named locals, and a body of cse'd straight-line code.  :func:`kernel`
@@ -12,6 +26,8 @@ from __future__ import annotations
 import ast
 import re
 import textwrap
+from collections.abc import Callable
+from dataclasses import dataclass
 
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
@@ -153,3 +169,136 @@ def paragraph(text: str, indent: str = "") -> list:
     """``text`` as docstring lines of at most WIDTH characters."""
     return textwrap.wrap(text, WIDTH - len(indent), initial_indent=indent, subsequent_indent=indent,
                          break_long_words=False, break_on_hyphens=False)
+
+
+# --- the kernels every model has: what differs between models is the Printing record
+@dataclass(frozen=True)
+class Printing:
+    """How one model's expressions become code: everything but the solve for q̈.
+
+    Attributes
+    ----------
+    unpack : tuple of str
+        Lines (indented once) binding the state, the parameters and the sines and
+        cosines of the angles; each kernel keeps those it reads (:func:`kernel`).
+    block : callable
+        ``block(targets, exprs, prefix, indent, op="=")``: the model's code names,
+        then :func:`cse_block`.
+    length_line : callable
+        ``length_line(j, indent)``: the line computing λ_j (Eqs 3.41-3.42).
+    n_q : int
+        Number of generalized coordinates.
+    units : str
+        Units of the generalized forces, for family_forces' docstring.
+    skip_zero : bool
+        Print no assignment of an exactly-zero force component (the 3-D models'
+        out-of-plane zeros; ``out`` is zeroed first).
+    drag_note : str
+        Appended to the drag block's comment.
+    """
+
+    unpack: tuple
+    block: Callable
+    length_line: Callable
+    n_q: int
+    units: str
+    skip_zero: bool = False
+    drag_note: str = ""
+
+
+def gate(j: int) -> str:
+    """Condition that tether j+1 is taut, λ_j > l_j0 (Eqs 3.39-3.40)."""
+    return f"lambda{j + 1} > l{j + 1}0"
+
+
+def _summed(families, tether, n_q: int):
+    fams = [f for f in families if f.tether == tether]
+    return tuple(sum(f.Q[k] for f in fams) for k in range(n_q)), fams
+
+
+def forces_lines(pr: Printing, families, targets) -> list:
+    """Σ Q into ``targets``: the drag block, then each tether's families inside its taut gate."""
+    i1, i2 = INDENT, INDENT * 2
+    drag, fams = _summed(families, None, pr.n_q)
+    out = [f"{i1}# air drag on the three bodies ({fams[0].equation}{pr.drag_note})"]
+    out += pr.block(targets, drag, "d", i1)  # every target, zero or not: the tethers add to it
+    for j in range(2):
+        tq, fams = _summed(families, j + 1, pr.n_q)
+        out.append(pr.length_line(j, i1))
+        out.append(f"{i1}if {gate(j)}:  # tether {j + 1} taut: {', '.join(f.name for f in fams)}")
+        out += _skipping(pr, targets, tq, f"t{j + 1}_", i2, op="+=") or [f"{i2}pass"]
+    return out
+
+
+def _skipping(pr: Printing, targets, exprs, prefix, indent, op="=") -> list:
+    if pr.skip_zero:
+        kept = [(t, e) for t, e in zip(targets, exprs) if e != 0]
+        targets, exprs = [t for t, _ in kept], [e for _, e in kept]
+        if not kept:
+            return []
+    return pr.block(targets, exprs, prefix, indent, op)
+
+
+def family_forces_source(pr: Printing, families) -> list:
+    """``family_forces(y, p, out)``: out[f, k] = generalized force of family f on q_k."""
+    i1, i2 = INDENT, INDENT * 2
+    head = ["@njit(cache=True)", "def family_forces(y, p, out):",
+            f'{i1}"""out[f, k] = generalized force of family FAMILIES[f] on q_k ({pr.units})."""']
+    out = [pr.length_line(j, i1) for j in range(2)]
+    out.append(f"{i1}out[:, :] = 0.0")
+    for f_idx, fam in enumerate(families):
+        targets = [f"out[{f_idx}, {k}]" for k in range(pr.n_q)]
+        out.append(f"{i1}# {fam.name}: {fam.meaning} ({fam.equation})")
+        if fam.tether is None:
+            out += _skipping(pr, targets, fam.Q, f"f{f_idx}_", i1)
+        else:
+            out.append(f"{i1}if {gate(fam.tether - 1)}:")
+            out += _skipping(pr, targets, fam.Q, f"f{f_idx}_", i2) or [f"{i2}pass"]
+    return kernel(head, pr.unpack, out)
+
+
+def jacobi_source(pr: Printing, families, energy, doc) -> list:
+    """``jacobi(y, p)``: ``energy`` (the Jacobi integral) plus the taut tethers' spring energy.
+
+    ``doc`` is the docstring's lines (indented, without the quotes).
+    """
+    i1, i2 = INDENT, INDENT * 2
+    head = ["@njit(cache=True)", "def jacobi(y, p):", f'{i1}"""{doc[0]}', *doc[1:], f'{i1}"""']
+    out = pr.block(["h"], [energy], "e", i1)
+    for j in range(2):
+        pots = [f.potential for f in families if f.tether == j + 1 and f.potential is not None]
+        if pots:
+            out.append(pr.length_line(j, i1))
+            out.append(f"{i1}if {gate(j)}:")
+            out += pr.block(["h"], [sum(pots)], f"u{j + 1}_", i2, op="+=")
+    out.append(f"{i1}return h")
+    return kernel(head, pr.unpack, out)
+
+
+def unpack_lines(state_names, parameters, angles) -> tuple:
+    """y[i] and p[i] into their names, then sin_<a>, cos_<a> of each angle (indented once)."""
+    lines = [f"{INDENT}{n} = y[{i}]" for i, n in enumerate(state_names)]
+    lines += [f"{INDENT}{p.name} = p[{i}]" for i, p in enumerate(parameters)]
+    for a in angles:
+        lines += [f"{INDENT}sin_{a} = math.sin({a})", f"{INDENT}cos_{a} = math.cos({a})"]
+    return tuple(lines)
+
+
+def index_tables(state_names, state_units, parameters, state_meanings=None) -> list:
+    """index → name → unit (→ meaning) tables of y and p, for a generated module's docstring."""
+    w = max(len(n) for n in tuple(state_names) + tuple(p.name for p in parameters))
+    if state_meanings is None:
+        lines = ["State vector y (index, name, unit):"]
+        lines += [f"  {i:2d}  {n:<{w}}  {u}" for i, (n, u) in enumerate(zip(state_names, state_units))]
+    else:
+        lines = ["State vector y (index, name, unit, meaning):"]
+        lines += [f"  {i:2d}  {n:<{w}}  {u:<8}  {m}" for i, (n, u, m)
+                  in enumerate(zip(state_names, state_units, state_meanings))]
+    lines += ["", "Parameter vector p (index, name, unit, meaning):"]
+    lines += [f"  {i:2d}  {p.name:<{w}}  {p.unit:<8}  {p.meaning}" for i, p in enumerate(parameters)]
+    return lines
+
+
+def module_filename(name: str) -> str:
+    """Model name → module file name ('3d-exact-gravity' → 'three_d_exact_gravity.py')."""
+    return name.replace("3d", "three_d").replace("-", "_") + ".py"

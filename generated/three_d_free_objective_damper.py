@@ -1336,7 +1336,7 @@ def rhs(t, y, p, dydt):
 
 @njit(cache=True)
 def family_forces(y, p, out):
-    """out[f, k] = generalized force of family FAMILIES[f] on q_k (N, N, N m, N, N m)."""
+    """out[f, k] = generalized force of family FAMILIES[f] on q_k (N, N, N, N m, N m, N m, N, N m)."""
     delta_x = y[0]
     delta_y = y[1]
     delta_z = y[2]

@@ -20,7 +20,20 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ..printer import INDENT, NumbaPrinter, constant, cse_block, kernel, paragraph
+from ..printer import (
+    INDENT,
+    NumbaPrinter,
+    Printing,
+    constant,
+    cse_block,
+    family_forces_source,
+    forces_lines,
+    index_tables,
+    jacobi_source,
+    kernel,
+    paragraph,
+    unpack_lines,
+)
 from .forces3d import FAMILY_ORDER
 from .pipeline3d import DerivedModel3D
 from .symbols3d import (
@@ -78,42 +91,20 @@ def block(targets, exprs, prefix, indent, op="=", skip_zero=False):
     return cse_block(targets, [prepare(e) for e in exprs], prefix, indent, op, skip_zero)
 
 
-def _unpack(indent) -> list:
-    lines = [f"{indent}{n} = y[{i}]" for i, n in enumerate(STATE_NAMES)]
-    lines += [f"{indent}{p.name} = p[{i}]" for i, p in enumerate(PARAMETERS)]
-    for a in _ANGLES:
-        lines += [f"{indent}sin_{a} = math.sin({a})", f"{indent}cos_{a} = math.cos({a})"]
-    return lines
+UNPACK = unpack_lines(STATE_NAMES, PARAMETERS, ("phi", "theta", "psi"))
+JACOBI_DOC = ("Jacobi integral h = Σ q̇ ∂L/∂q̇ − L plus taut-tether spring energy [J].", "",
+              f"{INDENT}Constant with drag and dampers off; otherwise dh/dt = power of drag and dampers.")
 
 
-def _gate(j: int) -> str:
-    return f"{TETHER_LENGTHS[j]} > {_CODE_NAMES[TETHER_REST[j]]}"
+def printing(model: DerivedModel3D) -> Printing:
+    """The 3-D models' code names; exactly-zero force components are not printed."""
+    return Printing(UNPACK, block, lambda j, indent: _length_line(model, j, indent), N_Q,
+                    "N or N m", skip_zero=True)
 
 
 def _length_line(model: DerivedModel3D, j: int, indent: str) -> str:
     lam = TETHER_LENGTHS[j]
     return f"{indent}{lam} = {NumbaPrinter().doprint(prepare(model.length_defs[lam]))}"
-
-
-def _summed(model: DerivedModel3D, tether):
-    fams = [f for f in model.families if f.tether == tether]
-    return tuple(sum(f.Q[k] for f in fams) for k in range(N_Q)), fams
-
-
-def _forces(model: DerivedModel3D, targets) -> list:
-    """Drag block, then each tether's gated block accumulated into targets."""
-    i1, i2 = INDENT, INDENT * 2
-    drag, fams = _summed(model, None)
-    out = [f"{i1}# air drag on the three bodies ({fams[0].equation})"]
-    out += block(targets, drag, "d", i1)
-    for j in range(2):
-        tq, fams = _summed(model, j + 1)
-        out.append(_length_line(model, j, i1))
-        out.append(f"{i1}if {_gate(j)}:  # tether {j + 1} taut: "
-                   + ", ".join(f.name for f in fams))
-        body = block(targets, tq, f"t{j + 1}_", i2, op="+=", skip_zero=True)
-        out += body or [f"{i2}pass"]
-    return out
 
 
 def _mass_block(model: DerivedModel3D, indent) -> list:
@@ -142,7 +133,7 @@ def rhs_source(model: DerivedModel3D) -> list:
             f'{i1}"""State derivative dy/dt of model {model.name!r} (SI; layout in STATE)."""']
     out = []
     qn = [f"Q{k}" for k in range(N_Q)]
-    out += _forces(model, qn)
+    out += forces_lines(printing(model), model.families, qn)
     out.append(f"{i1}# M q'' + f(q, q') = Q (Lagrange, 3.26-3.31 in 3-D)")
     out += [f"{i1}dydt[{k}] = {STATE_NAMES[k + N_Q]}" for k in range(N_Q)]
     rn = [f"R{k}" for k in ROTATION]
@@ -151,54 +142,7 @@ def rhs_source(model: DerivedModel3D) -> list:
                  + [sp.Symbol(qn[k]) - model.f[k] for k in ROTATION], "a", i1)
     out += _mass_block(model, i1)
     out += _solve_lines(i1, [f"dydt[{N_Q + k}]" for k in ROTATION], rn, ZERO_AXIAL)
-    return kernel(head, _unpack(i1), out)
-
-
-def family_forces_source(model: DerivedModel3D) -> list:
-    i1, i2 = INDENT, INDENT * 2
-    head = ["@njit(cache=True)", "def family_forces(y, p, out):",
-            f'{i1}"""out[f, k] = generalized force of family FAMILIES[f] on q_k (N or N m)."""']
-    out = []
-    out += [_length_line(model, j, i1) for j in range(2)]
-    out.append(f"{i1}out[:, :] = 0.0")
-    for f_idx, fam in enumerate(model.families):
-        targets = [f"out[{f_idx}, {k}]" for k in range(N_Q)]
-        out.append(f"{i1}# {fam.name}: {fam.meaning} ({fam.equation})")
-        if fam.tether is None:
-            out += block(targets, fam.Q, f"f{f_idx}_", i1, skip_zero=True)
-        else:
-            out.append(f"{i1}if {_gate(fam.tether - 1)}:")
-            out += block(targets, fam.Q, f"f{f_idx}_", i2, skip_zero=True) or [f"{i2}pass"]
-    return kernel(head, _unpack(i1), out)
-
-
-def jacobi_source(model: DerivedModel3D) -> list:
-    i1, i2 = INDENT, INDENT * 2
-    head = ["@njit(cache=True)", "def jacobi(y, p):",
-            f'{i1}"""Jacobi integral h = Σ q̇ ∂L/∂q̇ − L plus taut-tether spring energy [J].',
-            "",
-           f"{i1}Constant with drag and dampers off; otherwise dh/dt = power of drag and dampers.",
-           f'{i1}"""']
-    out = []
-    out += block(["h"], [model.jacobi], "e", i1)
-    for j in range(2):
-        pots = [f.potential for f in model.families if f.tether == j + 1 and f.potential is not None]
-        out.append(_length_line(model, j, i1))
-        out.append(f"{i1}if {_gate(j)}:")
-        out += block(["h"], [sum(pots)], f"u{j + 1}_", i2, op="+=")
-    out.append(f"{i1}return h")
-    return kernel(head, _unpack(i1), out)
-
-
-def index_tables() -> list:
-    """index -> name -> unit tables of y and p of the 3-D models."""
-    w = max(len(n) for n in STATE_NAMES + tuple(p.name for p in PARAMETERS))
-    lines = ["State vector y (index, name, unit, meaning):"]
-    lines += [f"  {i:2d}  {n:<{w}}  {u:<8}  {m}" for i, (n, u, m)
-              in enumerate(zip(STATE_NAMES, STATE_UNITS, STATE_MEANINGS))]
-    lines += ["", "Parameter vector p (index, name, unit, meaning):"]
-    lines += [f"  {i:2d}  {p.name:<{w}}  {p.unit:<8}  {p.meaning}" for i, p in enumerate(PARAMETERS)]
-    return lines
+    return kernel(head, UNPACK, out)
 
 
 def layout_constants() -> list:
@@ -222,7 +166,7 @@ def geometry_lines() -> list:
     def comps(vec):
         return [printer.doprint(prepare(sp.sympify(c).subs(sub))) for c in kin.components(vec)]
 
-    return geometry_source(_unpack(INDENT), [comps(v) for v in kin.tether_vectors],
+    return geometry_source(list(UNPACK), [comps(v) for v in kin.tether_vectors],
                            [str(_CODE_NAMES[r]) for r in TETHER_REST],
                            [comps(r) for r in kin.positions], " (docs/three-d.md)")
 
@@ -245,20 +189,17 @@ def module_source(model: DerivedModel3D, geometry=()) -> str:
             *paragraph(f"Model {model.name!r}: {model.definition.description}."),
             "Produced by `make derive` (python -m derive) from derive/three_d/; regenerate",
             f"instead of editing.  sympy {sp.__version__}.  Conventions: docs/three-d.md.", "",
-            *index_tables(), '"""', "import math", "", "from numba import njit", "",
+            *index_tables(STATE_NAMES, STATE_UNITS, PARAMETERS, STATE_MEANINGS), '"""',
+            "import math", "", "from numba import njit", "",
             f"MODEL = {model.name!r}", *constant("DESCRIPTION", model.definition.description),
             'GEOMETRY = "3d"  # roll, pitch, yaw and an out-of-plane balloon',
             'ORBIT = "circular"  # the COM held on a circle of radius r0 at rate ω',
             *layout_constants()]
     assert tuple(f.name for f in model.families) == FAMILY_ORDER
     lines = head + SOLVERS + ["", ""] + rhs_source(model)
-    for part in (family_forces_source, jacobi_source):
-        lines += ["", ""] + part(model)
+    pr = printing(model)
+    lines += ["", ""] + family_forces_source(pr, model.families)
+    lines += ["", ""] + jacobi_source(pr, model.families, model.jacobi, JACOBI_DOC)
     if geometry:
         lines += ["", ""] + list(geometry)
     return "\n".join(lines) + "\n"
-
-
-def module_filename(name: str) -> str:
-    """'3d-exact-gravity' -> 'three_d_exact_gravity.py' (a valid module name)."""
-    return name.replace("3d", "three_d").replace("-", "_") + ".py"

@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 
 import tethersim.generated as generated
+from derive.printer import module_filename
 from derive.three_d import symbols3d as s3
-from derive.three_d.codegen3d import module_filename
 from derive.three_d.forces3d import FAMILY_ORDER
 from derive.three_d.models3d import DEFINITIONS_3D
 from derive.three_d.reference import Reference3D, derived_3d
