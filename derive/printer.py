@@ -118,12 +118,27 @@ def wrap_statement(line: str) -> list:
     if m is None:
         raise ValueError(f"cannot wrap generated line: {line[:60]}...")
     indent, lhs, rhs = m.groups()
+    if _enclosed(rhs):  # a tuple (body_radii): break inside its own parentheses
+        rhs = rhs[1:-1]
     inner = indent + 2 * INDENT
-    words = rhs.replace("*", "* ").replace("* * ", "** ").split(" ")
-    chunks = textwrap.wrap(" ".join(words), WIDTH - len(inner) - 1, break_long_words=False,
+    # a break may follow a space or a single * (never split **)
+    words = rhs.replace("**", "\0").replace("*", "* ").replace("\0", "**")
+    chunks = textwrap.wrap(words, WIDTH - len(inner) - 1, break_long_words=False,
                            break_on_hyphens=False)
-    chunks = [c.replace("* ", "*").replace("** ", "**") for c in chunks]
+    chunks = [c.replace("* ", "*") for c in chunks]
     return [f"{indent}{lhs}("] + [inner + c for c in chunks[:-1]] + [f"{inner}{chunks[-1]})"]
+
+
+def _enclosed(text: str) -> bool:
+    """Whether ``text`` is one parenthesised group, ``(...)``."""
+    if not text.startswith("("):
+        return False
+    depth = 0
+    for i, ch in enumerate(text):
+        depth += (ch == "(") - (ch == ")")
+        if depth == 0:
+            return i == len(text) - 1
+    return False
 
 
 def kernel(head, unpack, body) -> list:

@@ -308,12 +308,12 @@ def jacobi(y, p):
     e18 = e0*e13
     e19 = e15*e6
     h = (
-            a*cos_theta*e0*m2*r0 - b*cos_theta*e0*m1*r0 + (1/2)*delta_x_dot**2*m3 - delta_y*e1*
-            r0 + (1/2)*delta_y_dot**2*m3 - e1*e13*math.expm1(-0.5*math.log1p(delta_y*e14 + e15*e2 +
-            e15*e4)) + (1/2)*e10*e11*e9*m1 - e10*e12 + (1/2)*e10*e6*e9*m2 - e10*e8 + (1/2)*e11*
-            e5*e9*m1 - e12*e5 - e18*m1*math.expm1(-0.5*math.log1p(b*e16 + e10*e17 + e17*e5)) - e18*
-            m2*math.expm1(-0.5*math.log1p(-a*e16 + e10*e19 + e19*e5)) - e2*e3 - e3*e4 + (1/2)*e5*e6*
-            e9*m2 - e5*e8)
+            a*cos_theta*e0*m2*r0 - b*cos_theta*e0*m1*r0 + (1/2)*delta_x_dot**2*m3 - delta_y*e1*r0
+            + (1/2)*delta_y_dot**2*m3 - e1*e13*math.expm1(-0.5*math.log1p(delta_y*e14 + e15*e2 + e15*
+            e4)) + (1/2)*e10*e11*e9*m1 - e10*e12 + (1/2)*e10*e6*e9*m2 - e10*e8 + (1/2)*e11*e5*
+            e9*m1 - e12*e5 - e18*m1*math.expm1(-0.5*math.log1p(b*e16 + e10*e17 + e17*e5)) - e18*m2*
+            math.expm1(-0.5*math.log1p(-a*e16 + e10*e19 + e19*e5)) - e2*e3 - e3*e4 + (1/2)*e5*e6*e9*
+            m2 - e5*e8)
     lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
     if lambda1 > l10:
         h += (1/2)*E1*(-l10 + lambda1)**2/l10
@@ -664,5 +664,5 @@ def body_radii(y, p):
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
     return (
-            (math.hypot(b*sin_theta, b*cos_theta + r0), math.hypot(-a*sin_theta, -a*cos_theta + r0),
-            math.hypot(delta_x, delta_y + r0)))
+            math.hypot(b*sin_theta, b*cos_theta + r0), math.hypot(-a*sin_theta, -a*cos_theta + r0),
+            math.hypot(delta_x, delta_y + r0))

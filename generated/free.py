@@ -207,8 +207,8 @@ def rhs(t, y, p, dydt):
         Q_r += 0
         Q_nu += (
                 2*b*c1*cos_theta*delta_y*nu_dot + 2*b*c1*delta_x*nu_dot*sin_theta + c1*
-                delta_x_dot*delta_y - delta_x**2*t1_1 - delta_x*t1_11 - delta_x*t1_8 - delta_y**2*t1_1
-                - delta_y*t1_10*t1_2 + t1_13 - t1_14 + t1_18 + t1_20 - t1_22 - t1_23)
+                delta_x_dot*delta_y - delta_x**2*t1_1 - delta_x*t1_11 - delta_x*t1_8 - delta_y**2*t1_1 -
+                delta_y*t1_10*t1_2 + t1_13 - t1_14 + t1_18 + t1_20 - t1_22 - t1_23)
     lambda2 = math.sqrt((-a*cos_theta - delta_y)**2 + (-a*sin_theta - delta_x)**2)
     if lambda2 > l20:  # tether 2 taut: spring2, damper2
         t2_0 = c2*delta_x_dot
@@ -577,8 +577,8 @@ def family_forces(y, p, out):
         out[5, 3] = 0
         out[5, 4] = (
                 2*b*c1*cos_theta*delta_y*nu_dot + 2*b*c1*delta_x*nu_dot*sin_theta + c1*
-                delta_x_dot*delta_y - delta_x**2*f5_1 - delta_x*f5_3 - delta_x*f5_7 - delta_y**2*f5_1
-                - delta_y*f5_2*f5_5 + f5_13 + f5_15 - f5_17 - f5_18 + f5_8 - f5_9)
+                delta_x_dot*delta_y - delta_x**2*f5_1 - delta_x*f5_3 - delta_x*f5_7 - delta_y**2*f5_1 -
+                delta_y*f5_2*f5_5 + f5_13 + f5_15 - f5_17 - f5_18 + f5_8 - f5_9)
     # damper2: damping of tether 2 (relative velocity) (3.44)
     if lambda2 > l20:
         f6_0 = c2*delta_x_dot
@@ -603,8 +603,8 @@ def family_forces(y, p, out):
         out[6, 3] = 0
         out[6, 4] = (
                 a*c2*cos_theta*delta_y*theta_dot + a*c2*delta_x*sin_theta*theta_dot + c2*
-                delta_x_dot*delta_y - delta_x**2*f6_1 - delta_x*f6_5 - delta_y**2*f6_1 - f6_15 - 2*
-                f6_8 - 2*f6_9)
+                delta_x_dot*delta_y - delta_x**2*f6_1 - delta_x*f6_5 - delta_y**2*f6_1 - f6_15 - 2*f6_8
+                - 2*f6_9)
 
 
 @njit(cache=True)
@@ -703,9 +703,9 @@ def jacobi(y, p):
     e63 = b**3
     e64 = e57*e63
     h = (
-            delta_x_dot**2*e2 + delta_y_dot**2*e2 + e0*e1 + e0*r_dot + e1*m3*r_dot - e10*e14 + e10*
-            e7 + e12*e4 + e13*e14 - e13*e7 - e15*e6 + e15*e9 + e16*e17 + e17*e18 + e2*e20 + e20*e21
-            + e20*e22 - e25*e27 + e25*e34 + e25*e36 - e27*e29 + e29*e34 + e29*e36 + e3*m1 + e3*m2 +
+            delta_x_dot**2*e2 + delta_y_dot**2*e2 + e0*e1 + e0*r_dot + e1*m3*r_dot - e10*e14 + e10*e7
+            + e12*e4 + e13*e14 - e13*e7 - e15*e6 + e15*e9 + e16*e17 + e17*e18 + e2*e20 + e20*e21 +
+            e20*e22 - e25*e27 + e25*e34 + e25*e36 - e27*e29 + e29*e34 + e29*e36 + e3*m1 + e3*m2 +
             e3*m3 - e31*e32 + e31*e37 + e31*e38 - e32*e33 + e33*e37 + e33*e38 - e4*e5 - e5*m3*r +
             e6*e8 - e8*e9 - m1*mu*(-b*e55 + e30*e56 - e33*e42 + e39 + e45*e60*e63 + e45*e64 + e54*
             (-b*e62 + (15/2)*cos_theta*e28*e51*e63 + 6*e23*e30*e48 - e33*e49 + e41 - e52*e64)) -
@@ -752,5 +752,5 @@ def body_radii(y, p):
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
     return (
-            (math.hypot(b*sin_theta, b*cos_theta + r), math.hypot(-a*sin_theta, -a*cos_theta + r),
-            math.hypot(delta_x, delta_y + r)))
+            math.hypot(b*sin_theta, b*cos_theta + r), math.hypot(-a*sin_theta, -a*cos_theta + r),
+            math.hypot(delta_x, delta_y + r))

@@ -760,9 +760,9 @@ def jacobi(y, p):
     e63 = b**3
     e64 = e57*e63
     h = (
-            delta_x_dot**2*e2 + delta_y_dot**2*e2 + e0*e1 + e0*r_dot + e1*m3*r_dot - e10*e14 + e10*
-            e7 + e12*e4 + e13*e14 - e13*e7 - e15*e6 + e15*e9 + e16*e17 + e17*e18 + e2*e20 + e20*e21
-            + e20*e22 - e25*e27 + e25*e34 + e25*e36 - e27*e29 + e29*e34 + e29*e36 + e3*m1 + e3*m2 +
+            delta_x_dot**2*e2 + delta_y_dot**2*e2 + e0*e1 + e0*r_dot + e1*m3*r_dot - e10*e14 + e10*e7
+            + e12*e4 + e13*e14 - e13*e7 - e15*e6 + e15*e9 + e16*e17 + e17*e18 + e2*e20 + e20*e21 +
+            e20*e22 - e25*e27 + e25*e34 + e25*e36 - e27*e29 + e29*e34 + e29*e36 + e3*m1 + e3*m2 +
             e3*m3 - e31*e32 + e31*e37 + e31*e38 - e32*e33 + e33*e37 + e33*e38 - e4*e5 - e5*m3*r +
             e6*e8 - e8*e9 - m1*mu*(-b*e55 + e30*e56 - e33*e42 + e39 + e45*e60*e63 + e45*e64 + e54*
             (-b*e62 + (15/2)*cos_theta*e28*e51*e63 + 6*e23*e30*e48 - e33*e49 + e41 - e52*e64)) -
@@ -809,5 +809,5 @@ def body_radii(y, p):
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
     return (
-            (math.hypot(b*sin_theta, b*cos_theta + r), math.hypot(-a*sin_theta, -a*cos_theta + r),
-            math.hypot(delta_x, delta_y + r)))
+            math.hypot(b*sin_theta, b*cos_theta + r), math.hypot(-a*sin_theta, -a*cos_theta + r),
+            math.hypot(delta_x, delta_y + r))

@@ -766,5 +766,5 @@ def body_radii(y, p):
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
     return (
-            (math.hypot(b*sin_theta, b*cos_theta + r0), math.hypot(-a*sin_theta, -a*cos_theta + r0),
-            math.hypot(delta_x, delta_y + r0)))
+            math.hypot(b*sin_theta, b*cos_theta + r0), math.hypot(-a*sin_theta, -a*cos_theta + r0),
+            math.hypot(delta_x, delta_y + r0))

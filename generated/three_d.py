@@ -900,15 +900,15 @@ def jacobi(y, p):
             I2_roll*e14 - I2_roll*e29 - I2_roll*e37 + I2_roll*e38 + I2_roll*e39 + I2_roll*e59 + I2_yaw*
             e0 - I2_yaw*e18 - I2_yaw*e2 + I2_yaw*e20 + I2_yaw*e42 - I2_yaw*e56 - delta_x**2*delta_y*
             e48 + delta_x_dot**2*e1 - delta_y**3*e48 - delta_y**2*e23 - 3/2*delta_y*e24*e47*m3 +
-            delta_y_dot**2*e1 + delta_z_dot**2*e1 + e1*e24 + e10*e12 + e10*e21 + e100*e109 - e101*
-            e35 + e101 + e102*e96 - e103*e35 + e103 + e105*e5*e73 + e106*e74 - e106*e77 + e107*e83 -
-            e107*e85 - e109*e91 - e110*e3*e90 + e110*e77 + e12*e36 - e12*e90*e94 + e18*e45 + e18*
-            e46 + e21*e36 + e21*e68*e94 + e22*e49*e53 - e28*e71 - e30*e33 + e30*e34 + e30*e58 - e33*
-            e43 + e34*e43 + e35*e60 + e35*e62 + e35*e63 + e35*e64 + e35*e92 + e35*e99 + e4*e71*e87 +
-            e40*e60 + e40*e62 + e40*e63 + e40*e64 - e42*e45 - e42*e46 + e43*e58 + e44*e45 + e44*e46
-            + e5*e6 + e51*e52 - e55*e57 + e65*e67 - e65*e81 + e65*e82 - e67*e69 + e69*e81 - e69*e82
-            + e7*e8 + e72*e73 - e72*e87 + e74*e76 - e74*e88 - e76*e77 + e77*e88 + e83*e84 + e83*e89
-            - e84*e85 - e85*e89 - e92 - e95*e96 - e99)
+            delta_y_dot**2*e1 + delta_z_dot**2*e1 + e1*e24 + e10*e12 + e10*e21 + e100*e109 - e101*e35
+            + e101 + e102*e96 - e103*e35 + e103 + e105*e5*e73 + e106*e74 - e106*e77 + e107*e83 - e107*
+            e85 - e109*e91 - e110*e3*e90 + e110*e77 + e12*e36 - e12*e90*e94 + e18*e45 + e18*e46 +
+            e21*e36 + e21*e68*e94 + e22*e49*e53 - e28*e71 - e30*e33 + e30*e34 + e30*e58 - e33*e43 +
+            e34*e43 + e35*e60 + e35*e62 + e35*e63 + e35*e64 + e35*e92 + e35*e99 + e4*e71*e87 + e40*
+            e60 + e40*e62 + e40*e63 + e40*e64 - e42*e45 - e42*e46 + e43*e58 + e44*e45 + e44*e46 + e5*
+            e6 + e51*e52 - e55*e57 + e65*e67 - e65*e81 + e65*e82 - e67*e69 + e69*e81 - e69*e82 + e7*
+            e8 + e72*e73 - e72*e87 + e74*e76 - e74*e88 - e76*e77 + e77*e88 + e83*e84 + e83*e89 - e84*
+            e85 - e85*e89 - e92 - e95*e96 - e99)
     lambda1 = (
             math.sqrt((b*sin_phi - delta_z)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*cos_phi*
             sin_theta - delta_x)**2))
@@ -965,6 +965,6 @@ def body_radii(y, p):
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
     return (
-            (math.sqrt((b*cos_phi*sin_theta)**2 + (b*cos_phi*cos_theta + r0)**2 + (b*sin_phi)**2),
+            math.sqrt((b*cos_phi*sin_theta)**2 + (b*cos_phi*cos_theta + r0)**2 + (b*sin_phi)**2),
             math.sqrt((-a*cos_phi*sin_theta)**2 + (-a*cos_phi*cos_theta + r0)**2 + (-a*sin_phi)**2),
-            math.sqrt((delta_x)**2 + (delta_y + r0)**2 + (delta_z)**2)))
+            math.sqrt((delta_x)**2 + (delta_y + r0)**2 + (delta_z)**2))

@@ -1020,8 +1020,8 @@ def jacobi(y, p):
             I1_yaw*e229*e32 - I2_pitch*e11 + I2_pitch*e94 - I2_roll*e116*e212 + I2_roll*e16 - I2_roll*
             e94 + I2_yaw*e0 + I2_yaw*e180*e93 - I2_yaw*e2 + delta_x_dot**2*e1 - delta_y*e10*r0 +
             delta_y_dot**2*e1 + delta_z_dot**2*e1 - e10*e58*math.expm1(-0.5*math.log1p(delta_y*e59 +
-            delta_z**2*e60 + e24*e60 + e26*e60)) + e100*e180*e69 - e102*e68 - e102 + e104*e167*e234
-            - e106*e215 + e106*e225 + e107*e47 - e107 - e108*e125*e215 - e108*e126 + e109*e215 - e109*
+            delta_z**2*e60 + e24*e60 + e26*e60)) + e100*e180*e69 - e102*e68 - e102 + e104*e167*e234 -
+            e106*e215 + e106*e225 + e107*e47 - e107 - e108*e125*e215 - e108*e126 + e109*e215 - e109*
             e225 - e110*e47 + e110 + e112*e212 - e113*e128 - e114*e47 + e114 + e117*e129 + e118*e47 -
             e118 + e12*e14 + e12*e22 + e121*e122 - e121*e123 + e121*e213 - e121*e220 + e122*e124 -
             e123*e124 + e124*e213 - e124*e220 - e128*e216 + e129*e218 + e130*e183 + e130*e241 + e133*
@@ -1100,6 +1100,6 @@ def body_radii(y, p):
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
     return (
-            (math.sqrt((b*cos_phi*sin_theta)**2 + (b*cos_phi*cos_theta + r0)**2 + (b*sin_phi)**2),
+            math.sqrt((b*cos_phi*sin_theta)**2 + (b*cos_phi*cos_theta + r0)**2 + (b*sin_phi)**2),
             math.sqrt((-a*cos_phi*sin_theta)**2 + (-a*cos_phi*cos_theta + r0)**2 + (-a*sin_phi)**2),
-            math.sqrt((delta_x)**2 + (delta_y + r0)**2 + (delta_z)**2)))
+            math.sqrt((delta_x)**2 + (delta_y + r0)**2 + (delta_z)**2))

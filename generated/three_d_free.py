@@ -300,9 +300,9 @@ def rhs(t, y, p, dydt):
         Q_r += 0
         Q_nu += (
                 2*b*c1*cos_phi*cos_theta*delta_y*nu_dot + 2*b*c1*cos_phi*delta_x*nu_dot*sin_theta
-                + b*c1*delta_y*phi_dot*sin_phi*sin_theta + c1*delta_x_dot*delta_y - delta_x**2*t1_4
-                - delta_x*t1_13 - delta_x*t1_18 - delta_x*t1_19 - delta_y**2*t1_4 - delta_y*t1_16*t1_6
-                + t1_31 - t1_32 + t1_35 + t1_36 - t1_38 - t1_39)
+                + b*c1*delta_y*phi_dot*sin_phi*sin_theta + c1*delta_x_dot*delta_y - delta_x**2*t1_4 -
+                delta_x*t1_13 - delta_x*t1_18 - delta_x*t1_19 - delta_y**2*t1_4 - delta_y*t1_16*t1_6 +
+                t1_31 - t1_32 + t1_35 + t1_36 - t1_38 - t1_39)
     lambda2 = (
             math.sqrt((-a*sin_phi - delta_z)**2 + (-a*cos_phi*cos_theta - delta_y)**2 + (-a*cos_phi*
             sin_theta - delta_x)**2))
@@ -363,8 +363,8 @@ def rhs(t, y, p, dydt):
         Q_r += 0
         Q_nu += (
                 a*c2*cos_phi*cos_theta*delta_y*theta_dot + a*c2*cos_phi*delta_x*sin_theta*theta_dot
-                + a*c2*cos_theta*delta_x*phi_dot*sin_phi + c2*delta_x_dot*delta_y - delta_x**2*t2_1
-                - delta_x*t2_17 - delta_y**2*t2_1 - delta_y*t2_10 - 2*t2_33 - 2*t2_34 - t2_38)
+                + a*c2*cos_theta*delta_x*phi_dot*sin_phi + c2*delta_x_dot*delta_y - delta_x**2*t2_1 -
+                delta_x*t2_17 - delta_y**2*t2_1 - delta_y*t2_10 - 2*t2_33 - 2*t2_34 - t2_38)
     # M q'' = Q - f (Lagrange, Eq 3.26 with r, nu as coordinates)
     fb0 = 2*m3
     fb1 = fb0*nu_dot
@@ -1323,8 +1323,8 @@ def family_forces(y, p, out):
         out[5, 6] = 0
         out[5, 7] = (
                 2*b*c1*cos_phi*cos_theta*delta_y*nu_dot + 2*b*c1*cos_phi*delta_x*nu_dot*sin_theta
-                + b*c1*delta_y*phi_dot*sin_phi*sin_theta + c1*delta_x_dot*delta_y - delta_x**2*f5_1
-                - delta_x*f5_11 - delta_x*f5_12 - delta_x*f5_7 - delta_y**2*f5_1 - delta_y*f5_3*f5_9 +
+                + b*c1*delta_y*phi_dot*sin_phi*sin_theta + c1*delta_x_dot*delta_y - delta_x**2*f5_1 -
+                delta_x*f5_11 - delta_x*f5_12 - delta_x*f5_7 - delta_y**2*f5_1 - delta_y*f5_3*f5_9 +
                 f5_20 - f5_21 + f5_24 + f5_25 - f5_27 - f5_28)
     # damper2: damping of tether 2 (relative velocity) (3.44)
     if lambda2 > l20:
@@ -1367,8 +1367,8 @@ def family_forces(y, p, out):
         out[6, 6] = 0
         out[6, 7] = (
                 a*c2*cos_phi*cos_theta*delta_y*theta_dot + a*c2*cos_phi*delta_x*sin_theta*theta_dot
-                + a*c2*cos_theta*delta_x*phi_dot*sin_phi + c2*delta_x_dot*delta_y - delta_x**2*f6_1
-                - delta_x*f6_9 - delta_y**2*f6_1 - delta_y*f6_7 - 2*f6_19 - 2*f6_20 - f6_24)
+                + a*c2*cos_theta*delta_x*phi_dot*sin_phi + c2*delta_x_dot*delta_y - delta_x**2*f6_1 -
+                delta_x*f6_9 - delta_y**2*f6_1 - delta_y*f6_7 - 2*f6_19 - 2*f6_20 - f6_24)
 
 
 @njit(cache=True)
@@ -1677,6 +1677,6 @@ def body_radii(y, p):
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
     return (
-            (math.sqrt((b*cos_phi*sin_theta)**2 + (b*cos_phi*cos_theta + r)**2 + (b*sin_phi)**2),
+            math.sqrt((b*cos_phi*sin_theta)**2 + (b*cos_phi*cos_theta + r)**2 + (b*sin_phi)**2),
             math.sqrt((-a*cos_phi*sin_theta)**2 + (-a*cos_phi*cos_theta + r)**2 + (-a*sin_phi)**2),
-            math.sqrt((delta_x)**2 + (delta_y + r)**2 + (delta_z)**2)))
+            math.sqrt((delta_x)**2 + (delta_y + r)**2 + (delta_z)**2))

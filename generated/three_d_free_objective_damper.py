@@ -1636,14 +1636,14 @@ def family_forces(y, p, out):
                 f5_0*f5_22*f5_25*sin_theta*theta_dot + c1*delta_y*f5_0*f5_25*f5_32*f5_35*sin_phi*
                 theta_dot + c1*delta_y*f5_0*f5_25*f5_32*f5_38*sin_phi*sin_theta*theta_dot + 2*c1*
                 delta_z*f5_0*f5_25*f5_32*phi_dot*sin_phi + 2*c1*f5_0*f5_25*f5_30*f5_55*f5_65*
-                phi_dot + 2*c1*f5_0*f5_25*f5_38*f5_55*f5_65*phi_dot - cos_theta**4*f5_66 -
-                cos_theta*delta_y*f5_69 - cos_theta*delta_z*f5_27 - delta_x*f5_69*sin_theta - f5_10*
-                f5_54 - f5_11*f5_23*f5_28*f5_42 - f5_11*f5_23*f5_3*f5_30 - f5_16*f5_26*f5_51 - f5_2*
-                f5_68 - f5_23*f5_49 - f5_23*f5_50 - 2*f5_23*f5_6 - 2*f5_28*f5_3*f5_70 - f5_29*f5_58 -
-                f5_29*f5_61 - f5_30*f5_36*f5_57 - f5_30*f5_36*f5_61 - 2*f5_30*f5_38*f5_66 - f5_30*
-                f5_67 - f5_30*f5_70*f5_8 - f5_30*f5_71 - f5_34*f5_68 - f5_35*f5_36*f5_9 - f5_36*f5_38*
-                f5_58 - f5_36*f5_52 - f5_38*f5_42*f5_70 - f5_38*f5_67 - f5_38*f5_71 - f5_4*f5_54 -
-                f5_40*f5_53 - f5_41*f5_53 - f5_43*f5_53 - f5_54*f5_7 - f5_66*sin_theta**4 - f5_66)
+                phi_dot + 2*c1*f5_0*f5_25*f5_38*f5_55*f5_65*phi_dot - cos_theta**4*f5_66 - cos_theta*
+                delta_y*f5_69 - cos_theta*delta_z*f5_27 - delta_x*f5_69*sin_theta - f5_10*f5_54 -
+                f5_11*f5_23*f5_28*f5_42 - f5_11*f5_23*f5_3*f5_30 - f5_16*f5_26*f5_51 - f5_2*f5_68 -
+                f5_23*f5_49 - f5_23*f5_50 - 2*f5_23*f5_6 - 2*f5_28*f5_3*f5_70 - f5_29*f5_58 - f5_29*
+                f5_61 - f5_30*f5_36*f5_57 - f5_30*f5_36*f5_61 - 2*f5_30*f5_38*f5_66 - f5_30*f5_67 -
+                f5_30*f5_70*f5_8 - f5_30*f5_71 - f5_34*f5_68 - f5_35*f5_36*f5_9 - f5_36*f5_38*f5_58 -
+                f5_36*f5_52 - f5_38*f5_42*f5_70 - f5_38*f5_67 - f5_38*f5_71 - f5_4*f5_54 - f5_40*f5_53
+                - f5_41*f5_53 - f5_43*f5_53 - f5_54*f5_7 - f5_66*sin_theta**4 - f5_66)
         out[5, 4] = (
                 b*c1*cos_phi*cos_theta*delta_x*delta_y*delta_y_dot*f5_0 + b*c1*cos_phi*cos_theta*
                 delta_x*delta_z*delta_z_dot*f5_0 + b*c1*cos_phi*cos_theta*delta_x_dot*f5_0*f5_8 +
@@ -2132,6 +2132,6 @@ def body_radii(y, p):
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
     return (
-            (math.sqrt((b*cos_phi*sin_theta)**2 + (b*cos_phi*cos_theta + r)**2 + (b*sin_phi)**2),
+            math.sqrt((b*cos_phi*sin_theta)**2 + (b*cos_phi*cos_theta + r)**2 + (b*sin_phi)**2),
             math.sqrt((-a*cos_phi*sin_theta)**2 + (-a*cos_phi*cos_theta + r)**2 + (-a*sin_phi)**2),
-            math.sqrt((delta_x)**2 + (delta_y + r)**2 + (delta_z)**2)))
+            math.sqrt((delta_x)**2 + (delta_y + r)**2 + (delta_z)**2))
