@@ -1,4 +1,4 @@
-"""One contract for every registered model (``tethersim.MODELS``): the energy rate.
+"""One contract for every registered model (``tethersim.MODELS``): energy rate and Jacobian.
 
 For each model, at a SatI state off equilibrium (balloon displaced and moving,
 boom pitched, rolled and turning, both tethers taut; on a free orbit for the
@@ -9,7 +9,9 @@ free models, climbing):
   Σ_{drag, damper} Q_f · q̇ (the generated ``family_forces``): the Jacobi
   integral (total energy for a free orbit) plus the spring energy changes only
   by the work of drag and dampers;
-* with C_D = 0 and c1 = c2 = 0 that power is 0 and h is stationary.
+* with C_D = 0 and c1 = c2 = 0 that power is 0 and h is stationary;
+* the model's Jacobian (tethersim.engine.jacobian: generated for the planar
+  models, central differences for the others) equals differences of its rhs.
 
 An instantaneous form of the budget the run tests check along trajectories
 (tests/engine/test_energy.py, tests/derive/test_3d_jacobi.py,
@@ -22,6 +24,7 @@ import numpy as np
 import pytest
 
 import tethersim as ts
+from tethersim.engine.jacobian import STEP, jacobian
 from tethersim.model.inputs import initial_model_state, parameter_vector
 from tethersim.model.registry import BY_NAME, KERNELS
 
@@ -85,3 +88,25 @@ def test_jacobi_integral_is_stationary_without_drag_and_dampers(name):
     rate, power, scale = _rate_and_power(name, CD=0.0, c1=0.0, c2=0.0)
     assert power == 0.0
     assert abs(rate) <= 1e-6 * scale, (rate, scale)
+
+
+@pytest.mark.parametrize("name", _params())
+def test_jacobian_equals_central_differences_of_rhs(name):
+    """tethersim.engine.jacobian (generated, or its own differences) against differences of
+    the generated rhs at a 16 times larger step, per row to 1e-6 of the row's largest entry."""
+    model, y, p = _case(name)
+    n = len(y)
+    J = np.empty((n, n))
+    jacobian(model.index, 0.0, y, p, J)
+    fd = np.empty((n, n))
+    dp, dm = np.empty(n), np.empty(n)
+    for c in range(n):
+        h = 16 * STEP * max(abs(y[c]), 1.0)
+        hi, lo = y.copy(), y.copy()
+        hi[c] += h
+        lo[c] -= h
+        KERNELS[model.index].rhs(0.0, hi, p, dp)
+        KERNELS[model.index].rhs(0.0, lo, p, dm)
+        fd[:, c] = (dp - dm) / (hi[c] - lo[c])
+    scale = np.max(np.abs(fd), axis=1, keepdims=True)
+    assert np.all(np.abs(J - fd) <= 1e-6 * scale), np.max(np.abs(J - fd) / scale)
