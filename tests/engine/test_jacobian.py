@@ -11,7 +11,8 @@ import pytest
 
 import tethersim as ts
 from tests.messages import one_line
-from tethersim.engine.jacobian import analytic, central_differences, jacobian
+from tethersim.engine.integrators.select import call
+from tethersim.engine.jacobian import _jacobian, analytic, central_differences, jacobian
 from tethersim.model.inputs import initial_model_state, parameter_vector
 from tethersim.model.registry import BY_NAME, KERNELS, MODELS, THESIS_VARIANTS
 
@@ -46,6 +47,13 @@ def test_jacobian_is_the_generated_one_where_derive_printed_it():
         jacobian(m, 0.0, y, p, J)
         KERNELS[m].jacobian(0.0, y, p, G)
         assert np.array_equal(J, G)
+    # compiled callers (model_jacobian: the implicit scheme's route) get the same
+    m = BY_NAME["derived"].index
+    y, p = initial_model_state(sat, "derived"), parameter_vector(sat, "derived")
+    J, G = np.empty((6, 6)), np.empty((6, 6))
+    call(_jacobian, m, 0.0, y, p, J)
+    KERNELS[m].jacobian(0.0, y, p, G)
+    assert np.array_equal(J, G)
 
 
 def test_only_the_planar_circular_models_carry_a_generated_jacobian():
