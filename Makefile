@@ -45,7 +45,7 @@ lint: $(STAMP)
 ## The suite: contracts and style, every test but the slow tier (under 4 minutes on 2 cores
 ## from a fresh clone).  `make test-slow` runs the slow tier; CI runs both and then
 ## `make derive` with `git diff` (generated/ reproduced byte for byte, what
-## `make check-generated` checks without touching the tree: ~45 s, so not in make test).
+## `make check-generated` checks without touching the tree: tens of seconds, so not in make test).
 test: $(STAMP) lint
 	$(PY) -m pytest -q -n $(JOBS) -m "not slow"
 

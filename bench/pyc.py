@@ -80,6 +80,19 @@ def expression(expr: str) -> str:
     return _INT.sub(r"\1.0", _powers(expr))
 
 
+def _logical(lines: list) -> list:
+    """Physical lines joined into statements (derive/printer.py wraps long ones in parentheses)."""
+    out, depth = [], 0
+    for raw in lines:
+        if depth > 0:
+            joint = "" if out[-1].endswith("(") else " "
+            out[-1] += joint + raw.strip()
+        else:
+            out.append(raw)
+        depth += raw.count("(") - raw.count(")")
+    return out
+
+
 def function_to_c(fn, name: str, signature: str) -> str:
     """C text of a generated kernel ``fn`` (a numba dispatcher or a function)."""
     src = textwrap.dedent(inspect.getsource(getattr(fn, "py_func", fn)))
@@ -87,6 +100,7 @@ def function_to_c(fn, name: str, signature: str) -> str:
     lines = src.splitlines()[body.body[0].lineno - 1:]
     if isinstance(body.body[0], ast.Expr):  # the docstring
         lines = src.splitlines()[body.body[1].lineno - 1:]
+    lines = _logical(lines)
     out = [f"static inline {signature.replace('NAME', name)}", "{"]
     declared, depth_stack = set(), [4]
     for raw in lines:

@@ -1,6 +1,8 @@
-"""Print a DerivedModel as a numba module: cse'd straight-line code.
+"""Print a DerivedModel (planar, circular orbit) as a numba module: the symbolic solve.
 
-Each generated module holds two kernels with plain float-array signatures:
+The shared parts come from derive/printer.py; here: q̈ in closed form (M is
+diagonal) and the analytic Jacobian.  Each generated module holds these kernels
+with plain float-array signatures:
 
 ``rhs(t, y, p, dydt)``            state derivative (δẋ, δẏ, θ̇, δẍ, δÿ, θ̈)
 ``family_forces(y, p, out)``      out[f, k]: generalized force of family f on q_k
@@ -14,10 +16,24 @@ symbols from fixed prefixes, and the header has no timestamp.
 from __future__ import annotations
 
 import sympy as sp
-from sympy.printing.pycode import PythonCodePrinter
 
 from .geometry import geometry_source
 from .pipeline import Q_SYMBOLS, DerivedModel
+from .printer import (
+    INDENT,
+    NumbaPrinter,
+    Printing,
+    constant,
+    cse_block,
+    family_forces_source,
+    forces_lines,
+    gate,
+    index_tables,
+    jacobi_source,
+    kernel,
+    paragraph,
+    unpack_lines,
+)
 from .symbols import (
     PARAMETERS,
     STATE_NAMES,
@@ -28,22 +44,8 @@ from .symbols import (
     state_substitution,
 )
 
-INDENT = "    "
 _SIN, _COS = sp.Symbol("sin_theta", real=True), sp.Symbol("cos_theta", real=True)
 _CODE_NAMES = {p.symbol: sp.Symbol(p.name, positive=True) for p in PARAMETERS}
-
-
-class NumbaPrinter(PythonCodePrinter):
-    """Python printer for scalar numba code (math module, no numpy)."""
-
-    def __init__(self):
-        super().__init__({"fully_qualified_modules": True, "standard": "python3"})
-
-    def _print_InverseSqrtMinusOne(self, expr):
-        return f"math.expm1(-0.5*math.log1p({self._print(expr.args[0])}))"
-
-    def _print_InverseCubeMinusOne(self, expr):
-        return f"math.expm1(-1.5*math.log1p({self._print(expr.args[0])}))"
 
 
 def _prepare(expr):
@@ -55,20 +57,12 @@ def _prepare(expr):
 
 def _block(targets, exprs, prefix, indent, op="="):
     """cse a group of expressions; return code lines assigning them to targets."""
-    printer = NumbaPrinter()
-    exprs = [_prepare(e) for e in exprs]
-    repl, reduced = sp.cse(exprs, symbols=sp.numbered_symbols(prefix), order="canonical")
-    lines = [f"{indent}{s} = {printer.doprint(v)}" for s, v in repl]
-    for tgt, e in zip(targets, reduced):
-        lines.append(f"{indent}{tgt} {op} {printer.doprint(e)}")
-    return lines
+    return cse_block(targets, [_prepare(e) for e in exprs], prefix, indent, op)
 
 
-def _unpack(indent) -> list:
-    lines = [f"{indent}{n} = y[{i}]" for i, n in enumerate(STATE_NAMES)]
-    lines += [f"{indent}{p.name} = p[{i}]" for i, p in enumerate(PARAMETERS)]
-    lines += [f"{indent}sin_theta = math.sin(theta)", f"{indent}cos_theta = math.cos(theta)"]
-    return lines
+UNPACK = unpack_lines(STATE_NAMES, PARAMETERS, ("theta",))
+JACOBI_DOC = ("Jacobi integral h = Σ q̇ ∂L/∂q̇ − L plus taut-tether spring energy [J].", "",
+              f"{INDENT}Constant with drag and dampers off; otherwise dh/dt = power of drag and dampers.")
 
 
 def _tether_length_line(j: int, indent: str, defs) -> str:
@@ -76,8 +70,10 @@ def _tether_length_line(j: int, indent: str, defs) -> str:
     return f"{indent}{lam} = {NumbaPrinter().doprint(_prepare(defs[lam]))}"
 
 
-def _gate(j: int) -> str:
-    return f"{TETHER_LENGTHS[j]} > {_CODE_NAMES[TETHER_REST[j]]}"
+def printing(length_defs) -> Printing:
+    """The planar circular models' code names (derive/printer.py)."""
+    return Printing(UNPACK, _block, lambda j, indent: _tether_length_line(j, indent, length_defs),
+                    3, "N, N, N m")
 
 
 def _sum_families(model: DerivedModel, tether):
@@ -86,43 +82,15 @@ def _sum_families(model: DerivedModel, tether):
 
 
 def rhs_source(model: DerivedModel, length_defs) -> list:
-    i1, i2 = INDENT, INDENT * 2
-    out = ["@njit(cache=True, inline=\"always\")", "def rhs(t, y, p, dydt):",
-           f'{i1}"""State derivative dy/dt of model {model.name!r} (SI; layout in generated/layout.py)."""']
-    out += _unpack(i1)
-    qnames = [str(q) for q in Q_SYMBOLS]
-    drag, fams = _sum_families(model, None)
-    out.append(f"{i1}# air drag on the three bodies ({fams[0].equation})")
-    out += _block(qnames, drag, "d", i1)
-    for j in range(2):
-        tq, fams = _sum_families(model, j + 1)
-        names = ", ".join(f.name for f in fams)
-        out.append(_tether_length_line(j, i1, length_defs))
-        out.append(f"{i1}if {_gate(j)}:  # tether {j + 1} taut: {names}")
-        out += _block(qnames, tq, f"t{j + 1}_", i2, op="+=")
+    i1 = INDENT
+    head = ["@njit(cache=True, inline=\"always\")", "def rhs(t, y, p, dydt):",
+            f'{i1}"""State derivative dy/dt of model {model.name!r} (SI; layout in generated/layout.py)."""']
+    out = forces_lines(printing(length_defs), model.families, [str(q) for q in Q_SYMBOLS])
     acc = [_prepare(e) for e in model.qdd]
     out.append(f"{i1}# accelerations from M q'' + f(q, q') = Q (Lagrange, 3.26-3.30)")
     out += [f"{i1}dydt[{k}] = {STATE_NAMES[k + 3]}" for k in range(3)]
     out += _block([f"dydt[{k + 3}]" for k in range(3)], acc, "a", i1)
-    return out
-
-
-def family_forces_source(model: DerivedModel, length_defs) -> list:
-    i1, i2 = INDENT, INDENT * 2
-    out = ["@njit(cache=True)", "def family_forces(y, p, out):",
-           f'{i1}"""out[f, k] = generalized force of family FAMILIES[f] on q_k (N, N, N m)."""']
-    out += _unpack(i1)
-    out += [_tether_length_line(j, i1, length_defs) for j in range(2)]
-    out.append(f"{i1}out[:, :] = 0.0")
-    for f_idx, fam in enumerate(model.families):
-        targets = [f"out[{f_idx}, {k}]" for k in range(3)]
-        out.append(f"{i1}# {fam.name}: {fam.meaning} ({fam.equation})")
-        if fam.tether is None:
-            out += _block(targets, fam.Q, f"f{f_idx}_", i1)
-        else:
-            out.append(f"{i1}if {_gate(fam.tether - 1)}:")
-            out += _block(targets, fam.Q, f"f{f_idx}_", i2)
-    return out
+    return kernel(head, UNPACK, out)
 
 
 def _d_dy(exprs, length_defs):
@@ -147,9 +115,9 @@ def jacobian_source(model: DerivedModel, length_defs) -> list:
     the ∂Q/∂y of each family block is accumulated inside its gate.
     """
     i1, i2 = INDENT, INDENT * 2
-    out = ["@njit(cache=True)", "def jacobian(t, y, p, J):",
-           f'{i1}"""J[i, j] = ∂(dy_i/dt)/∂y_j of model {model.name!r} (units of y_i/s per y_j)."""']
-    out += _unpack(i1)
+    head = ["@njit(cache=True)", "def jacobian(t, y, p, J):",
+            f'{i1}"""J[i, j] = ∂(dy_i/dt)/∂y_j of model {model.name!r} (units of y_i/s per y_j)."""']
+    out = []
     dq = [[f"dQ{k}_{j}" for j in range(6)] for k in range(3)]
     drag, _ = _sum_families(model, None)
     rows = _d_dy(drag, length_defs)
@@ -159,7 +127,7 @@ def jacobian_source(model: DerivedModel, length_defs) -> list:
         tq, _ = _sum_families(model, j + 1)
         rows = _d_dy(tq, length_defs)
         out.append(_tether_length_line(j, i1, length_defs))
-        out.append(f"{i1}if {_gate(j)}:")
+        out.append(f"{i1}if {gate(j)}:")
         out += _block([dq[k][c] for k in range(3) for c in range(6)],
                       [rows[k][c] for k in range(3) for c in range(6)], f"jt{j + 1}_", i2, op="+=")
     out.append(f"{i1}J[:, :] = 0.0")
@@ -173,61 +141,32 @@ def jacobian_source(model: DerivedModel, length_defs) -> list:
             exprs.append(e)
             targets.append(f"J[{k + 3}, {c}]")
     out += _block(targets, exprs, "ja", i1)
-    return out
-
-
-def jacobi_source(model: DerivedModel, length_defs) -> list:
-    i1, i2 = INDENT, INDENT * 2
-    out = ["@njit(cache=True)", "def jacobi(y, p):",
-           f'{i1}"""Jacobi integral h = Σ q̇ ∂L/∂q̇ − L plus taut-tether spring energy [J].',
-           "",
-           f"{i1}Constant with drag and dampers off; otherwise dh/dt = power of drag and dampers.",
-           f'{i1}"""']
-    out += _unpack(i1)
-    out += _block(["h"], [model.jacobi], "e", i1)
-    for j in range(2):
-        pots = [f.potential for f in model.families if f.tether == j + 1 and f.potential is not None]
-        if pots:
-            out.append(_tether_length_line(j, i1, length_defs))
-            out.append(f"{i1}if {_gate(j)}:")
-            out += _block(["h"], [sum(pots)], f"u{j + 1}_", i2, op="+=")
-    out.append(f"{i1}return h")
-    return out
-
-
-def _index_tables() -> list:
-    """index -> symbol -> unit tables of y and p (the same in every generated file)."""
-    w = max(len(n) for n in STATE_NAMES + tuple(p.name for p in PARAMETERS))
-    lines = ["State vector y (index, name, unit):"]
-    lines += [f"  {i:2d}  {n:<{w}}  {u}" for i, (n, u) in enumerate(zip(STATE_NAMES, STATE_UNITS))]
-    lines += ["", "Parameter vector p (index, name, unit, meaning):"]
-    lines += [f"  {i:2d}  {p.name:<{w}}  {p.unit:<8}  {p.meaning}" for i, p in enumerate(PARAMETERS)]
-    return lines
+    return kernel(head, UNPACK, out)
 
 
 def header(model: DerivedModel) -> list:
     return [
         '"""GENERATED FILE - DO NOT EDIT.',
         "",
-        f"Model {model.name!r}: {model.definition.description}.",
+        *paragraph(f"Model {model.name!r}: {model.definition.description}."),
         "Produced by `make derive` (python -m derive) from derive/; regenerate instead",
         f"of editing.  sympy {sp.__version__}.",
         "",
-        *_index_tables(),
+        *index_tables(STATE_NAMES, STATE_UNITS, PARAMETERS),
         '"""',
         "import math",
         "",
         "from numba import njit",
         "",
         f"MODEL = {model.name!r}",
-        f"DESCRIPTION = {model.definition.description!r}",
+        *constant("DESCRIPTION", model.definition.description),
         'GEOMETRY = "planar"  # (δx, δy, θ): the thesis plane',
         'ORBIT = "circular"  # the COM held on a circle of radius r0 at rate ω (Eq 3.14)',
-        f"STATE = {STATE_NAMES!r}",
-        f"STATE_UNITS = {STATE_UNITS!r}",
-        f"PARAMETERS = {tuple(p.name for p in PARAMETERS)!r}",
-        f"PARAMETER_UNITS = {tuple(p.unit for p in PARAMETERS)!r}",
-        f"FAMILIES = {tuple(f.name for f in model.families)!r}",
+        *constant("STATE", STATE_NAMES),
+        *constant("STATE_UNITS", STATE_UNITS),
+        *constant("PARAMETERS", tuple(p.name for p in PARAMETERS)),
+        *constant("PARAMETER_UNITS", tuple(p.unit for p in PARAMETERS)),
+        *constant("FAMILIES", tuple(f.name for f in model.families)),
     ]
 
 
@@ -239,15 +178,16 @@ def planar_geometry_source(kin) -> list:
     def comps(vec):
         return [printer.doprint(_prepare(vec.dot(axis).subs(sub))) for axis in (kin.L.x, kin.L.y)]
 
-    return geometry_source(_unpack(INDENT), [comps(v) for v in kin.tether_vectors],
+    return geometry_source(list(UNPACK), [comps(v) for v in kin.tether_vectors],
                            [_CODE_NAMES[r].name for r in TETHER_REST],
                            [comps(r) for r in kin.positions], " (Eqs 3.10-3.12)")
 
 
 def module_source(model: DerivedModel, length_defs, kin) -> str:
+    pr = printing(length_defs)
     lines = header(model) + ["", ""] + rhs_source(model, length_defs)
-    lines += ["", ""] + family_forces_source(model, length_defs)
-    lines += ["", ""] + jacobi_source(model, length_defs)
+    lines += ["", ""] + family_forces_source(pr, model.families)
+    lines += ["", ""] + jacobi_source(pr, model.families, model.jacobi, JACOBI_DOC)
     lines += ["", ""] + jacobian_source(model, length_defs)
     lines += ["", ""] + planar_geometry_source(kin)
     return "\n".join(lines) + "\n"
@@ -256,41 +196,11 @@ def module_source(model: DerivedModel, length_defs, kin) -> str:
 def layout_source(families) -> str:
     """generated/layout.py: the index -> symbol -> unit tables and index constants."""
     lines = ['"""GENERATED FILE - DO NOT EDIT.  Produced by `make derive` from derive/symbols.py.',
-             "", *_index_tables()]
-    lines += ['"""', "", f"STATE = {STATE_NAMES!r}", f"STATE_UNITS = {STATE_UNITS!r}",
-              f"PARAMETERS = {tuple(p.name for p in PARAMETERS)!r}",
-              f"PARAMETER_UNITS = {tuple(p.unit for p in PARAMETERS)!r}",
-              f"FAMILIES = {tuple(families)!r}", ""]
+             "", *index_tables(STATE_NAMES, STATE_UNITS, PARAMETERS)]
+    lines += ['"""', "", *constant("STATE", STATE_NAMES), *constant("STATE_UNITS", STATE_UNITS),
+              *constant("PARAMETERS", tuple(p.name for p in PARAMETERS)),
+              *constant("PARAMETER_UNITS", tuple(p.unit for p in PARAMETERS)),
+              *constant("FAMILIES", tuple(families)), ""]
     lines += [f"Y_{n.upper()} = {i}" for i, n in enumerate(STATE_NAMES)]
     lines += [""] + [f"P_{p.name.upper()} = {i}" for i, p in enumerate(PARAMETERS)]
-    return "\n".join(lines) + "\n"
-
-
-def module_filename(name: str) -> str:
-    """Model name -> module file name ('3d-exact-gravity' -> 'three_d_exact_gravity.py')."""
-    return name.replace("3d", "three_d").replace("-", "_") + ".py"
-
-
-def dispatch_source(definitions) -> str:
-    """generated/dispatch.py: one jitted entry point taking a model index.
-
-    Integrator loops call ``rhs(model, ...)`` with an integer model index, so
-    they are ordinary cacheable numba functions (no function arguments).
-    """
-    mods = [module_filename(d.name)[:-3] for d in definitions]
-    lines = ['"""GENERATED FILE - DO NOT EDIT.  Produced by `make derive` from derive/codegen.py."""',
-             "from numba import njit", "",
-             *(f"from . import {m}" for m in mods), "",
-             f"MODEL_NAMES = {tuple(d.name for d in definitions)!r}", ""]
-    kernels = (("rhs", "t, y, p, dydt"), ("family_forces", "y, p, out"), ("jacobi", "y, p"),
-               ("jacobian", "t, y, p, J"))
-    for fn, args in kernels:
-        lines += ["", "@njit(cache=True)", f"def {fn}(model, {args}):",
-                  f'    """{fn} of model MODEL_NAMES[model]."""']
-        ret = "return " if fn == "jacobi" else ""
-        for i, m in enumerate(mods):
-            kw = "if" if i == 0 else "elif"
-            lines += [f"    {kw} model == {i}:", f"        {ret}{m}.{fn}({args})"]
-        if ret:
-            lines += ["    return 0.0"]
     return "\n".join(lines) + "\n"

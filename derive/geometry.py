@@ -17,7 +17,7 @@ with its own printer; the lengths are written with ``math.hypot`` in the plane
 """
 from __future__ import annotations
 
-INDENT = "    "
+from .printer import INDENT, kernel
 
 
 def _norm(components) -> str:
@@ -32,7 +32,8 @@ def geometry_source(unpack: list, tethers, rests, bodies, note: str = "") -> lis
     Parameters
     ----------
     unpack : list of str
-        Lines (indented once) that bind the state and parameter names used.
+        Lines (indented once) that bind the state and parameter names (each
+        kernel keeps those it reads).
     tethers : sequence of sequence of str
         Printed components of each tether vector (balloon to its end body).
     rests : sequence of str
@@ -43,12 +44,13 @@ def geometry_source(unpack: list, tethers, rests, bodies, note: str = "") -> lis
         Where the positions come from (an equation or module), for the docstrings.
     """
     i1 = INDENT
-    out = ["@njit(cache=True, inline=\"always\")", "def tether_margins(y, p, g):",
-           f'{i1}"""g[j] = λ_j − l_j0 [m]: tether j is taut when g[j] > 0 (Eqs 3.39-3.42)."""']
-    out += unpack
-    out += [f"{i1}g[{j}] = {_norm(c)} - {rest}" for j, (c, rest) in enumerate(zip(tethers, rests))]
-    out += ["", "", "@njit(cache=True, inline=\"always\")", "def body_radii(y, p):",
-            f'{i1}"""(|R_1|, |R_2|, |R_3|) [m]: tip-mass, bus, balloon from Earth\'s centre{note}."""']
-    out += unpack
-    out += [f"{i1}return ({', '.join(_norm(c) for c in bodies)})"]
-    return out
+    margins = kernel(
+        ["@njit(cache=True, inline=\"always\")", "def tether_margins(y, p, g):",
+         f'{i1}"""g[j] = λ_j − l_j0 [m]: tether j is taut when g[j] > 0 (Eqs 3.39-3.42)."""'],
+        unpack, [f"{i1}g[{j}] = {_norm(c)} - {rest}" for j, (c, rest) in enumerate(zip(tethers, rests))])
+    radii = kernel(
+        ["@njit(cache=True, inline=\"always\")", "def body_radii(y, p):",
+         f'{i1}"""(|R_1|, |R_2|, |R_3|) [m]: tip-mass, bus, balloon from Earth\'s centre.',
+         "", f'{i1}Positions{note}.', f'{i1}"""'],
+        unpack, [f"{i1}return ({', '.join(_norm(c) for c in bodies)})"])
+    return margins + ["", ""] + radii

@@ -78,7 +78,7 @@ def free_state_substitution() -> dict:
 
 def to_free_symbols(expr):
     """Replace q(t), q̇(t), q̈(t) by the free model's plain state symbols."""
-    return sp.sympify(expr).subs(free_state_substitution())
+    return sp.sympify(expr).xreplace(free_state_substitution())
 
 
 def free_kinematics() -> Kinematics:
@@ -118,8 +118,15 @@ def offset_ratio(kin: Kinematics, i: int, scale=1):
 
 def _truncate_degree(expr, eps, degree: int):
     """Keep the terms of ``expr`` (a polynomial in eps) up to eps**degree, eps → 1."""
-    poly = sp.Poly(sp.expand(expr), eps)
-    return sp.Add(*[c for (k,), c in poly.terms() if k <= degree])
+    # term by term (c eps^k → c): what Poly(expr, eps).terms() gives, without building a
+    # polynomial ring over every other symbol of the expression (the 3-D free potential's
+    # ~10^4 terms took most of that model's derivation)
+    kept = []
+    for term in sp.Add.make_args(sp.expand(expr)):
+        c, k = term.as_coeff_exponent(eps)
+        if k <= degree:
+            kept.append(c)
+    return sp.Add(*kept)
 
 
 TRUNCATION_DEGREE = 3  # highest power of the offsets kept in V (= order 1/r0 in 3.28-3.30)

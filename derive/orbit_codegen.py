@@ -8,15 +8,15 @@ planar free models (derive/orbit.py FREE_STATE_NAMES), 16 for the 3-D ones
 ``rhs(t, y, p, dydt)``         state derivative (q̇, q̈), q = (offsets, angles, r, ν)
 ``family_forces(y, p, out)``   out[f, k]: generalized force of family f on q_k
 ``jacobi(y, p)``               total energy T + V + taut-tether spring energy [J]
-``jacobian(t, y, p, J)``       ∂(dy/dt)/∂y
 
 The mass matrix couples the orbit (r, ν) with the offsets, so q̈ is not
 printed in closed form: the kernel evaluates M (symmetric positive definite,
 it is the kinetic energy's Hessian) and the right-hand side Q − f, and solves
 with an unrolled LDLᵀ elimination without pivoting (stable for SPD matrices
-and invariant to the very different scales of the ν and δ rows).  The
-Jacobian uses the same factors: with R(y, q̈) = M q̈ + f − Q,
-∂q̈/∂y = −M⁻¹ ∂R/∂y at the current q̈.  A layout with an ``axial`` coordinate
+and invariant to the very different scales of the ν and δ rows).  No
+``jacobian`` is printed: the free models use theirs only for the RK4 step
+warning, and get it by central differences of rhs (tethersim/engine/jacobian.py).
+A layout with an ``axial`` coordinate
 (3-D: ψ) replaces its row and column by the identity when the axial inertia
 is zero (ψ is then no degree of freedom: ψ̈ = 0, docs/three-d.md).
 """
@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .codegen import INDENT, NumbaPrinter, _block, _gate, _prepare
+from .codegen import _block, _prepare
 from .orbit import (
     FREE_ACCELERATION_SYMBOLS,
     FREE_PARAMETERS,
@@ -37,6 +37,19 @@ from .orbit import (
     FREE_STATE_UNITS,
     FreeDerivedModel,
     printable,
+)
+from .printer import (
+    INDENT,
+    NumbaPrinter,
+    Printing,
+    constant,
+    family_forces_source,
+    forces_lines,
+    index_tables,
+    jacobi_source,
+    kernel,
+    paragraph,
+    unpack_lines,
 )
 from .symbols import TETHER_LENGTHS
 
@@ -65,6 +78,8 @@ class FreeLayout:
         Header lines naming the derivation's modules.
     axial : tuple or None
         (index of ψ in q, condition on p that the axial inertia is zero).
+    force_units : str
+        Units of the generalized forces (family_forces' docstring).
     """
 
     state_names: tuple
@@ -79,6 +94,7 @@ class FreeLayout:
     geometry: str
     sources: tuple
     axial: tuple | None = None
+    force_units: str = "N, N, N m, N, N m"
 
     @property
     def n_q(self) -> int:
@@ -90,16 +106,22 @@ PLANAR = FreeLayout(FREE_STATE_NAMES, FREE_STATE_UNITS, FREE_STATE_SYMBOLS,
                     ("theta",), 'GEOMETRY = "planar"  # (δx, δy, θ) in the orbit plane',
                     ("Produced by `make derive` (python -m derive) from derive/orbit.py and",
                      "derive/orbit_codegen.py; regenerate instead of editing."))
+JACOBI_DOC = ("Total energy T + V (orbit and attitude) plus taut-tether spring energy [J].", "",
+              f"{INDENT}L = T − V has no explicit t, so this is the Jacobi integral: constant with drag",
+              f"{INDENT}and dampers off, otherwise dE/dt = Σ_k (Q_drag + Q_damper)_k q̇_k.")
+
+
 def _x(lay):
     return tuple(sp.Symbol(f"X{k}", real=True) for k in range(lay.n_q))  # q̈ inside the kernels
 
 
-def _unpack(lay, indent) -> list:
-    lines = [f"{indent}{n} = y[{i}]" for i, n in enumerate(lay.state_names)]
-    lines += [f"{indent}{p.name} = p[{i}]" for i, p in enumerate(lay.parameters)]
-    for a in lay.angles:
-        lines += [f"{indent}sin_{a} = math.sin({a})", f"{indent}cos_{a} = math.cos({a})"]
-    return lines
+def printing(lay, length_defs) -> Printing:
+    """The layout's code names, with H(u) printed through expm1/log1p (derive/printer.py)."""
+    return Printing(unpack_lines(lay.state_names, lay.parameters, lay.angles),
+                    lambda targets, exprs, prefix, indent, op="=": _pblock(lay, targets, exprs,
+                                                                           prefix, indent, op),
+                    lambda j, indent: _tether_length_line(lay, j, indent, length_defs),
+                    lay.n_q, lay.force_units, drag_note=", co-rotating air")
 
 
 def _pblock(lay, targets, exprs, prefix, indent, op="="):
@@ -109,30 +131,6 @@ def _pblock(lay, targets, exprs, prefix, indent, op="="):
 def _tether_length_line(lay, j: int, indent: str, defs) -> str:
     lam = TETHER_LENGTHS[j]
     return f"{indent}{lam} = {NumbaPrinter().doprint(lay.prepare(defs[lam]))}"
-
-
-def _sum_families(lay, model: FreeDerivedModel, tether):
-    fams = [f for f in model.families if f.tether == tether]
-    return tuple(sum(f.Q[k] for f in fams) for k in range(lay.n_q)), fams
-
-
-def _forces_lines(lay, model, length_defs, targets, prefix, rows=None) -> list:
-    """Summed forces (drag ungated, each tether's families inside its taut gate).
-
-    ``rows`` maps a tuple of n_q expressions to the list actually printed
-    (identity for Q itself, ∂Q/∂y rows for the Jacobian).
-    """
-    rows = rows or (lambda q: list(q))
-    i1, i2 = INDENT, INDENT * 2
-    drag, fams = _sum_families(lay, model, None)
-    out = [f"{i1}# air drag on the three bodies ({fams[0].equation}, co-rotating air)"]
-    out += _pblock(lay, targets, rows(drag), f"{prefix}d", i1)
-    for j in range(2):
-        tq, fams = _sum_families(lay, model, j + 1)
-        out.append(_tether_length_line(lay, j, i1, length_defs))
-        out.append(f"{i1}if {_gate(j)}:  # tether {j + 1} taut: {', '.join(f.name for f in fams)}")
-        out += _pblock(lay, targets, rows(tq), f"{prefix}t{j + 1}_", i2, op="+=")
-    return out
 
 
 def _mass_matrix_lines(lay, model, indent) -> list:
@@ -179,7 +177,7 @@ def _accelerations(lay, model, length_defs) -> list:
     """Lines leaving q̈ in X0..X{n-1}: forces, M, factorisation, solve of M q̈ = Q − f."""
     i1, n = INDENT, lay.n_q
     qn = [str(q) for q in lay.q_symbols]
-    out = _forces_lines(lay, model, length_defs, qn, "")
+    out = forces_lines(printing(lay, length_defs), model.families, qn)
     out.append(f"{i1}# M q'' = Q - f (Lagrange, Eq 3.26 with r, nu as coordinates)")
     out += _pblock(lay, [f"B{k}" for k in range(n)],
                    [lay.q_symbols[k] - model.f[k] for k in range(n)], "fb", i1)
@@ -192,106 +190,18 @@ def _accelerations(lay, model, length_defs) -> list:
 
 def rhs_source(lay, model: FreeDerivedModel, length_defs) -> list:
     i1, n = INDENT, lay.n_q
-    out = ["@njit(cache=True)", "def rhs(t, y, p, dydt):",
-           f'{i1}"""State derivative dy/dt of model {model.name!r} (SI; y and p as in STATE, PARAMETERS)."""']
-    out += _unpack(lay, i1) + _accelerations(lay, model, length_defs)
+    head = ["@njit(cache=True)", "def rhs(t, y, p, dydt):",
+            f'{i1}"""State derivative dy/dt of model {model.name!r} (SI; y, p as in STATE, PARAMETERS)."""']
+    out = _accelerations(lay, model, length_defs)
     out += [f"{i1}dydt[{k}] = {lay.state_names[k + n]}" for k in range(n)]
     out += [f"{i1}dydt[{k + n}] = X{k}" for k in range(n)]
-    return out
-
-
-def family_forces_source(lay, model: FreeDerivedModel, length_defs) -> list:
-    i1, i2 = INDENT, INDENT * 2
-    out = ["@njit(cache=True)", "def family_forces(y, p, out):",
-           f'{i1}"""out[f, k] = generalized force of family FAMILIES[f] on q_k (N, N, N m, N, N m)."""']
-    out += _unpack(lay, i1)
-    out += [_tether_length_line(lay, j, i1, length_defs) for j in range(2)]
-    out.append(f"{i1}out[:, :] = 0.0")
-    for f_idx, fam in enumerate(model.families):
-        targets = [f"out[{f_idx}, {k}]" for k in range(lay.n_q)]
-        out.append(f"{i1}# {fam.name}: {fam.meaning} ({fam.equation})")
-        if fam.tether is None:
-            out += _pblock(lay, targets, fam.Q, f"f{f_idx}_", i1)
-        else:
-            out.append(f"{i1}if {_gate(fam.tether - 1)}:")
-            out += _pblock(lay, targets, fam.Q, f"f{f_idx}_", i2)
-    return out
-
-
-def jacobi_source(lay, model: FreeDerivedModel, length_defs) -> list:
-    i1, i2 = INDENT, INDENT * 2
-    out = ["@njit(cache=True)", "def jacobi(y, p):",
-           f'{i1}"""Total energy T + V (orbit and attitude) plus taut-tether spring energy [J].',
-           "",
-           f"{i1}L = T − V has no explicit t, so this is the Jacobi integral: constant with drag",
-           f"{i1}and dampers off, otherwise dE/dt = Σ_k (Q_drag + Q_damper)_k q̇_k.",
-           f'{i1}"""']
-    out += _unpack(lay, i1)
-    out += _pblock(lay, ["h"], [model.energy], "e", i1)
-    for j in range(2):
-        pots = [f.potential for f in model.families if f.tether == j + 1 and f.potential is not None]
-        if pots:
-            out.append(_tether_length_line(lay, j, i1, length_defs))
-            out.append(f"{i1}if {_gate(j)}:")
-            out += _pblock(lay, ["h"], [sum(pots)], f"u{j + 1}_", i2, op="+=")
-    out.append(f"{i1}return h")
-    return out
-
-
-def _d_dy(lay, exprs, length_defs):
-    """Rows ∂expr/∂y (one column per state), λ_j differentiated through Eqs 3.41-3.42."""
-    back = {v: k for k, v in length_defs.items()}
-    rows = []
-    for e in exprs:
-        full = sp.sympify(e).xreplace(length_defs)
-        rows.append([sp.sympify(full.diff(s)).xreplace(back) for s in lay.state_symbols])
-    return rows
-
-
-def jacobian_source(lay, model: FreeDerivedModel, length_defs) -> list:
-    """J = ∂(dy/dt)/∂y: ∂q̈/∂y = −M⁻¹ (∂(M q̈ + f)/∂y − ∂Q/∂y) at the current q̈."""
-    i1, n, ny = INDENT, lay.n_q, 2 * lay.n_q
-    out = ["@njit(cache=True)", "def jacobian(t, y, p, J):",
-           f'{i1}"""J[i, j] = ∂(dy_i/dt)/∂y_j of model {model.name!r} (units of y_i/s per y_j)."""']
-    out += _unpack(lay, i1) + _accelerations(lay, model, length_defs)
-    dq = [f"dQ{k}_{c}" for k in range(n) for c in range(ny)]
-
-    def flat(q):
-        rows = _d_dy(lay, q, length_defs)
-        return [rows[k][c] for k in range(n) for c in range(ny)]
-
-    out += _forces_lines(lay, model, length_defs, dq, "j", rows=flat)
-    acc = dict(zip(lay.acceleration_symbols, _x(lay)))
-    lhs_rows = _d_dy(lay, [e.xreplace(acc) for e in model.lhs], length_defs)
-    dq_syms = sp.symbols(" ".join(dq), real=True)
-    dR = [lhs_rows[k][c] - dq_syms[ny * k + c] for k in range(n) for c in range(ny)]
-    out += _pblock(lay, [f"R{c}_{k}" for k in range(n) for c in range(ny)], dR, "jr", i1)
-    out += _axial_lines(lay, i1, [f"R{c}_{lay.axial[0]}" for c in range(ny)] if lay.axial else [])
-    out.append(f"{i1}J[:, :] = 0.0")
-    out += [f"{i1}J[{k}, {k + n}] = 1.0" for k in range(n)]
-    for c in range(ny):
-        b = [f"R{c}_{k}" for k in range(n)]
-        x = [f"Z{c}_{k}" for k in range(n)]
-        out += _solve_lines(lay, b, x, i1)
-        out += [f"{i1}J[{k + n}, {c}] = -Z{c}_{k}" for k in range(n)]
-    return out
-
-
-def _index_tables(lay) -> list:
-    w = max(len(n) for n in lay.state_names + tuple(p.name for p in lay.parameters))
-    lines = ["State vector y (index, name, unit):"]
-    lines += [f"  {i:2d}  {n:<{w}}  {u}"
-              for i, (n, u) in enumerate(zip(lay.state_names, lay.state_units))]
-    lines += ["", "Parameter vector p (index, name, unit, meaning):"]
-    lines += [f"  {i:2d}  {p.name:<{w}}  {p.unit:<8}  {p.meaning}"
-              for i, p in enumerate(lay.parameters)]
-    return lines
+    return kernel(head, printing(lay, length_defs).unpack, out)
 
 
 def _layout_constants(lay) -> list:
-    return [f"STATE = {lay.state_names!r}", f"STATE_UNITS = {lay.state_units!r}",
-            f"PARAMETERS = {tuple(p.name for p in lay.parameters)!r}",
-            f"PARAMETER_UNITS = {tuple(p.unit for p in lay.parameters)!r}", "",
+    return [*constant("STATE", lay.state_names), *constant("STATE_UNITS", lay.state_units),
+            *constant("PARAMETERS", tuple(p.name for p in lay.parameters)),
+            *constant("PARAMETER_UNITS", tuple(p.unit for p in lay.parameters)), "",
             *(f"Y_{n.upper()} = {i}" for i, n in enumerate(lay.state_names)), "",
             *(f"P_{p.name.upper()} = {i}" for i, p in enumerate(lay.parameters))]
 
@@ -300,19 +210,22 @@ def module_source(model: FreeDerivedModel, length_defs, geometry=(), lay: FreeLa
     """Source text of one free-orbit module (kernels, layout, ``CIRCULAR_TWIN``)."""
     twin = model.definition.circular
     lines = ['"""GENERATED FILE - DO NOT EDIT.', "",
-             f"Model {model.name!r}: {model.definition.description}.",
+             *paragraph(f"Model {model.name!r}: {model.definition.description}."),
              *lay.sources[:-1], f"{lay.sources[-1]}  sympy {sp.__version__}.",
              f"Reduces to the model {twin!r} on a circular orbit.", "",
-             *_index_tables(lay), '"""', "import math", "", "from numba import njit", "",
+             *index_tables(lay.state_names, lay.state_units, lay.parameters), '"""',
+             "import math", "", "from numba import njit", "",
              f"MODEL = {model.name!r}",
-             f"DESCRIPTION = {model.definition.description!r}",
+             *constant("DESCRIPTION", model.definition.description),
              lay.geometry,
              'ORBIT = "free"  # r and ν are coordinates: gravity, J2 and drag move the orbit',
              f"CIRCULAR_TWIN = {twin!r}  # the model this one reduces to on a circular orbit",
              f"FAMILIES = {tuple(f.name for f in model.families)!r}",
              *_layout_constants(lay)]
-    for part in (rhs_source, family_forces_source, jacobi_source, jacobian_source):
-        lines += ["", ""] + part(lay, model, length_defs)
+    pr = printing(lay, length_defs)
+    lines += ["", ""] + rhs_source(lay, model, length_defs)
+    lines += ["", ""] + family_forces_source(pr, model.families)
+    lines += ["", ""] + jacobi_source(pr, model.families, model.energy, JACOBI_DOC)
     if geometry:
         lines += ["", ""] + list(geometry)
     return "\n".join(lines) + "\n"
@@ -330,34 +243,14 @@ def geometry_lines(kin, sub, lay: FreeLayout = PLANAR, axes=None, note=None) -> 
     def comps(vec):
         return [printer.doprint(lay.prepare(vec.dot(axis).subs(sub))) for axis in axes]
 
-    return geometry_source(_unpack(lay, INDENT), [comps(v) for v in kin.tether_vectors],
+    unpack = list(unpack_lines(lay.state_names, lay.parameters, lay.angles))
+    return geometry_source(unpack, [comps(v) for v in kin.tether_vectors],
                            [_CODE_NAMES[r].name for r in TETHER_REST], [comps(r) for r in kin.positions],
                            note or " (Eqs 3.10-3.12 about the orbit radius r)")
 
 
-def dispatch_source(definitions) -> str:
-    """generated/free_dispatch.py: one jitted entry point per kernel, model index first."""
-    mods = [d.name.replace("-", "_") for d in definitions]
-    lines = ['"""GENERATED FILE - DO NOT EDIT.  Produced by `make derive` from derive/orbit_codegen.py.',
-             "", "Free-orbit models (state and parameter layout in each module's STATE, PARAMETERS).",
-             '"""', "from numba import njit", "",
-             *(f"from . import {m}" for m in mods), "",
-             f"MODEL_NAMES = {tuple(d.name for d in definitions)!r}",
-             f"STATE = {mods[0]}.STATE", f"PARAMETERS = {mods[0]}.PARAMETERS", ""]
-    for fn, args in (("rhs", "t, y, p, dydt"), ("family_forces", "y, p, out"),
-                     ("jacobi", "y, p"), ("jacobian", "t, y, p, J")):
-        lines += ["", "@njit(cache=True)", f"def {fn}(model, {args}):",
-                  f'    """{fn} of free model MODEL_NAMES[model]."""']
-        ret = "return " if fn == "jacobi" else ""
-        for i, m in enumerate(mods):
-            lines += [f"    {'if' if i == 0 else 'elif'} model == {i}:", f"        {ret}{m}.{fn}({args})"]
-        if ret:
-            lines += ["    return 0.0"]
-    return "\n".join(lines) + "\n"
-
-
 def write_free_models(out) -> list:
-    """Derive every free-orbit model and write its module and free_dispatch.py into ``out``."""
+    """Derive every free-orbit model and write its module into ``out``; the file names."""
     from .orbit import FREE_DEFINITIONS, derive_free, free_kinematics, free_state_substitution
 
     sub = free_state_substitution()
@@ -369,5 +262,4 @@ def write_free_models(out) -> list:
         fname = defn.name.replace("-", "_") + ".py"
         (out / fname).write_text(module_source(derive_free(defn), length_defs, geometry))
         written.append(fname)
-    (out / "free_dispatch.py").write_text(dispatch_source(FREE_DEFINITIONS))
     return written

@@ -76,7 +76,7 @@ Q_SYMBOLS = tuple(sp.Symbol(f"Q_{n}", real=True) for n in ("delta_x", "delta_y",
 
 def to_state_symbols(expr):
     """Replace q(t), q̇(t), q̈(t) by plain symbols (highest derivatives first)."""
-    return sp.sympify(expr).subs(state_substitution())
+    return sp.sympify(expr).xreplace(state_substitution())
 
 
 def lagrange_lhs(kin: Kinematics, inverse_distance) -> tuple:

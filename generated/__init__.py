@@ -2,21 +2,24 @@
 
 Each module carries its own layout (STATE, STATE_UNITS, PARAMETERS,
 PARAMETER_UNITS, FAMILIES), what it models (DESCRIPTION, GEOMETRY, ORBIT)
-and the kernels rhs, family_forces, jacobi, jacobian, tether_margins and
-body_radii.  tethersim.model.registry reads this table; nothing else lists
-the models."""
-from . import derived
-from . import printed
-from . import exact_gravity
-from . import objective_damper
-from . import three_d
-from . import three_d_exact_gravity
-from . import three_d_objective_damper
-from . import free
-from . import free_exact_gravity
-from . import free_objective_damper
-from . import three_d_free
-from . import three_d_free_objective_damper
+and the kernels rhs, family_forces, jacobi, tether_margins and body_radii;
+the thesis's planar models also jacobian (tethersim/engine/jacobian.py
+differentiates the others' rhs).  tethersim.model.registry reads this table;
+nothing else lists the models."""
+from . import (
+    derived,
+    exact_gravity,
+    free,
+    free_exact_gravity,
+    free_objective_damper,
+    objective_damper,
+    printed,
+    three_d,
+    three_d_exact_gravity,
+    three_d_free,
+    three_d_free_objective_damper,
+    three_d_objective_damper,
+)
 
 MODELS = {
     'derived': derived,

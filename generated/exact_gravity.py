@@ -1,6 +1,7 @@
 """GENERATED FILE - DO NOT EDIT.
 
-Model 'exact-gravity': derived model with exact point-mass gravity mu/|r| (no binomial expansion, no truncation).
+Model 'exact-gravity': derived model with exact point-mass gravity mu/|r| (no binomial expansion, no
+truncation).
 Produced by `make derive` (python -m derive) from derive/; regenerate instead
 of editing.  sympy 1.14.0.
 
@@ -46,8 +47,14 @@ GEOMETRY = "planar"  # (δx, δy, θ): the thesis plane
 ORBIT = "circular"  # the COM held on a circle of radius r0 at rate ω (Eq 3.14)
 STATE = ('delta_x', 'delta_y', 'theta', 'delta_x_dot', 'delta_y_dot', 'theta_dot')
 STATE_UNITS = ('m', 'm', 'rad', 'm/s', 'm/s', 'rad/s')
-PARAMETERS = ('m1', 'm2', 'm3', 'A1', 'A2', 'A3', 'a', 'b', 'l10', 'l20', 'E1', 'E2', 'c1', 'c2', 'CD', 'r0', 'mu', 'omega', 'omega_earth', 'rho1', 'rho2', 'rho3')
-PARAMETER_UNITS = ('kg', 'kg', 'kg', 'm^2', 'm^2', 'm^2', 'm', 'm', 'm', 'm', 'N', 'N', 'N s/m', 'N s/m', '1', 'm', 'm^3/s^2', 'rad/s', 'rad/s', 'kg/m^3', 'kg/m^3', 'kg/m^3')
+PARAMETERS = (
+    'm1', 'm2', 'm3', 'A1', 'A2', 'A3', 'a', 'b', 'l10', 'l20', 'E1', 'E2', 'c1', 'c2', 'CD', 'r0', 'mu',
+    'omega', 'omega_earth', 'rho1', 'rho2', 'rho3',
+)
+PARAMETER_UNITS = (
+    'kg', 'kg', 'kg', 'm^2', 'm^2', 'm^2', 'm', 'm', 'm', 'm', 'N', 'N', 'N s/m', 'N s/m', '1', 'm',
+    'm^3/s^2', 'rad/s', 'rad/s', 'kg/m^3', 'kg/m^3', 'kg/m^3',
+)
 FAMILIES = ('drag1', 'drag2', 'drag3', 'spring1', 'spring2', 'damper1', 'damper2')
 
 
@@ -76,7 +83,6 @@ def rhs(t, y, p, dydt):
     c2 = p[13]
     CD = p[14]
     r0 = p[15]
-    mu = p[16]
     omega = p[17]
     omega_earth = p[18]
     rho1 = p[19]
@@ -104,7 +110,9 @@ def rhs(t, y, p, dydt):
     d16 = math.sqrt(d12**2 + d15**2)
     Q_delta_x = -d1*d4
     Q_delta_y = -d2*d4
-    Q_theta = (1/2)*A1*CD*b*d10*d6*rho1*sin_theta - A1*d10*d3*d7*d9*rho1 + (1/2)*A2*CD*a*cos_theta*d15*d16*rho2 - A2*d11*d12*d16*d3*rho2
+    Q_theta = (
+            (1/2)*A1*CD*b*d10*d6*rho1*sin_theta - A1*d10*d3*d7*d9*rho1 + (1/2)*A2*CD*a*
+            cos_theta*d15*d16*rho2 - A2*d11*d12*d16*d3*rho2)
     lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
     if lambda1 > l10:  # tether 1 taut: spring1, damper1
         t1_0 = b*cos_theta
@@ -148,7 +156,9 @@ def rhs(t, y, p, dydt):
     a10 = a2*a8*r0*sin_theta
     dydt[3] = Q_delta_x*a1 + a0*delta_y_dot - a5*delta_x
     dydt[4] = Q_delta_y*a1 - a0*delta_x_dot - a5*delta_y - a5*r0
-    dydt[5] = Q_theta*a8 - a*a10*m2*math.expm1(-1.5*math.log1p(-a*a9 + a4*a6)) + a10*b*m1*math.expm1(-1.5*math.log1p(a4*a7 + a9*b))
+    dydt[5] = (
+            Q_theta*a8 - a*a10*m2*math.expm1(-1.5*math.log1p(-a*a9 + a4*a6)) + a10*b*m1*
+            math.expm1(-1.5*math.log1p(a4*a7 + a9*b)))
 
 
 @njit(cache=True)
@@ -160,9 +170,6 @@ def family_forces(y, p, out):
     delta_x_dot = y[3]
     delta_y_dot = y[4]
     theta_dot = y[5]
-    m1 = p[0]
-    m2 = p[1]
-    m3 = p[2]
     A1 = p[3]
     A2 = p[4]
     A3 = p[5]
@@ -176,7 +183,6 @@ def family_forces(y, p, out):
     c2 = p[13]
     CD = p[14]
     r0 = p[15]
-    mu = p[16]
     omega = p[17]
     omega_earth = p[18]
     rho1 = p[19]
@@ -271,25 +277,14 @@ def jacobi(y, p):
     m1 = p[0]
     m2 = p[1]
     m3 = p[2]
-    A1 = p[3]
-    A2 = p[4]
-    A3 = p[5]
     a = p[6]
     b = p[7]
     l10 = p[8]
     l20 = p[9]
     E1 = p[10]
     E2 = p[11]
-    c1 = p[12]
-    c2 = p[13]
-    CD = p[14]
     r0 = p[15]
-    mu = p[16]
     omega = p[17]
-    omega_earth = p[18]
-    rho1 = p[19]
-    rho2 = p[20]
-    rho3 = p[21]
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
     e0 = omega**2
@@ -312,7 +307,13 @@ def jacobi(y, p):
     e17 = e11*e15
     e18 = e0*e13
     e19 = e15*e6
-    h = a*cos_theta*e0*m2*r0 - b*cos_theta*e0*m1*r0 + (1/2)*delta_x_dot**2*m3 - delta_y*e1*r0 + (1/2)*delta_y_dot**2*m3 - e1*e13*math.expm1(-0.5*math.log1p(delta_y*e14 + e15*e2 + e15*e4)) + (1/2)*e10*e11*e9*m1 - e10*e12 + (1/2)*e10*e6*e9*m2 - e10*e8 + (1/2)*e11*e5*e9*m1 - e12*e5 - e18*m1*math.expm1(-0.5*math.log1p(b*e16 + e10*e17 + e17*e5)) - e18*m2*math.expm1(-0.5*math.log1p(-a*e16 + e10*e19 + e19*e5)) - e2*e3 - e3*e4 + (1/2)*e5*e6*e9*m2 - e5*e8
+    h = (
+            a*cos_theta*e0*m2*r0 - b*cos_theta*e0*m1*r0 + (1/2)*delta_x_dot**2*m3 - delta_y*e1*r0
+            + (1/2)*delta_y_dot**2*m3 - e1*e13*math.expm1(-0.5*math.log1p(delta_y*e14 + e15*e2 + e15*
+            e4)) + (1/2)*e10*e11*e9*m1 - e10*e12 + (1/2)*e10*e6*e9*m2 - e10*e8 + (1/2)*e11*e5*
+            e9*m1 - e12*e5 - e18*m1*math.expm1(-0.5*math.log1p(b*e16 + e10*e17 + e17*e5)) - e18*m2*
+            math.expm1(-0.5*math.log1p(-a*e16 + e10*e19 + e19*e5)) - e2*e3 - e3*e4 + (1/2)*e5*e6*e9*
+            m2 - e5*e8)
     lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
     if lambda1 > l10:
         h += (1/2)*E1*(-l10 + lambda1)**2/l10
@@ -347,7 +348,6 @@ def jacobian(t, y, p, J):
     c2 = p[13]
     CD = p[14]
     r0 = p[15]
-    mu = p[16]
     omega = p[17]
     omega_earth = p[18]
     rho1 = p[19]
@@ -398,7 +398,9 @@ def jacobian(t, y, p, J):
     jd40 = (1/2)*jd35
     jd41 = 1/jd28
     jd42 = (1/2)*jd27
-    jd43 = (1/2)*jd25*(2*b*cos_theta*omega - jd21*jd5 - 2*jd22) + jd42*(2*b*omega*sin_theta - jd23*jd5 - 2*jd24)
+    jd43 = (
+            (1/2)*jd25*(2*b*cos_theta*omega - jd21*jd5 - 2*jd22) + jd42*(2*b*omega*sin_theta -
+            jd23*jd5 - 2*jd24))
     jd44 = (1/2)*jd33
     jd45 = jd40*(-jd31*jd4 + jd31*jd5 + 2*jd32) + jd44*(-jd29*jd4 + jd29*jd5 + 2*jd30)
     jd46 = 1/jd36
@@ -427,10 +429,17 @@ def jacobian(t, y, p, J):
     dQ1_5 = 0
     dQ2_0 = 0
     dQ2_1 = 0
-    dQ2_2 = (1/2)*A1*CD*b*jd25*jd41*jd43*rho1*sin_theta + (1/2)*A1*CD*b*jd27*jd28*rho1*sin_theta + (1/2)*A1*CD*b*jd28*rho1*sin_theta*(b*cos_theta*omega - jd21*omega_earth - jd22) + (1/2)*A2*CD*a*cos_theta*jd35*jd45*jd46*rho2 - CD*jd39*jd40 - jd15*jd39*(-jd29*omega + jd29*omega_earth + jd30) - jd43*jd50*jd51 - jd45*jd47*jd48
+    dQ2_2 = (
+            (1/2)*A1*CD*b*jd25*jd41*jd43*rho1*sin_theta + (1/2)*A1*CD*b*jd27*jd28*rho1*
+            sin_theta + (1/2)*A1*CD*b*jd28*rho1*sin_theta*(b*cos_theta*omega - jd21*omega_earth -
+            jd22) + (1/2)*A2*CD*a*cos_theta*jd35*jd45*jd46*rho2 - CD*jd39*jd40 - jd15*jd39*
+            (-jd29*omega + jd29*omega_earth + jd30) - jd43*jd50*jd51 - jd45*jd47*jd48)
     dQ2_3 = 0
     dQ2_4 = 0
-    dQ2_5 = (1/2)*A1*CD*b*jd25*jd41*jd56*rho1*sin_theta + (1/2)*A2*CD*a*cos_theta*jd35*jd46*jd57*rho2 - jd47*jd48*jd57 - jd50*jd51*jd56 - jd52*jd53 - jd52*jd55 - jd53*jd54 - jd54*jd55
+    dQ2_5 = (
+            (1/2)*A1*CD*b*jd25*jd41*jd56*rho1*sin_theta + (1/2)*A2*CD*a*cos_theta*jd35*jd46*
+            jd57*rho2 - jd47*jd48*jd57 - jd50*jd51*jd56 - jd52*jd53 - jd52*jd55 - jd53*jd54 - jd54*
+            jd55)
     lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
     if lambda1 > l10:
         jt1_0 = b*cos_theta
@@ -487,9 +496,19 @@ def jacobian(t, y, p, J):
         dQ1_3 += 0
         dQ1_4 += jt1_29
         dQ1_5 += jt1_36
-        dQ2_0 += E1*b*cos_theta*jt1_7*jt1_9 + E1*b*jt1_1*jt1_13*jt1_4*jt1_9*sin_theta + E1*b*jt1_1*jt1_16*jt1_17*jt1_8*sin_theta - jt1_0*jt1_15 - jt1_16*jt1_18*jt1_26 - jt1_20*jt1_3
-        dQ2_1 += E1*b*jt1_1*jt1_17*jt1_21*jt1_8*sin_theta + E1*b*jt1_13*jt1_2*jt1_9*sin_theta - jt1_0*jt1_20 - jt1_1*jt1_14*jt1_26 - jt1_18*jt1_21*jt1_26 - jt1_34
-        dQ2_2 += E1*b*cos_theta*jt1_1*jt1_7*jt1_9 + E1*b*jt1_1*jt1_13*jt1_28*jt1_9*sin_theta + E1*b*jt1_1*jt1_17*jt1_27*jt1_8*sin_theta + E1*b*jt1_4*jt1_7*jt1_9*sin_theta + b*c1*cos_theta*jt1_25 - jt1_14*jt1_26*jt1_28 - jt1_18*jt1_26*jt1_27 - jt1_3*jt1_33 - jt1_30*(delta_x*omega + delta_y_dot - jt1_24 + jt1_3*theta_dot) - jt1_35*(delta_x_dot - delta_y*omega + jt1_32) - jt1_37*jt1_39 - jt1_39*jt1_40
+        dQ2_0 += (
+                E1*b*cos_theta*jt1_7*jt1_9 + E1*b*jt1_1*jt1_13*jt1_4*jt1_9*sin_theta + E1*b*
+                jt1_1*jt1_16*jt1_17*jt1_8*sin_theta - jt1_0*jt1_15 - jt1_16*jt1_18*jt1_26 - jt1_20*
+                jt1_3)
+        dQ2_1 += (
+                E1*b*jt1_1*jt1_17*jt1_21*jt1_8*sin_theta + E1*b*jt1_13*jt1_2*jt1_9*sin_theta -
+                jt1_0*jt1_20 - jt1_1*jt1_14*jt1_26 - jt1_18*jt1_21*jt1_26 - jt1_34)
+        dQ2_2 += (
+                E1*b*cos_theta*jt1_1*jt1_7*jt1_9 + E1*b*jt1_1*jt1_13*jt1_28*jt1_9*sin_theta + E1*
+                b*jt1_1*jt1_17*jt1_27*jt1_8*sin_theta + E1*b*jt1_4*jt1_7*jt1_9*sin_theta + b*c1*
+                cos_theta*jt1_25 - jt1_14*jt1_26*jt1_28 - jt1_18*jt1_26*jt1_27 - jt1_3*jt1_33 - jt1_30*
+                (delta_x*omega + delta_y_dot - jt1_24 + jt1_3*theta_dot) - jt1_35*(delta_x_dot - delta_y*
+                omega + jt1_32) - jt1_37*jt1_39 - jt1_39*jt1_40)
         dQ2_3 += jt1_30
         dQ2_4 += jt1_36
         dQ2_5 += -jt1_37*jt1_41 - jt1_40*jt1_41
@@ -554,7 +573,12 @@ def jacobian(t, y, p, J):
         dQ1_5 += jt2_36
         dQ2_0 += jt2_0*jt2_19 + jt2_20*jt2_4 - jt2_21*jt2_38 - jt2_25 + jt2_26*jt2_37 - jt2_37*jt2_38
         dQ2_1 += jt2_0*jt2_20 + jt2_26*jt2_35 + jt2_26*jt2_39 - jt2_32*jt2_4 + jt2_34 - jt2_38*jt2_39
-        dQ2_2 += E2*a*cos_theta*jt2_10*jt2_17*jt2_27*jt2_6 + E2*a*cos_theta*jt2_14*jt2_28*jt2_6*jt2_9 + a*c2*cos_theta*(delta_x*omega + delta_y_dot + jt2_23) + a*c2*jt2_33*sin_theta + a*c2*sin_theta*(delta_x_dot - delta_y*omega - jt2_33) - jt2_0*jt2_24 - jt2_15*jt2_28*jt2_38 - jt2_18*jt2_27*jt2_38 - jt2_2*jt2_25 - jt2_34*jt2_6 - jt2_40*jt2_42 - jt2_42*jt2_43
+        dQ2_2 += (
+                E2*a*cos_theta*jt2_10*jt2_17*jt2_27*jt2_6 + E2*a*cos_theta*jt2_14*jt2_28*jt2_6*
+                jt2_9 + a*c2*cos_theta*(delta_x*omega + delta_y_dot + jt2_23) + a*c2*jt2_33*sin_theta
+                + a*c2*sin_theta*(delta_x_dot - delta_y*omega - jt2_33) - jt2_0*jt2_24 - jt2_15*jt2_28*
+                jt2_38 - jt2_18*jt2_27*jt2_38 - jt2_2*jt2_25 - jt2_34*jt2_6 - jt2_40*jt2_42 - jt2_42*
+                jt2_43)
         dQ2_3 += jt2_30
         dQ2_4 += jt2_36
         dQ2_5 += -jt2_40*jt2_44 - jt2_43*jt2_44
@@ -601,7 +625,9 @@ def jacobian(t, y, p, J):
     J[4, 5] = dQ1_5*ja0
     J[5, 0] = dQ2_0*ja17
     J[5, 1] = dQ2_1*ja17
-    J[5, 2] = -a*cos_theta*ja20*ja21*m2*r0 + b*cos_theta*ja1*ja17*ja23*m1*r0 + dQ2_2*ja17 - ja14*ja24*(-3/2*ja20 - 3/2)/(ja19 + 1) - ja16*ja24*(-3/2*ja23 - 3/2)/(ja22 + 1)
+    J[5, 2] = (
+            -a*cos_theta*ja20*ja21*m2*r0 + b*cos_theta*ja1*ja17*ja23*m1*r0 + dQ2_2*ja17 - ja14*
+            ja24*(-3/2*ja20 - 3/2)/(ja19 + 1) - ja16*ja24*(-3/2*ja23 - 3/2)/(ja22 + 1))
     J[5, 3] = dQ2_3*ja17
     J[5, 4] = dQ2_4*ja17
     J[5, 5] = dQ2_5*ja17
@@ -613,31 +639,10 @@ def tether_margins(y, p, g):
     delta_x = y[0]
     delta_y = y[1]
     theta = y[2]
-    delta_x_dot = y[3]
-    delta_y_dot = y[4]
-    theta_dot = y[5]
-    m1 = p[0]
-    m2 = p[1]
-    m3 = p[2]
-    A1 = p[3]
-    A2 = p[4]
-    A3 = p[5]
     a = p[6]
     b = p[7]
     l10 = p[8]
     l20 = p[9]
-    E1 = p[10]
-    E2 = p[11]
-    c1 = p[12]
-    c2 = p[13]
-    CD = p[14]
-    r0 = p[15]
-    mu = p[16]
-    omega = p[17]
-    omega_earth = p[18]
-    rho1 = p[19]
-    rho2 = p[20]
-    rho3 = p[21]
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
     g[0] = math.hypot(b*sin_theta - delta_x, b*cos_theta - delta_y) - l10
@@ -646,35 +651,18 @@ def tether_margins(y, p, g):
 
 @njit(cache=True, inline="always")
 def body_radii(y, p):
-    """(|R_1|, |R_2|, |R_3|) [m]: tip-mass, bus, balloon from Earth's centre (Eqs 3.10-3.12)."""
+    """(|R_1|, |R_2|, |R_3|) [m]: tip-mass, bus, balloon from Earth's centre.
+
+    Positions (Eqs 3.10-3.12).
+    """
     delta_x = y[0]
     delta_y = y[1]
     theta = y[2]
-    delta_x_dot = y[3]
-    delta_y_dot = y[4]
-    theta_dot = y[5]
-    m1 = p[0]
-    m2 = p[1]
-    m3 = p[2]
-    A1 = p[3]
-    A2 = p[4]
-    A3 = p[5]
     a = p[6]
     b = p[7]
-    l10 = p[8]
-    l20 = p[9]
-    E1 = p[10]
-    E2 = p[11]
-    c1 = p[12]
-    c2 = p[13]
-    CD = p[14]
     r0 = p[15]
-    mu = p[16]
-    omega = p[17]
-    omega_earth = p[18]
-    rho1 = p[19]
-    rho2 = p[20]
-    rho3 = p[21]
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
-    return (math.hypot(b*sin_theta, b*cos_theta + r0), math.hypot(-a*sin_theta, -a*cos_theta + r0), math.hypot(delta_x, delta_y + r0))
+    return (
+            math.hypot(b*sin_theta, b*cos_theta + r0), math.hypot(-a*sin_theta, -a*cos_theta + r0),
+            math.hypot(delta_x, delta_y + r0))

@@ -35,8 +35,14 @@ Parameter vector p (index, name, unit, meaning):
 
 STATE = ('delta_x', 'delta_y', 'theta', 'delta_x_dot', 'delta_y_dot', 'theta_dot')
 STATE_UNITS = ('m', 'm', 'rad', 'm/s', 'm/s', 'rad/s')
-PARAMETERS = ('m1', 'm2', 'm3', 'A1', 'A2', 'A3', 'a', 'b', 'l10', 'l20', 'E1', 'E2', 'c1', 'c2', 'CD', 'r0', 'mu', 'omega', 'omega_earth', 'rho1', 'rho2', 'rho3')
-PARAMETER_UNITS = ('kg', 'kg', 'kg', 'm^2', 'm^2', 'm^2', 'm', 'm', 'm', 'm', 'N', 'N', 'N s/m', 'N s/m', '1', 'm', 'm^3/s^2', 'rad/s', 'rad/s', 'kg/m^3', 'kg/m^3', 'kg/m^3')
+PARAMETERS = (
+    'm1', 'm2', 'm3', 'A1', 'A2', 'A3', 'a', 'b', 'l10', 'l20', 'E1', 'E2', 'c1', 'c2', 'CD', 'r0', 'mu',
+    'omega', 'omega_earth', 'rho1', 'rho2', 'rho3',
+)
+PARAMETER_UNITS = (
+    'kg', 'kg', 'kg', 'm^2', 'm^2', 'm^2', 'm', 'm', 'm', 'm', 'N', 'N', 'N s/m', 'N s/m', '1', 'm',
+    'm^3/s^2', 'rad/s', 'rad/s', 'kg/m^3', 'kg/m^3', 'kg/m^3',
+)
 FAMILIES = ('drag1', 'drag2', 'drag3', 'spring1', 'spring2', 'damper1', 'damper2')
 
 Y_DELTA_X = 0

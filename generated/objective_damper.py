@@ -46,8 +46,14 @@ GEOMETRY = "planar"  # (δx, δy, θ): the thesis plane
 ORBIT = "circular"  # the COM held on a circle of radius r0 at rate ω (Eq 3.14)
 STATE = ('delta_x', 'delta_y', 'theta', 'delta_x_dot', 'delta_y_dot', 'theta_dot')
 STATE_UNITS = ('m', 'm', 'rad', 'm/s', 'm/s', 'rad/s')
-PARAMETERS = ('m1', 'm2', 'm3', 'A1', 'A2', 'A3', 'a', 'b', 'l10', 'l20', 'E1', 'E2', 'c1', 'c2', 'CD', 'r0', 'mu', 'omega', 'omega_earth', 'rho1', 'rho2', 'rho3')
-PARAMETER_UNITS = ('kg', 'kg', 'kg', 'm^2', 'm^2', 'm^2', 'm', 'm', 'm', 'm', 'N', 'N', 'N s/m', 'N s/m', '1', 'm', 'm^3/s^2', 'rad/s', 'rad/s', 'kg/m^3', 'kg/m^3', 'kg/m^3')
+PARAMETERS = (
+    'm1', 'm2', 'm3', 'A1', 'A2', 'A3', 'a', 'b', 'l10', 'l20', 'E1', 'E2', 'c1', 'c2', 'CD', 'r0', 'mu',
+    'omega', 'omega_earth', 'rho1', 'rho2', 'rho3',
+)
+PARAMETER_UNITS = (
+    'kg', 'kg', 'kg', 'm^2', 'm^2', 'm^2', 'm', 'm', 'm', 'm', 'N', 'N', 'N s/m', 'N s/m', '1', 'm',
+    'm^3/s^2', 'rad/s', 'rad/s', 'kg/m^3', 'kg/m^3', 'kg/m^3',
+)
 FAMILIES = ('drag1', 'drag2', 'drag3', 'spring1', 'spring2', 'damper1', 'damper2')
 
 
@@ -76,7 +82,6 @@ def rhs(t, y, p, dydt):
     c2 = p[13]
     CD = p[14]
     r0 = p[15]
-    mu = p[16]
     omega = p[17]
     omega_earth = p[18]
     rho1 = p[19]
@@ -104,7 +109,9 @@ def rhs(t, y, p, dydt):
     d16 = math.sqrt(d12**2 + d15**2)
     Q_delta_x = -d1*d4
     Q_delta_y = -d2*d4
-    Q_theta = (1/2)*A1*CD*b*d10*d6*rho1*sin_theta - A1*d10*d3*d7*d9*rho1 + (1/2)*A2*CD*a*cos_theta*d15*d16*rho2 - A2*d11*d12*d16*d3*rho2
+    Q_theta = (
+            (1/2)*A1*CD*b*d10*d6*rho1*sin_theta - A1*d10*d3*d7*d9*rho1 + (1/2)*A2*CD*a*
+            cos_theta*d15*d16*rho2 - A2*d11*d12*d16*d3*rho2)
     lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
     if lambda1 > l10:  # tether 1 taut: spring1, damper1
         t1_0 = 1/lambda1
@@ -114,7 +121,9 @@ def rhs(t, y, p, dydt):
         t1_4 = E1*t1_3
         t1_5 = t1_2*t1_4
         t1_6 = b*cos_theta
-        t1_7 = b*delta_y*sin_theta*t1_0*theta_dot + delta_x*delta_x_dot*t1_0 - delta_x*t1_0*t1_6*theta_dot - delta_x_dot*t1_0*t1_1 + delta_y*delta_y_dot*t1_0 - delta_y_dot*t1_0*t1_6
+        t1_7 = (
+                b*delta_y*sin_theta*t1_0*theta_dot + delta_x*delta_x_dot*t1_0 - delta_x*t1_0*t1_6*
+                theta_dot - delta_x_dot*t1_0*t1_1 + delta_y*delta_y_dot*t1_0 - delta_y_dot*t1_0*t1_6)
         t1_8 = c1*t1_7
         t1_9 = t1_2*t1_8
         t1_10 = -delta_y + t1_6
@@ -133,7 +142,9 @@ def rhs(t, y, p, dydt):
         t2_6 = delta_y_dot*t2_0
         t2_7 = a*cos_theta
         t2_8 = t2_0*theta_dot
-        t2_9 = c2*(delta_x*t2_5 + delta_x*t2_7*t2_8 - delta_y*t2_1*t2_8 + delta_y*t2_6 + t2_1*t2_5 + t2_6*t2_7)
+        t2_9 = (
+                c2*(delta_x*t2_5 + delta_x*t2_7*t2_8 - delta_y*t2_1*t2_8 + delta_y*t2_6 + t2_1*t2_5 +
+                t2_6*t2_7))
         t2_10 = t2_2*t2_9
         t2_11 = t2_0*(-delta_y - t2_7)
         t2_12 = t2_11*t2_3
@@ -172,9 +183,6 @@ def family_forces(y, p, out):
     delta_x_dot = y[3]
     delta_y_dot = y[4]
     theta_dot = y[5]
-    m1 = p[0]
-    m2 = p[1]
-    m3 = p[2]
     A1 = p[3]
     A2 = p[4]
     A3 = p[5]
@@ -188,7 +196,6 @@ def family_forces(y, p, out):
     c2 = p[13]
     CD = p[14]
     r0 = p[15]
-    mu = p[16]
     omega = p[17]
     omega_earth = p[18]
     rho1 = p[19]
@@ -253,7 +260,9 @@ def family_forces(y, p, out):
         f5_0 = b*sin_theta
         f5_1 = 1/lambda1
         f5_2 = b*cos_theta
-        f5_3 = b*delta_y*f5_1*sin_theta*theta_dot + delta_x*delta_x_dot*f5_1 - delta_x*f5_1*f5_2*theta_dot - delta_x_dot*f5_0*f5_1 + delta_y*delta_y_dot*f5_1 - delta_y_dot*f5_1*f5_2
+        f5_3 = (
+                b*delta_y*f5_1*sin_theta*theta_dot + delta_x*delta_x_dot*f5_1 - delta_x*f5_1*f5_2*
+                theta_dot - delta_x_dot*f5_0*f5_1 + delta_y*delta_y_dot*f5_1 - delta_y_dot*f5_1*f5_2)
         f5_4 = c1*f5_1*f5_3
         f5_5 = f5_4*(-delta_x + f5_0)
         f5_6 = -delta_y + f5_2
@@ -268,7 +277,9 @@ def family_forces(y, p, out):
         f6_3 = delta_y_dot*f6_1
         f6_4 = a*cos_theta
         f6_5 = f6_1*theta_dot
-        f6_6 = c2*f6_1*(delta_x*f6_2 + delta_x*f6_4*f6_5 - delta_y*f6_0*f6_5 + delta_y*f6_3 + f6_0*f6_2 + f6_3*f6_4)
+        f6_6 = (
+                c2*f6_1*(delta_x*f6_2 + delta_x*f6_4*f6_5 - delta_y*f6_0*f6_5 + delta_y*f6_3 + f6_0*
+                f6_2 + f6_3*f6_4))
         f6_7 = f6_6*(-delta_x - f6_0)
         f6_8 = f6_6*(-delta_y - f6_4)
         out[6, 0] = f6_7
@@ -291,25 +302,14 @@ def jacobi(y, p):
     m1 = p[0]
     m2 = p[1]
     m3 = p[2]
-    A1 = p[3]
-    A2 = p[4]
-    A3 = p[5]
     a = p[6]
     b = p[7]
     l10 = p[8]
     l20 = p[9]
     E1 = p[10]
     E2 = p[11]
-    c1 = p[12]
-    c2 = p[13]
-    CD = p[14]
     r0 = p[15]
-    mu = p[16]
     omega = p[17]
-    omega_earth = p[18]
-    rho1 = p[19]
-    rho2 = p[20]
-    rho3 = p[21]
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
     e0 = (1/2)*m3
@@ -330,7 +330,10 @@ def jacobi(y, p):
     e15 = a**3*m2
     e16 = b**3*m1
     e17 = cos_theta*e13*e8
-    h = -delta_x**2*delta_y*e12 + delta_x_dot**2*e0 - delta_y**3*e12 - delta_y**2*e2 + delta_y_dot**2*e0 - e10*e5 + e10*e7 + e10*e9 + e14*e15 - e14*e16 + e15*e17 - e16*e17 - e3*e5 + e3*e7 + e3*e9
+    h = (
+            -delta_x**2*delta_y*e12 + delta_x_dot**2*e0 - delta_y**3*e12 - delta_y**2*e2 +
+            delta_y_dot**2*e0 - e10*e5 + e10*e7 + e10*e9 + e14*e15 - e14*e16 + e15*e17 - e16*e17 -
+            e3*e5 + e3*e7 + e3*e9)
     lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
     if lambda1 > l10:
         h += (1/2)*E1*(-l10 + lambda1)**2/l10
@@ -365,7 +368,6 @@ def jacobian(t, y, p, J):
     c2 = p[13]
     CD = p[14]
     r0 = p[15]
-    mu = p[16]
     omega = p[17]
     omega_earth = p[18]
     rho1 = p[19]
@@ -416,7 +418,9 @@ def jacobian(t, y, p, J):
     jd40 = (1/2)*jd35
     jd41 = 1/jd28
     jd42 = (1/2)*jd27
-    jd43 = (1/2)*jd25*(2*b*cos_theta*omega - jd21*jd5 - 2*jd22) + jd42*(2*b*omega*sin_theta - jd23*jd5 - 2*jd24)
+    jd43 = (
+            (1/2)*jd25*(2*b*cos_theta*omega - jd21*jd5 - 2*jd22) + jd42*(2*b*omega*sin_theta -
+            jd23*jd5 - 2*jd24))
     jd44 = (1/2)*jd33
     jd45 = jd40*(-jd31*jd4 + jd31*jd5 + 2*jd32) + jd44*(-jd29*jd4 + jd29*jd5 + 2*jd30)
     jd46 = 1/jd36
@@ -445,10 +449,17 @@ def jacobian(t, y, p, J):
     dQ1_5 = 0
     dQ2_0 = 0
     dQ2_1 = 0
-    dQ2_2 = (1/2)*A1*CD*b*jd25*jd41*jd43*rho1*sin_theta + (1/2)*A1*CD*b*jd27*jd28*rho1*sin_theta + (1/2)*A1*CD*b*jd28*rho1*sin_theta*(b*cos_theta*omega - jd21*omega_earth - jd22) + (1/2)*A2*CD*a*cos_theta*jd35*jd45*jd46*rho2 - CD*jd39*jd40 - jd15*jd39*(-jd29*omega + jd29*omega_earth + jd30) - jd43*jd50*jd51 - jd45*jd47*jd48
+    dQ2_2 = (
+            (1/2)*A1*CD*b*jd25*jd41*jd43*rho1*sin_theta + (1/2)*A1*CD*b*jd27*jd28*rho1*
+            sin_theta + (1/2)*A1*CD*b*jd28*rho1*sin_theta*(b*cos_theta*omega - jd21*omega_earth -
+            jd22) + (1/2)*A2*CD*a*cos_theta*jd35*jd45*jd46*rho2 - CD*jd39*jd40 - jd15*jd39*
+            (-jd29*omega + jd29*omega_earth + jd30) - jd43*jd50*jd51 - jd45*jd47*jd48)
     dQ2_3 = 0
     dQ2_4 = 0
-    dQ2_5 = (1/2)*A1*CD*b*jd25*jd41*jd56*rho1*sin_theta + (1/2)*A2*CD*a*cos_theta*jd35*jd46*jd57*rho2 - jd47*jd48*jd57 - jd50*jd51*jd56 - jd52*jd53 - jd52*jd55 - jd53*jd54 - jd54*jd55
+    dQ2_5 = (
+            (1/2)*A1*CD*b*jd25*jd41*jd56*rho1*sin_theta + (1/2)*A2*CD*a*cos_theta*jd35*jd46*
+            jd57*rho2 - jd47*jd48*jd57 - jd50*jd51*jd56 - jd52*jd53 - jd52*jd55 - jd53*jd54 - jd54*
+            jd55)
     lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
     if lambda1 > l10:
         jt1_0 = 1/l10
@@ -469,7 +480,9 @@ def jacobian(t, y, p, J):
         jt1_15 = delta_x_dot*jt1_13
         jt1_16 = delta_x*jt1_13
         jt1_17 = jt1_16*jt1_3
-        jt1_18 = b*delta_y*jt1_13*sin_theta*theta_dot + delta_x*delta_x_dot*jt1_13 + delta_y*delta_y_dot*jt1_13 - jt1_14*jt1_3 - jt1_15*jt1_6 - jt1_17*theta_dot
+        jt1_18 = (
+                b*delta_y*jt1_13*sin_theta*theta_dot + delta_x*delta_x_dot*jt1_13 + delta_y*
+                delta_y_dot*jt1_13 - jt1_14*jt1_3 - jt1_15*jt1_6 - jt1_17*theta_dot)
         jt1_19 = c1*jt1_18
         jt1_20 = jt1_11*jt1_19
         jt1_21 = jt1_13*jt1_3
@@ -477,7 +490,10 @@ def jacobian(t, y, p, J):
         jt1_23 = jt1_10*jt1_22
         jt1_24 = jt1_10*jt1_7
         jt1_25 = delta_x_dot*jt1_6
-        jt1_26 = b*delta_y*jt1_10*jt1_7*sin_theta*theta_dot + delta_x*delta_x_dot*jt1_10*jt1_7 - delta_x*jt1_23*theta_dot + delta_x_dot*jt1_13 + delta_y*delta_y_dot*jt1_10*jt1_7 - delta_y_dot*jt1_23 - jt1_21*theta_dot - jt1_24*jt1_25
+        jt1_26 = (
+                b*delta_y*jt1_10*jt1_7*sin_theta*theta_dot + delta_x*delta_x_dot*jt1_10*jt1_7 -
+                delta_x*jt1_23*theta_dot + delta_x_dot*jt1_13 + delta_y*delta_y_dot*jt1_10*jt1_7 -
+                delta_y_dot*jt1_23 - jt1_21*theta_dot - jt1_24*jt1_25)
         jt1_27 = c1*jt1_13
         jt1_28 = jt1_27*jt1_7
         jt1_29 = -jt1_7
@@ -496,7 +512,9 @@ def jacobian(t, y, p, J):
         jt1_42 = jt1_10*jt1_41
         jt1_43 = jt1_3*theta_dot
         jt1_44 = delta_x*jt1_43
-        jt1_45 = -delta_x_dot*jt1_42 + delta_y*jt1_42*theta_dot + jt1_14 + jt1_36*theta_dot + jt1_37*jt1_38 + jt1_38*jt1_39 - jt1_38*jt1_40 - jt1_38*jt1_44
+        jt1_45 = (
+                -delta_x_dot*jt1_42 + delta_y*jt1_42*theta_dot + jt1_14 + jt1_36*theta_dot + jt1_37*
+                jt1_38 + jt1_38*jt1_39 - jt1_38*jt1_40 - jt1_38*jt1_44)
         jt1_46 = -jt1_4
         jt1_47 = jt1_24*jt1_4
         jt1_48 = jt1_19*jt1_47 + jt1_2*jt1_47
@@ -504,7 +522,9 @@ def jacobian(t, y, p, J):
         jt1_50 = -b*jt1_4*sin_theta + jt1_22
         jt1_51 = -jt1_50
         jt1_52 = jt1_10*jt1_51
-        jt1_53 = delta_y*jt1_13*jt1_43 + delta_y*jt1_49*jt1_52 + jt1_14*jt1_6 - jt1_15*jt1_3 + jt1_16*jt1_49 - jt1_25*jt1_52 + jt1_37*jt1_52 + jt1_39*jt1_52 - jt1_40*jt1_52 - jt1_44*jt1_52
+        jt1_53 = (
+                delta_y*jt1_13*jt1_43 + delta_y*jt1_49*jt1_52 + jt1_14*jt1_6 - jt1_15*jt1_3 + jt1_16*
+                jt1_49 - jt1_25*jt1_52 + jt1_37*jt1_52 + jt1_39*jt1_52 - jt1_40*jt1_52 - jt1_44*jt1_52)
         jt1_54 = jt1_24*jt1_51
         jt1_55 = jt1_3*jt1_33 + jt1_3*jt1_34
         jt1_56 = delta_x*jt1_13 - jt1_36
@@ -538,9 +558,20 @@ def jacobian(t, y, p, J):
         dQ1_3 += jt1_56*jt1_59
         dQ1_4 += jt1_57*jt1_59
         dQ1_5 += jt1_58*jt1_59
-        dQ2_0 += -jt1_12*jt1_3 + jt1_19*jt1_67 + jt1_2*jt1_67 - jt1_20*jt1_3 - jt1_22*jt1_65 - jt1_22*jt1_66 + jt1_41*jt1_65 + jt1_41*jt1_66 + jt1_55
-        dQ2_1 += E1*b*jt1_0*jt1_30*jt1_4*jt1_46*sin_theta + E1*b*jt1_1*jt1_10*jt1_5*sin_theta + b*c1*jt1_10*jt1_18*jt1_5*sin_theta + b*c1*jt1_13*jt1_4*jt1_45*sin_theta - jt1_19*jt1_68 - jt1_2*jt1_68 - jt1_22*jt1_27*jt1_45 - jt1_22*jt1_31*jt1_46 - jt1_62 - jt1_64
-        dQ2_2 += E1*b*cos_theta*jt1_1*jt1_13*jt1_4 + E1*b*jt1_0*jt1_30*jt1_4*jt1_50*sin_theta + E1*b*jt1_1*jt1_10*jt1_4*jt1_51*sin_theta + E1*b*jt1_1*jt1_13*jt1_7*sin_theta + b*c1*cos_theta*jt1_13*jt1_18*jt1_4 + b*c1*jt1_10*jt1_18*jt1_4*jt1_51*sin_theta + b*c1*jt1_13*jt1_18*jt1_7*sin_theta + b*c1*jt1_13*jt1_4*jt1_53*sin_theta - jt1_19*jt1_73 - jt1_2*jt1_73 - jt1_22*jt1_27*jt1_53 - jt1_22*jt1_31*jt1_50 - jt1_69*jt1_71 - jt1_69*jt1_74 - jt1_71*jt1_72 - jt1_72*jt1_74
+        dQ2_0 += (
+                -jt1_12*jt1_3 + jt1_19*jt1_67 + jt1_2*jt1_67 - jt1_20*jt1_3 - jt1_22*jt1_65 - jt1_22*
+                jt1_66 + jt1_41*jt1_65 + jt1_41*jt1_66 + jt1_55)
+        dQ2_1 += (
+                E1*b*jt1_0*jt1_30*jt1_4*jt1_46*sin_theta + E1*b*jt1_1*jt1_10*jt1_5*sin_theta + b*
+                c1*jt1_10*jt1_18*jt1_5*sin_theta + b*c1*jt1_13*jt1_4*jt1_45*sin_theta - jt1_19*
+                jt1_68 - jt1_2*jt1_68 - jt1_22*jt1_27*jt1_45 - jt1_22*jt1_31*jt1_46 - jt1_62 - jt1_64)
+        dQ2_2 += (
+                E1*b*cos_theta*jt1_1*jt1_13*jt1_4 + E1*b*jt1_0*jt1_30*jt1_4*jt1_50*sin_theta + E1*
+                b*jt1_1*jt1_10*jt1_4*jt1_51*sin_theta + E1*b*jt1_1*jt1_13*jt1_7*sin_theta + b*c1*
+                cos_theta*jt1_13*jt1_18*jt1_4 + b*c1*jt1_10*jt1_18*jt1_4*jt1_51*sin_theta + b*c1*
+                jt1_13*jt1_18*jt1_7*sin_theta + b*c1*jt1_13*jt1_4*jt1_53*sin_theta - jt1_19*jt1_73 -
+                jt1_2*jt1_73 - jt1_22*jt1_27*jt1_53 - jt1_22*jt1_31*jt1_50 - jt1_69*jt1_71 - jt1_69*
+                jt1_74 - jt1_71*jt1_72 - jt1_72*jt1_74)
         dQ2_3 += b*c1*jt1_13*jt1_4*jt1_56*sin_theta - jt1_22*jt1_27*jt1_56
         dQ2_4 += b*c1*jt1_13*jt1_4*jt1_57*sin_theta - jt1_22*jt1_27*jt1_57
         dQ2_5 += b*c1*jt1_13*jt1_4*jt1_58*sin_theta - jt1_22*jt1_27*jt1_58
@@ -567,7 +598,9 @@ def jacobian(t, y, p, J):
         jt2_18 = jt2_17*jt2_3
         jt2_19 = delta_y*jt2_14
         jt2_20 = jt2_19*jt2_7
-        jt2_21 = delta_x*jt2_15 + delta_y*jt2_16 + jt2_15*jt2_7 + jt2_16*jt2_3 + jt2_18*theta_dot - jt2_20*theta_dot
+        jt2_21 = (
+                delta_x*jt2_15 + delta_y*jt2_16 + jt2_15*jt2_7 + jt2_16*jt2_3 + jt2_18*theta_dot -
+                jt2_20*theta_dot)
         jt2_22 = c2*jt2_21
         jt2_23 = jt2_14*jt2_3
         jt2_24 = jt2_12*jt2_9
@@ -578,7 +611,9 @@ def jacobian(t, y, p, J):
         jt2_29 = delta_x_dot*jt2_7
         jt2_30 = jt2_7*theta_dot
         jt2_31 = delta_y*jt2_30
-        jt2_32 = delta_x*jt2_28*theta_dot + delta_y_dot*jt2_28 + jt2_15 + jt2_23*theta_dot + jt2_24*jt2_25 + jt2_24*jt2_26 + jt2_24*jt2_29 - jt2_24*jt2_31
+        jt2_32 = (
+                delta_x*jt2_28*theta_dot + delta_y_dot*jt2_28 + jt2_15 + jt2_23*theta_dot + jt2_24*
+                jt2_25 + jt2_24*jt2_26 + jt2_24*jt2_29 - jt2_24*jt2_31)
         jt2_33 = c2*jt2_14
         jt2_34 = jt2_33*jt2_9
         jt2_35 = 1/jt2_11
@@ -594,7 +629,9 @@ def jacobian(t, y, p, J):
         jt2_45 = jt2_12*jt2_44
         jt2_46 = jt2_3*theta_dot
         jt2_47 = delta_x*jt2_46
-        jt2_48 = delta_x_dot*jt2_45 - delta_y*jt2_45*theta_dot + jt2_16 + jt2_25*jt2_42 + jt2_26*jt2_42 - jt2_41*theta_dot + jt2_42*jt2_43 + jt2_42*jt2_47
+        jt2_48 = (
+                delta_x_dot*jt2_45 - delta_y*jt2_45*theta_dot + jt2_16 + jt2_25*jt2_42 + jt2_26*jt2_42 -
+                jt2_41*theta_dot + jt2_42*jt2_43 + jt2_42*jt2_47)
         jt2_49 = jt2_24*jt2_5
         jt2_50 = jt2_2*jt2_49 + jt2_22*jt2_49
         jt2_51 = jt2_3*jt2_38
@@ -603,7 +640,9 @@ def jacobian(t, y, p, J):
         jt2_54 = jt2_24*jt2_52
         jt2_55 = jt2_3*jt2_39
         jt2_56 = jt2_12*jt2_52
-        jt2_57 = jt2_15*jt2_3 - jt2_16*jt2_7 - jt2_17*jt2_30 - jt2_19*jt2_46 + jt2_25*jt2_56 + jt2_26*jt2_56 + jt2_29*jt2_56 - jt2_31*jt2_56 + jt2_43*jt2_56 + jt2_47*jt2_56
+        jt2_57 = (
+                jt2_15*jt2_3 - jt2_16*jt2_7 - jt2_17*jt2_30 - jt2_19*jt2_46 + jt2_25*jt2_56 + jt2_26*
+                jt2_56 + jt2_29*jt2_56 - jt2_31*jt2_56 + jt2_43*jt2_56 + jt2_47*jt2_56)
         jt2_58 = jt2_17 + jt2_41
         jt2_59 = jt2_19 + jt2_23
         jt2_60 = jt2_18 - jt2_20
@@ -641,9 +680,19 @@ def jacobian(t, y, p, J):
         dQ1_3 += jt2_58*jt2_61
         dQ1_4 += jt2_59*jt2_61
         dQ1_5 += jt2_60*jt2_61
-        dQ2_0 += E2*a*cos_theta*jt2_0*jt2_35*jt2_8*jt2_9 + E2*a*cos_theta*jt2_1*jt2_10*jt2_12 + a*c2*cos_theta*jt2_10*jt2_12*jt2_21 + a*c2*cos_theta*jt2_14*jt2_32*jt2_9 - jt2_2*jt2_70 - jt2_22*jt2_70 - jt2_32*jt2_33*jt2_44 - jt2_36*jt2_44*jt2_8 - jt2_51 - jt2_55
-        dQ2_1 += jt2_2*jt2_73 + jt2_22*jt2_73 + jt2_27*jt2_71 + jt2_27*jt2_72 - jt2_44*jt2_71 - jt2_44*jt2_72 - jt2_64*jt2_7 - jt2_65*jt2_7 + jt2_69
-        dQ2_2 += E2*a*cos_theta*jt2_0*jt2_35*jt2_53*jt2_9 + E2*a*cos_theta*jt2_1*jt2_12*jt2_52*jt2_9 + a*c2*cos_theta*jt2_12*jt2_21*jt2_52*jt2_9 + a*c2*cos_theta*jt2_14*jt2_57*jt2_9 - jt2_2*jt2_78 - jt2_22*jt2_78 - jt2_33*jt2_44*jt2_57 - jt2_36*jt2_44*jt2_53 - jt2_5*jt2_51 - jt2_5*jt2_55 - jt2_67*jt2_9 - jt2_68*jt2_9 - jt2_74*jt2_76 - jt2_74*jt2_79 - jt2_76*jt2_77 - jt2_77*jt2_79
+        dQ2_0 += (
+                E2*a*cos_theta*jt2_0*jt2_35*jt2_8*jt2_9 + E2*a*cos_theta*jt2_1*jt2_10*jt2_12 + a*
+                c2*cos_theta*jt2_10*jt2_12*jt2_21 + a*c2*cos_theta*jt2_14*jt2_32*jt2_9 - jt2_2*
+                jt2_70 - jt2_22*jt2_70 - jt2_32*jt2_33*jt2_44 - jt2_36*jt2_44*jt2_8 - jt2_51 - jt2_55)
+        dQ2_1 += (
+                jt2_2*jt2_73 + jt2_22*jt2_73 + jt2_27*jt2_71 + jt2_27*jt2_72 - jt2_44*jt2_71 - jt2_44*
+                jt2_72 - jt2_64*jt2_7 - jt2_65*jt2_7 + jt2_69)
+        dQ2_2 += (
+                E2*a*cos_theta*jt2_0*jt2_35*jt2_53*jt2_9 + E2*a*cos_theta*jt2_1*jt2_12*jt2_52*
+                jt2_9 + a*c2*cos_theta*jt2_12*jt2_21*jt2_52*jt2_9 + a*c2*cos_theta*jt2_14*jt2_57*
+                jt2_9 - jt2_2*jt2_78 - jt2_22*jt2_78 - jt2_33*jt2_44*jt2_57 - jt2_36*jt2_44*jt2_53 -
+                jt2_5*jt2_51 - jt2_5*jt2_55 - jt2_67*jt2_9 - jt2_68*jt2_9 - jt2_74*jt2_76 - jt2_74*
+                jt2_79 - jt2_76*jt2_77 - jt2_77*jt2_79)
         dQ2_3 += jt2_27*jt2_80 - jt2_44*jt2_80
         dQ2_4 += jt2_27*jt2_81 - jt2_44*jt2_81
         dQ2_5 += jt2_27*jt2_82 - jt2_44*jt2_82
@@ -678,7 +727,9 @@ def jacobian(t, y, p, J):
     J[4, 5] = dQ1_5*ja0
     J[5, 0] = dQ2_0*ja11
     J[5, 1] = dQ2_1*ja11
-    J[5, 2] = 3*a**3*cos_theta*ja10*ja2*m2 - b**3*cos_theta*ja10*ja3*m1 + 2*dQ2_2*ja10*r0 - ja12*ja8 - ja12*ja9
+    J[5, 2] = (
+            3*a**3*cos_theta*ja10*ja2*m2 - b**3*cos_theta*ja10*ja3*m1 + 2*dQ2_2*ja10*r0 - ja12*
+            ja8 - ja12*ja9)
     J[5, 3] = dQ2_3*ja11
     J[5, 4] = dQ2_4*ja11
     J[5, 5] = dQ2_5*ja11
@@ -690,31 +741,10 @@ def tether_margins(y, p, g):
     delta_x = y[0]
     delta_y = y[1]
     theta = y[2]
-    delta_x_dot = y[3]
-    delta_y_dot = y[4]
-    theta_dot = y[5]
-    m1 = p[0]
-    m2 = p[1]
-    m3 = p[2]
-    A1 = p[3]
-    A2 = p[4]
-    A3 = p[5]
     a = p[6]
     b = p[7]
     l10 = p[8]
     l20 = p[9]
-    E1 = p[10]
-    E2 = p[11]
-    c1 = p[12]
-    c2 = p[13]
-    CD = p[14]
-    r0 = p[15]
-    mu = p[16]
-    omega = p[17]
-    omega_earth = p[18]
-    rho1 = p[19]
-    rho2 = p[20]
-    rho3 = p[21]
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
     g[0] = math.hypot(b*sin_theta - delta_x, b*cos_theta - delta_y) - l10
@@ -723,35 +753,18 @@ def tether_margins(y, p, g):
 
 @njit(cache=True, inline="always")
 def body_radii(y, p):
-    """(|R_1|, |R_2|, |R_3|) [m]: tip-mass, bus, balloon from Earth's centre (Eqs 3.10-3.12)."""
+    """(|R_1|, |R_2|, |R_3|) [m]: tip-mass, bus, balloon from Earth's centre.
+
+    Positions (Eqs 3.10-3.12).
+    """
     delta_x = y[0]
     delta_y = y[1]
     theta = y[2]
-    delta_x_dot = y[3]
-    delta_y_dot = y[4]
-    theta_dot = y[5]
-    m1 = p[0]
-    m2 = p[1]
-    m3 = p[2]
-    A1 = p[3]
-    A2 = p[4]
-    A3 = p[5]
     a = p[6]
     b = p[7]
-    l10 = p[8]
-    l20 = p[9]
-    E1 = p[10]
-    E2 = p[11]
-    c1 = p[12]
-    c2 = p[13]
-    CD = p[14]
     r0 = p[15]
-    mu = p[16]
-    omega = p[17]
-    omega_earth = p[18]
-    rho1 = p[19]
-    rho2 = p[20]
-    rho3 = p[21]
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
-    return (math.hypot(b*sin_theta, b*cos_theta + r0), math.hypot(-a*sin_theta, -a*cos_theta + r0), math.hypot(delta_x, delta_y + r0))
+    return (
+            math.hypot(b*sin_theta, b*cos_theta + r0), math.hypot(-a*sin_theta, -a*cos_theta + r0),
+            math.hypot(delta_x, delta_y + r0))

@@ -46,8 +46,14 @@ GEOMETRY = "planar"  # (δx, δy, θ): the thesis plane
 ORBIT = "circular"  # the COM held on a circle of radius r0 at rate ω (Eq 3.14)
 STATE = ('delta_x', 'delta_y', 'theta', 'delta_x_dot', 'delta_y_dot', 'theta_dot')
 STATE_UNITS = ('m', 'm', 'rad', 'm/s', 'm/s', 'rad/s')
-PARAMETERS = ('m1', 'm2', 'm3', 'A1', 'A2', 'A3', 'a', 'b', 'l10', 'l20', 'E1', 'E2', 'c1', 'c2', 'CD', 'r0', 'mu', 'omega', 'omega_earth', 'rho1', 'rho2', 'rho3')
-PARAMETER_UNITS = ('kg', 'kg', 'kg', 'm^2', 'm^2', 'm^2', 'm', 'm', 'm', 'm', 'N', 'N', 'N s/m', 'N s/m', '1', 'm', 'm^3/s^2', 'rad/s', 'rad/s', 'kg/m^3', 'kg/m^3', 'kg/m^3')
+PARAMETERS = (
+    'm1', 'm2', 'm3', 'A1', 'A2', 'A3', 'a', 'b', 'l10', 'l20', 'E1', 'E2', 'c1', 'c2', 'CD', 'r0', 'mu',
+    'omega', 'omega_earth', 'rho1', 'rho2', 'rho3',
+)
+PARAMETER_UNITS = (
+    'kg', 'kg', 'kg', 'm^2', 'm^2', 'm^2', 'm', 'm', 'm', 'm', 'N', 'N', 'N s/m', 'N s/m', '1', 'm',
+    'm^3/s^2', 'rad/s', 'rad/s', 'kg/m^3', 'kg/m^3', 'kg/m^3',
+)
 FAMILIES = ('drag1', 'drag2', 'drag3', 'spring1', 'spring2', 'damper1', 'damper2')
 
 
@@ -76,7 +82,6 @@ def rhs(t, y, p, dydt):
     c2 = p[13]
     CD = p[14]
     r0 = p[15]
-    mu = p[16]
     omega = p[17]
     omega_earth = p[18]
     rho1 = p[19]
@@ -132,7 +137,9 @@ def rhs(t, y, p, dydt):
         t2_8 = b*cos_theta
         Q_delta_x += -c2*(a*cos_theta*theta_dot + delta_x_dot - omega*t2_1 - t2_0) + t2_3*t2_4
         Q_delta_y += -c2*(omega*t2_2 - t2_2*theta_dot + t2_5) + t2_4*t2_6
-        Q_theta += -c2*t2_1*(delta_x_dot + omega*t2_8 - t2_0 - t2_8*theta_dot) + c2*t2_2*(-omega*t2_7 + t2_5 + t2_7*theta_dot) + t2_4*(t2_1*t2_3 - t2_2*t2_6)
+        Q_theta += (
+                -c2*t2_1*(delta_x_dot + omega*t2_8 - t2_0 - t2_8*theta_dot) + c2*t2_2*(-omega*t2_7 +
+                t2_5 + t2_7*theta_dot) + t2_4*(t2_1*t2_3 - t2_2*t2_6))
     # accelerations from M q'' + f(q, q') = Q (Lagrange, 3.26-3.30)
     dydt[0] = delta_x_dot
     dydt[1] = delta_y_dot
@@ -164,9 +171,6 @@ def family_forces(y, p, out):
     delta_x_dot = y[3]
     delta_y_dot = y[4]
     theta_dot = y[5]
-    m1 = p[0]
-    m2 = p[1]
-    m3 = p[2]
     A1 = p[3]
     A2 = p[4]
     A3 = p[5]
@@ -180,7 +184,6 @@ def family_forces(y, p, out):
     c2 = p[13]
     CD = p[14]
     r0 = p[15]
-    mu = p[16]
     omega = p[17]
     omega_earth = p[18]
     rho1 = p[19]
@@ -259,7 +262,9 @@ def family_forces(y, p, out):
         f6_5 = b*sin_theta
         out[6, 0] = -c2*(a*cos_theta*theta_dot + delta_x_dot - f6_0 - f6_1*omega)
         out[6, 1] = -c2*(f6_2*omega - f6_2*theta_dot + f6_3)
-        out[6, 2] = a*c2*sin_theta*(f6_3 - f6_5*omega + f6_5*theta_dot) - c2*f6_1*(delta_x_dot - f6_0 + f6_4*omega - f6_4*theta_dot)
+        out[6, 2] = (
+                a*c2*sin_theta*(f6_3 - f6_5*omega + f6_5*theta_dot) - c2*f6_1*(delta_x_dot - f6_0 +
+                f6_4*omega - f6_4*theta_dot))
 
 
 @njit(cache=True)
@@ -277,25 +282,14 @@ def jacobi(y, p):
     m1 = p[0]
     m2 = p[1]
     m3 = p[2]
-    A1 = p[3]
-    A2 = p[4]
-    A3 = p[5]
     a = p[6]
     b = p[7]
     l10 = p[8]
     l20 = p[9]
     E1 = p[10]
     E2 = p[11]
-    c1 = p[12]
-    c2 = p[13]
-    CD = p[14]
     r0 = p[15]
-    mu = p[16]
     omega = p[17]
-    omega_earth = p[18]
-    rho1 = p[19]
-    rho2 = p[20]
-    rho3 = p[21]
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
     e0 = delta_y**2
@@ -325,7 +319,13 @@ def jacobi(y, p):
     e24 = b**4
     e25 = e24*m1
     e26 = (3/4)*e10*e7
-    h = (3/2)*cos_theta*e1*e13*e16*e7*m2 - cos_theta*e22*e23*e7 - delta_x**4*e12 + (1/2)*delta_x_dot**2*m3 - delta_y**4*e12 - delta_y**3*e14 - delta_y*e14*e15 + (1/2)*delta_y_dot**2*m3 - 3/4*e0*e11*e15 - e0*e3 + (3/2)*e1*e13*e16*e17*m2 - e17*e22*e23 - e19*e20 - e19*e25 - e2*e4*e5*m2 - e2*e8*e9 - e20*e21 - e20*e26*e4 - e21*e25 - e24*e26*e9 + (1/2)*e4*e5*e6*m2 + (1/2)*e4*e6*e8*m1 + (1/2)*e5*e6*e7*m2 + (1/2)*e6*e7*e8*m1
+    h = (
+            (3/2)*cos_theta*e1*e13*e16*e7*m2 - cos_theta*e22*e23*e7 - delta_x**4*e12 + (1/2)*
+            delta_x_dot**2*m3 - delta_y**4*e12 - delta_y**3*e14 - delta_y*e14*e15 + (1/2)*
+            delta_y_dot**2*m3 - 3/4*e0*e11*e15 - e0*e3 + (3/2)*e1*e13*e16*e17*m2 - e17*e22*e23 -
+            e19*e20 - e19*e25 - e2*e4*e5*m2 - e2*e8*e9 - e20*e21 - e20*e26*e4 - e21*e25 - e24*
+            e26*e9 + (1/2)*e4*e5*e6*m2 + (1/2)*e4*e6*e8*m1 + (1/2)*e5*e6*e7*m2 + (1/2)*e6*e7*
+            e8*m1)
     lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
     if lambda1 > l10:
         h += (1/2)*E1*(-l10 + lambda1)**2/l10
@@ -360,7 +360,6 @@ def jacobian(t, y, p, J):
     c2 = p[13]
     CD = p[14]
     r0 = p[15]
-    mu = p[16]
     omega = p[17]
     omega_earth = p[18]
     rho1 = p[19]
@@ -447,10 +446,16 @@ def jacobian(t, y, p, J):
     dQ1_5 = 0
     dQ2_0 = 0
     dQ2_1 = 0
-    dQ2_2 = -jd35*(jd26 + jd29) - jd49*(jd41 + jd44) - jd53*(b*cos_theta*jd28*jd51*jd52 - jd28*jd50 - jd32*jd51*jd52 - jd50*(b*cos_theta*omega - jd24*omega_earth - jd25)) - jd58*(jd43*jd54 - jd47*jd57 + jd54*(-jd39*omega + jd39*omega_earth + jd40) + jd55*jd57)
+    dQ2_2 = (
+            -jd35*(jd26 + jd29) - jd49*(jd41 + jd44) - jd53*(b*cos_theta*jd28*jd51*jd52 - jd28*jd50 -
+            jd32*jd51*jd52 - jd50*(b*cos_theta*omega - jd24*omega_earth - jd25)) - jd58*(jd43*jd54 -
+            jd47*jd57 + jd54*(-jd39*omega + jd39*omega_earth + jd40) + jd55*jd57))
     dQ2_3 = 0
     dQ2_4 = 0
-    dQ2_5 = -jd35*(-2*jd32 + 2*jd33) - jd49*(2*a*jd38*sin_theta - 2*jd47) - jd53*(-jd32*jd62 + jd33*jd62 + jd59*jd60 + jd60*jd61) - jd58*(-jd47*jd64 + jd55*jd64 + jd59*jd63 + jd61*jd63)
+    dQ2_5 = (
+            -jd35*(-2*jd32 + 2*jd33) - jd49*(2*a*jd38*sin_theta - 2*jd47) - jd53*(-jd32*jd62 +
+            jd33*jd62 + jd59*jd60 + jd60*jd61) - jd58*(-jd47*jd64 + jd55*jd64 + jd59*jd63 + jd61*
+            jd63))
     lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
     if lambda1 > l10:
         jt1_0 = b*cos_theta
@@ -506,7 +511,10 @@ def jacobian(t, y, p, J):
         dQ1_5 += jt1_34
         dQ2_0 += jt1_14*jt1_35 - jt1_18*jt1_3 + jt1_26
         dQ2_1 += E1*jt1_15*jt1_19*jt1_25*jt1_7 - jt1_0*jt1_18 - jt1_32
-        dQ2_2 += jt1_0*jt1_23 + jt1_10*(b*cos_theta*jt1_1 + b*jt1_4*sin_theta - jt1_37 - jt1_38) + jt1_13*jt1_25**2 + jt1_24*jt1_35 - jt1_28*(delta_x*omega + delta_y_dot - jt1_22 + jt1_3*theta_dot) - jt1_3*jt1_31 - jt1_33*(delta_x_dot - delta_y*omega + jt1_30)
+        dQ2_2 += (
+                jt1_0*jt1_23 + jt1_10*(b*cos_theta*jt1_1 + b*jt1_4*sin_theta - jt1_37 - jt1_38) +
+                jt1_13*jt1_25**2 + jt1_24*jt1_35 - jt1_28*(delta_x*omega + delta_y_dot - jt1_22 + jt1_3*
+                theta_dot) - jt1_3*jt1_31 - jt1_33*(delta_x_dot - delta_y*omega + jt1_30))
         dQ2_3 += jt1_28
         dQ2_4 += jt1_34
         dQ2_5 += -c1*jt1_37 - c1*jt1_38
@@ -554,7 +562,9 @@ def jacobian(t, y, p, J):
         jt2_39 = a*b*c2
         dQ0_0 += jt2_13 + jt2_16*jt2_5 + jt2_18*jt2_7
         dQ0_1 += jt2_1*jt2_16 + jt2_19 + jt2_21
-        dQ0_2 += E2*jt2_10*jt2_17*jt2_23*jt2_6 + E2*jt2_14*jt2_24*jt2_6*jt2_9 - c2*(jt2_4*omega - jt2_4*theta_dot) - jt2_22
+        dQ0_2 += (
+                E2*jt2_10*jt2_17*jt2_23*jt2_6 + E2*jt2_14*jt2_24*jt2_6*jt2_9 - c2*(jt2_4*omega -
+                jt2_4*theta_dot) - jt2_22)
         dQ0_3 += jt2_25
         dQ0_4 += 0
         dQ0_5 += jt2_27
@@ -566,7 +576,11 @@ def jacobian(t, y, p, J):
         dQ1_5 += jt2_30
         dQ2_0 += jt2_19*jt2_4 + jt2_20*jt2_23 - jt2_22 + jt2_31*jt2_5
         dQ2_1 += jt2_0*jt2_19 + jt2_1*jt2_31 + jt2_29
-        dQ2_2 += jt2_12*(-jt2_0*jt2_2 - jt2_36*jt2_37 - jt2_36*jt2_38 - jt2_4*jt2_6) + jt2_18*jt2_23**2 + jt2_24*jt2_31 - jt2_26*(b*sin_theta*theta_dot - jt2_35) + jt2_26*(delta_x*omega + delta_y_dot + jt2_34*theta_dot - jt2_35) - jt2_30*jt2_33 + jt2_30*(delta_x_dot - delta_y*omega + jt2_33)
+        dQ2_2 += (
+                jt2_12*(-jt2_0*jt2_2 - jt2_36*jt2_37 - jt2_36*jt2_38 - jt2_4*jt2_6) + jt2_18*jt2_23**2
+                + jt2_24*jt2_31 - jt2_26*(b*sin_theta*theta_dot - jt2_35) + jt2_26*(delta_x*omega +
+                delta_y_dot + jt2_34*theta_dot - jt2_35) - jt2_30*jt2_33 + jt2_30*(delta_x_dot - delta_y*
+                omega + jt2_33))
         dQ2_3 += jt2_27
         dQ2_4 += jt2_30
         dQ2_5 += jt2_37*jt2_39 + jt2_38*jt2_39
@@ -601,7 +615,9 @@ def jacobian(t, y, p, J):
     J[4, 5] = dQ1_5*ja0
     J[5, 0] = dQ2_0*ja11
     J[5, 1] = dQ2_1*ja11
-    J[5, 2] = 3*a**3*cos_theta*ja10*ja2*m2 - b**3*cos_theta*ja10*ja3*m1 + 2*dQ2_2*ja10*r0 - ja12*ja8 - ja12*ja9
+    J[5, 2] = (
+            3*a**3*cos_theta*ja10*ja2*m2 - b**3*cos_theta*ja10*ja3*m1 + 2*dQ2_2*ja10*r0 - ja12*
+            ja8 - ja12*ja9)
     J[5, 3] = dQ2_3*ja11
     J[5, 4] = dQ2_4*ja11
     J[5, 5] = dQ2_5*ja11
@@ -613,31 +629,10 @@ def tether_margins(y, p, g):
     delta_x = y[0]
     delta_y = y[1]
     theta = y[2]
-    delta_x_dot = y[3]
-    delta_y_dot = y[4]
-    theta_dot = y[5]
-    m1 = p[0]
-    m2 = p[1]
-    m3 = p[2]
-    A1 = p[3]
-    A2 = p[4]
-    A3 = p[5]
     a = p[6]
     b = p[7]
     l10 = p[8]
     l20 = p[9]
-    E1 = p[10]
-    E2 = p[11]
-    c1 = p[12]
-    c2 = p[13]
-    CD = p[14]
-    r0 = p[15]
-    mu = p[16]
-    omega = p[17]
-    omega_earth = p[18]
-    rho1 = p[19]
-    rho2 = p[20]
-    rho3 = p[21]
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
     g[0] = math.hypot(b*sin_theta - delta_x, b*cos_theta - delta_y) - l10
@@ -646,35 +641,18 @@ def tether_margins(y, p, g):
 
 @njit(cache=True, inline="always")
 def body_radii(y, p):
-    """(|R_1|, |R_2|, |R_3|) [m]: tip-mass, bus, balloon from Earth's centre (Eqs 3.10-3.12)."""
+    """(|R_1|, |R_2|, |R_3|) [m]: tip-mass, bus, balloon from Earth's centre.
+
+    Positions (Eqs 3.10-3.12).
+    """
     delta_x = y[0]
     delta_y = y[1]
     theta = y[2]
-    delta_x_dot = y[3]
-    delta_y_dot = y[4]
-    theta_dot = y[5]
-    m1 = p[0]
-    m2 = p[1]
-    m3 = p[2]
-    A1 = p[3]
-    A2 = p[4]
-    A3 = p[5]
     a = p[6]
     b = p[7]
-    l10 = p[8]
-    l20 = p[9]
-    E1 = p[10]
-    E2 = p[11]
-    c1 = p[12]
-    c2 = p[13]
-    CD = p[14]
     r0 = p[15]
-    mu = p[16]
-    omega = p[17]
-    omega_earth = p[18]
-    rho1 = p[19]
-    rho2 = p[20]
-    rho3 = p[21]
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
-    return (math.hypot(b*sin_theta, b*cos_theta + r0), math.hypot(-a*sin_theta, -a*cos_theta + r0), math.hypot(delta_x, delta_y + r0))
+    return (
+            math.hypot(b*sin_theta, b*cos_theta + r0), math.hypot(-a*sin_theta, -a*cos_theta + r0),
+            math.hypot(delta_x, delta_y + r0))

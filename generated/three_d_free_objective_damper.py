@@ -1,6 +1,7 @@
 """GENERATED FILE - DO NOT EDIT.
 
-Model '3d-free-objective-damper': 3-D model on a free orbit (r, nu as coordinates), truncated binomial gravity, J2 at each body's latitude, Kelvin-Voigt tether dampers.
+Model '3d-free-objective-damper': 3-D model on a free orbit (r, nu as coordinates), truncated binomial
+gravity, J2 at each body's latitude, Kelvin-Voigt tether dampers.
 Produced by `make derive` (python -m derive) from derive/three_d/free3d.py and
 derive/orbit_codegen.py; regenerate instead of editing.  docs/three-d.md, docs/orbit.md.  sympy 1.14.0.
 Reduces to the model '3d-objective-damper' on a circular orbit.
@@ -58,15 +59,32 @@ import math
 from numba import njit
 
 MODEL = '3d-free-objective-damper'
-DESCRIPTION = "3-D model on a free orbit (r, nu as coordinates), truncated binomial gravity, J2 at each body's latitude, Kelvin-Voigt tether dampers"
+DESCRIPTION = (
+    "3-D model on a free orbit (r, nu as coordinates), truncated binomial gravity, J2 at each body's "
+    'latitude, Kelvin-Voigt tether dampers'
+)
 GEOMETRY = "3d"  # roll, pitch, yaw and an out-of-plane balloon
 ORBIT = "free"  # r and ν are coordinates: gravity, J2 and drag move the orbit
 CIRCULAR_TWIN = '3d-objective-damper'  # the model this one reduces to on a circular orbit
 FAMILIES = ('drag1', 'drag2', 'drag3', 'spring1', 'spring2', 'damper1', 'damper2')
-STATE = ('delta_x', 'delta_y', 'delta_z', 'phi', 'theta', 'psi', 'r', 'nu', 'delta_x_dot', 'delta_y_dot', 'delta_z_dot', 'phi_dot', 'theta_dot', 'psi_dot', 'r_dot', 'nu_dot')
-STATE_UNITS = ('m', 'm', 'm', 'rad', 'rad', 'rad', 'm', 'rad', 'm/s', 'm/s', 'm/s', 'rad/s', 'rad/s', 'rad/s', 'm/s', 'rad/s')
-PARAMETERS = ('m1', 'm2', 'm3', 'A1', 'A2', 'A3', 'a', 'b', 'l10', 'l20', 'E1', 'E2', 'c1', 'c2', 'CD', 'mu', 'omega_earth', 'rho1', 'rho2', 'rho3', 'J2', 'R_E', 'I1_roll', 'I1_pitch', 'I1_yaw', 'I2_roll', 'I2_pitch', 'I2_yaw')
-PARAMETER_UNITS = ('kg', 'kg', 'kg', 'm^2', 'm^2', 'm^2', 'm', 'm', 'm', 'm', 'N', 'N', 'N s/m', 'N s/m', '1', 'm^3/s^2', 'rad/s', 'kg/m^3', 'kg/m^3', 'kg/m^3', '1', 'm', 'kg m^2', 'kg m^2', 'kg m^2', 'kg m^2', 'kg m^2', 'kg m^2')
+STATE = (
+    'delta_x', 'delta_y', 'delta_z', 'phi', 'theta', 'psi', 'r', 'nu', 'delta_x_dot', 'delta_y_dot',
+    'delta_z_dot', 'phi_dot', 'theta_dot', 'psi_dot', 'r_dot', 'nu_dot',
+)
+STATE_UNITS = (
+    'm', 'm', 'm', 'rad', 'rad', 'rad', 'm', 'rad', 'm/s', 'm/s', 'm/s', 'rad/s', 'rad/s', 'rad/s', 'm/s',
+    'rad/s',
+)
+PARAMETERS = (
+    'm1', 'm2', 'm3', 'A1', 'A2', 'A3', 'a', 'b', 'l10', 'l20', 'E1', 'E2', 'c1', 'c2', 'CD', 'mu',
+    'omega_earth', 'rho1', 'rho2', 'rho3', 'J2', 'R_E', 'I1_roll', 'I1_pitch', 'I1_yaw', 'I2_roll',
+    'I2_pitch', 'I2_yaw',
+)
+PARAMETER_UNITS = (
+    'kg', 'kg', 'kg', 'm^2', 'm^2', 'm^2', 'm', 'm', 'm', 'm', 'N', 'N', 'N s/m', 'N s/m', '1', 'm^3/s^2',
+    'rad/s', 'kg/m^3', 'kg/m^3', 'kg/m^3', '1', 'm', 'kg m^2', 'kg m^2', 'kg m^2', 'kg m^2', 'kg m^2',
+    'kg m^2',
+)
 
 Y_DELTA_X = 0
 Y_DELTA_Y = 1
@@ -117,7 +135,7 @@ P_I2_YAW = 27
 
 @njit(cache=True)
 def rhs(t, y, p, dydt):
-    """State derivative dy/dt of model '3d-free-objective-damper' (SI; y and p as in STATE, PARAMETERS)."""
+    """State derivative dy/dt of model '3d-free-objective-damper' (SI; y, p as in STATE, PARAMETERS)."""
     delta_x = y[0]
     delta_y = y[1]
     delta_z = y[2]
@@ -125,7 +143,6 @@ def rhs(t, y, p, dydt):
     theta = y[4]
     psi = y[5]
     r = y[6]
-    nu = y[7]
     delta_x_dot = y[8]
     delta_y_dot = y[9]
     delta_z_dot = y[10]
@@ -208,12 +225,16 @@ def rhs(t, y, p, dydt):
     Q_delta_x = -d5
     Q_delta_y = -d6
     Q_delta_z = -d4*delta_z_dot
-    Q_phi = (1/2)*A1*CD*b*cos_theta*d14*d19*rho1*sin_phi + (1/2)*A1*CD*b*d18*d19*rho1*sin_phi*sin_theta - a*cos_theta*d31*sin_phi - d20*d21*d7 - d21*d22*d30 - d23*d32*sin_phi
+    Q_phi = (
+            (1/2)*A1*CD*b*cos_theta*d14*d19*rho1*sin_phi + (1/2)*A1*CD*b*d18*d19*rho1*sin_phi*
+            sin_theta - a*cos_theta*d31*sin_phi - d20*d21*d7 - d21*d22*d30 - d23*d32*sin_phi)
     Q_theta = (1/2)*A2*CD*a*cos_phi*cos_theta*d28*d29*rho2 - d16*d33 - d35
     Q_psi = 0
     Q_r = -d31 - d34 - d6
     Q_nu = d0*d5 + d17*d33 + d27*d32 + d35 - d6*delta_x
-    lambda1 = math.sqrt((b*sin_phi - delta_z)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*cos_phi*sin_theta - delta_x)**2)
+    lambda1 = (
+            math.sqrt((b*sin_phi - delta_z)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*cos_phi*
+            sin_theta - delta_x)**2))
     if lambda1 > l10:  # tether 1 taut: spring1, damper1
         t1_0 = 1/l10
         t1_1 = E1*delta_x
@@ -296,15 +317,99 @@ def rhs(t, y, p, dydt):
         t1_78 = t1_44*t1_64
         t1_79 = cos_theta*t1_28
         t1_80 = cos_theta*t1_29
-        Q_delta_x += E1*b*cos_phi*sin_theta*t1_0 + E1*delta_x*t1_3 + b*c1*cos_phi*cos_theta*delta_x*delta_y_dot*t1_6 + b*c1*cos_phi*cos_theta*t1_14*t1_6*theta_dot + 2*b*c1*cos_phi*delta_x*delta_x_dot*sin_theta*t1_6 + b*c1*cos_phi*delta_x*delta_z*phi_dot*t1_6 + b*c1*cos_phi*delta_y*delta_y_dot*sin_theta*t1_6 + b*c1*cos_phi*delta_z*delta_z_dot*sin_theta*t1_6 + b*c1*delta_x*delta_z_dot*sin_phi*t1_6 + c1*cos_phi*cos_theta*delta_y*phi_dot*sin_phi*sin_theta*t1_27*t1_6 + 2*c1*cos_phi*delta_x*phi_dot*sin_phi*t1_27*t1_37*t1_6 + c1*cos_phi*delta_x*phi_dot*sin_phi*t1_27*t1_45*t1_6 + c1*delta_y*t1_27*t1_31*t1_37*t1_6*theta_dot + c1*phi_dot*sin_phi*sin_theta*t1_31*t1_39*t1_6 - sin_theta*t1_3*t1_5 - sin_theta*t1_30 - t1_10 - t1_13 - t1_14*t1_26 - t1_15*t1_38 - t1_16 - t1_2 - t1_20*t1_9 - t1_24*t1_9 - t1_28*t1_29 - t1_33*t1_34 - t1_35*t1_36 - t1_40*t1_41 - t1_42*t1_44 - t1_45*t1_46
-        Q_delta_y += E1*b*cos_phi*cos_theta*t1_0 + E1*delta_y*t1_3 + b*c1*cos_phi*cos_theta*delta_x*delta_x_dot*t1_6 + b*c1*cos_phi*cos_theta*delta_x*delta_y*t1_6*theta_dot + 2*b*c1*cos_phi*cos_theta*delta_y*delta_y_dot*t1_6 + b*c1*cos_phi*cos_theta*delta_z*delta_z_dot*t1_6 + b*c1*cos_phi*delta_x_dot*delta_y*sin_theta*t1_6 + b*c1*cos_phi*delta_y*delta_z*phi_dot*t1_6 + b*c1*delta_y*delta_z_dot*sin_phi*t1_6 + c1*cos_phi*cos_theta*delta_x*phi_dot*sin_phi*sin_theta*t1_27*t1_6 + c1*cos_phi*delta_y*phi_dot*sin_phi*t1_27*t1_37*t1_6 + 2*c1*cos_phi*delta_y*phi_dot*sin_phi*t1_27*t1_45*t1_6 + c1*cos_theta*delta_y*sin_theta*t1_27*t1_31*t1_6*theta_dot + c1*cos_theta*phi_dot*sin_phi*t1_31*t1_39*t1_6 - cos_theta*t1_3*t1_5 - cos_theta*t1_30 - cos_theta*t1_37*t1_44 - delta_y*t1_21*t1_28 - t1_15*t1_40 - t1_20*t1_50 - t1_24*t1_50 - t1_26*t1_9 - t1_36*t1_52 - t1_41*t1_54 - t1_44*t1_55 - t1_47 - t1_48 - t1_49 - t1_51 - t1_53
-        Q_delta_z += E1*b*sin_phi*t1_0 + E1*delta_z*t1_3 + b*c1*cos_phi*cos_theta*delta_x*delta_z*t1_6*theta_dot + b*c1*cos_phi*cos_theta*delta_y_dot*delta_z*t1_6 + b*c1*cos_phi*delta_x_dot*delta_z*sin_theta*t1_6 + b*c1*cos_phi*phi_dot*t1_59*t1_6 + b*c1*delta_x*delta_x_dot*sin_phi*t1_6 + b*c1*delta_y*delta_y_dot*sin_phi*t1_6 + 2*b*c1*delta_z*delta_z_dot*sin_phi*t1_6 + c1*cos_phi*delta_y*sin_phi*sin_theta*t1_27*t1_6*theta_dot + c1*cos_phi*delta_z*phi_dot*sin_phi*t1_27*t1_37*t1_6 + c1*cos_phi*delta_z*phi_dot*sin_phi*t1_27*t1_45*t1_6 + c1*cos_phi*phi_dot*t1_39*t1_6*t1_60 + c1*cos_theta*delta_y*phi_dot*t1_27*t1_6*t1_60 + c1*delta_x*phi_dot*sin_theta*t1_27*t1_6*t1_60 - delta_y*delta_z*t1_20 - delta_y*delta_z*t1_22*t1_52 - delta_z*t1_25*t1_29 - delta_z*t1_57 - delta_z*t1_58 - sin_phi*t1_3*t1_4 - t1_0*t1_56 - t1_11*t1_59 - t1_27*t1_61 - t1_28*t1_62 - t1_28*t1_63 - t1_28*t1_66 - t1_37*t1_69 - t1_45*t1_69 - t1_64*t1_65
-        Q_phi += E1*b*cos_phi*delta_z*t1_0 + E1*b*cos_theta*delta_y*sin_phi*t1_3 + E1*b*delta_x*sin_phi*sin_theta*t1_3 + E1*cos_phi*sin_phi*t1_0*t1_27*t1_37 + E1*cos_phi*sin_phi*t1_0*t1_27*t1_45 + E1*cos_phi*sin_phi*t1_27*t1_3 + b*c1*cos_phi*delta_x*delta_x_dot*delta_z*t1_6 + b*c1*cos_phi*delta_y*delta_y_dot*delta_z*t1_6 + b*c1*cos_phi*delta_z_dot*t1_59*t1_6 + c1*cos_phi*cos_theta*delta_x*delta_y_dot*sin_phi*sin_theta*t1_27*t1_6 + c1*cos_phi*cos_theta*delta_x_dot*delta_y*sin_phi*sin_theta*t1_27*t1_6 + 2*c1*cos_phi*cos_theta*delta_y*delta_z*phi_dot*sin_phi*t1_27*t1_6 + 2*c1*cos_phi*cos_theta*delta_y*phi_dot*t1_37*t1_39*t1_6*t1_60 + c1*cos_phi*cos_theta*sin_phi*sin_theta*t1_14*t1_27*t1_6*theta_dot + 2*c1*cos_phi*delta_x*delta_x_dot*sin_phi*t1_27*t1_37*t1_6 + c1*cos_phi*delta_x*delta_x_dot*sin_phi*t1_27*t1_45*t1_6 + c1*cos_phi*delta_x*delta_y*sin_phi*t1_27*t1_45*t1_6*theta_dot + 2*c1*cos_phi*delta_x*delta_z*phi_dot*sin_phi*sin_theta*t1_27*t1_6 + 2*c1*cos_phi*delta_x*phi_dot*sin_theta*t1_39*t1_45*t1_6*t1_60 + 2*c1*cos_phi*delta_x*phi_dot*t1_39*t1_42*t1_6*t1_60 + c1*cos_phi*delta_y*delta_y_dot*sin_phi*t1_27*t1_37*t1_6 + 2*c1*cos_phi*delta_y*delta_y_dot*sin_phi*t1_27*t1_45*t1_6 + 2*c1*cos_phi*delta_y*phi_dot*t1_39*t1_55*t1_6*t1_60 + c1*cos_phi*delta_z*delta_z_dot*sin_phi*t1_27*t1_37*t1_6 + c1*cos_phi*delta_z*delta_z_dot*sin_phi*t1_27*t1_45*t1_6 + c1*cos_phi*delta_z_dot*t1_39*t1_6*t1_60 + c1*cos_theta*delta_x*sin_phi*t1_31*t1_39*t1_6*theta_dot + c1*cos_theta*delta_y*delta_z_dot*t1_27*t1_6*t1_60 + c1*cos_theta*delta_y_dot*sin_phi*t1_31*t1_39*t1_6 + c1*delta_x*delta_z_dot*sin_theta*t1_27*t1_6*t1_60 + c1*delta_x_dot*sin_phi*sin_theta*t1_31*t1_39*t1_6 + c1*delta_y*delta_z*sin_theta*t1_27*t1_31*t1_6*theta_dot + c1*delta_y*sin_phi*sin_theta*t1_31*t1_39*t1_45*t1_6*theta_dot + c1*delta_y*sin_phi*t1_31*t1_39*t1_42*t1_6*theta_dot + 2*c1*delta_z*phi_dot*sin_phi*t1_31*t1_39*t1_6 + 2*c1*phi_dot*t1_31*t1_37*t1_6*t1_60*t1_72 + 2*c1*phi_dot*t1_31*t1_45*t1_6*t1_60*t1_72 - cos_theta**4*t1_73 - cos_theta*delta_y*t1_76 - cos_theta*delta_z*t1_33 - delta_x*sin_theta*t1_76 - delta_y*sin_theta*t1_19*t1_43 - sin_theta**4*t1_73 - t1_0*t1_70 - t1_10*t1_25 - 2*t1_12*t1_28 - t1_13*t1_25 - t1_14*t1_37*t1_77 - t1_15*t1_42*t1_43 - t1_16*t1_25 - t1_17*t1_3*t1_56 - t1_19*t1_28*t1_34*t1_50 - t1_19*t1_28*t1_37*t1_9 - t1_2*t1_25 - t1_21*t1_32*t1_59 - t1_23*t1_47 - t1_23*t1_48 - t1_23*t1_49 - t1_23*t1_51 - t1_28*t1_57 - t1_28*t1_58 - 2*t1_34*t1_77*t1_9 - t1_36*t1_63 - t1_36*t1_66 - t1_37*t1_43*t1_62 - t1_37*t1_43*t1_66 - 2*t1_37*t1_45*t1_73 - t1_37*t1_71 - t1_37*t1_74 - t1_37*t1_78 - t1_41*t1_75 - t1_43*t1_45*t1_63 - t1_45*t1_50*t1_77 - t1_45*t1_71 - t1_45*t1_74 - t1_45*t1_78 - t1_73 - t1_75*t1_8
-        Q_theta += E1*b*cos_phi*cos_theta*delta_x*t1_0 + E1*b*cos_phi*delta_y*sin_theta*t1_3 + b*c1*cos_phi*cos_theta*delta_x*delta_y*delta_y_dot*t1_6 + b*c1*cos_phi*cos_theta*delta_x*delta_z*delta_z_dot*t1_6 + b*c1*cos_phi*cos_theta*delta_x_dot*t1_14*t1_6 + c1*cos_phi*cos_theta*phi_dot*sin_phi*sin_theta*t1_14*t1_27*t1_6 + c1*cos_phi*delta_x*delta_y*phi_dot*sin_phi*t1_27*t1_45*t1_6 + c1*cos_phi*delta_y*delta_z_dot*sin_phi*sin_theta*t1_27*t1_6 + 2*c1*cos_theta*delta_x*delta_y*sin_theta*t1_27*t1_31*t1_6*theta_dot + c1*cos_theta*delta_x*phi_dot*sin_phi*t1_31*t1_39*t1_6 + c1*cos_theta*delta_y*delta_y_dot*sin_theta*t1_27*t1_31*t1_6 + c1*delta_x_dot*delta_y*t1_27*t1_31*t1_37*t1_6 + c1*delta_y*delta_z*phi_dot*sin_theta*t1_27*t1_31*t1_6 + c1*delta_y*phi_dot*sin_phi*sin_theta*t1_31*t1_39*t1_45*t1_6 + c1*delta_y*phi_dot*sin_phi*t1_31*t1_39*t1_42*t1_6 - cos_theta*t1_1*t1_17*t1_3 - delta_x*t1_11*t1_79 - delta_x*t1_53 - delta_y*t1_46 - t1_14*t1_19*t1_54 - t1_18*t1_47 - t1_18*t1_48 - t1_18*t1_49 - t1_18*t1_51 - t1_19*t1_38*t1_50 - t1_29*t1_75 - t1_35*t1_50*t1_79 - t1_36*t1_80 - t1_37*t1_43*t1_80 - t1_37*t1_65*t1_9 - t1_40*t1_57
+        Q_delta_x += (
+                E1*b*cos_phi*sin_theta*t1_0 + E1*delta_x*t1_3 + b*c1*cos_phi*cos_theta*delta_x*
+                delta_y_dot*t1_6 + b*c1*cos_phi*cos_theta*t1_14*t1_6*theta_dot + 2*b*c1*cos_phi*
+                delta_x*delta_x_dot*sin_theta*t1_6 + b*c1*cos_phi*delta_x*delta_z*phi_dot*t1_6 + b*
+                c1*cos_phi*delta_y*delta_y_dot*sin_theta*t1_6 + b*c1*cos_phi*delta_z*delta_z_dot*
+                sin_theta*t1_6 + b*c1*delta_x*delta_z_dot*sin_phi*t1_6 + c1*cos_phi*cos_theta*
+                delta_y*phi_dot*sin_phi*sin_theta*t1_27*t1_6 + 2*c1*cos_phi*delta_x*phi_dot*
+                sin_phi*t1_27*t1_37*t1_6 + c1*cos_phi*delta_x*phi_dot*sin_phi*t1_27*t1_45*t1_6 +
+                c1*delta_y*t1_27*t1_31*t1_37*t1_6*theta_dot + c1*phi_dot*sin_phi*sin_theta*t1_31*
+                t1_39*t1_6 - sin_theta*t1_3*t1_5 - sin_theta*t1_30 - t1_10 - t1_13 - t1_14*t1_26 -
+                t1_15*t1_38 - t1_16 - t1_2 - t1_20*t1_9 - t1_24*t1_9 - t1_28*t1_29 - t1_33*t1_34 -
+                t1_35*t1_36 - t1_40*t1_41 - t1_42*t1_44 - t1_45*t1_46)
+        Q_delta_y += (
+                E1*b*cos_phi*cos_theta*t1_0 + E1*delta_y*t1_3 + b*c1*cos_phi*cos_theta*delta_x*
+                delta_x_dot*t1_6 + b*c1*cos_phi*cos_theta*delta_x*delta_y*t1_6*theta_dot + 2*b*c1*
+                cos_phi*cos_theta*delta_y*delta_y_dot*t1_6 + b*c1*cos_phi*cos_theta*delta_z*
+                delta_z_dot*t1_6 + b*c1*cos_phi*delta_x_dot*delta_y*sin_theta*t1_6 + b*c1*cos_phi*
+                delta_y*delta_z*phi_dot*t1_6 + b*c1*delta_y*delta_z_dot*sin_phi*t1_6 + c1*cos_phi*
+                cos_theta*delta_x*phi_dot*sin_phi*sin_theta*t1_27*t1_6 + c1*cos_phi*delta_y*phi_dot*
+                sin_phi*t1_27*t1_37*t1_6 + 2*c1*cos_phi*delta_y*phi_dot*sin_phi*t1_27*t1_45*t1_6 +
+                c1*cos_theta*delta_y*sin_theta*t1_27*t1_31*t1_6*theta_dot + c1*cos_theta*phi_dot*
+                sin_phi*t1_31*t1_39*t1_6 - cos_theta*t1_3*t1_5 - cos_theta*t1_30 - cos_theta*t1_37*
+                t1_44 - delta_y*t1_21*t1_28 - t1_15*t1_40 - t1_20*t1_50 - t1_24*t1_50 - t1_26*t1_9 -
+                t1_36*t1_52 - t1_41*t1_54 - t1_44*t1_55 - t1_47 - t1_48 - t1_49 - t1_51 - t1_53)
+        Q_delta_z += (
+                E1*b*sin_phi*t1_0 + E1*delta_z*t1_3 + b*c1*cos_phi*cos_theta*delta_x*delta_z*t1_6*
+                theta_dot + b*c1*cos_phi*cos_theta*delta_y_dot*delta_z*t1_6 + b*c1*cos_phi*
+                delta_x_dot*delta_z*sin_theta*t1_6 + b*c1*cos_phi*phi_dot*t1_59*t1_6 + b*c1*
+                delta_x*delta_x_dot*sin_phi*t1_6 + b*c1*delta_y*delta_y_dot*sin_phi*t1_6 + 2*b*c1*
+                delta_z*delta_z_dot*sin_phi*t1_6 + c1*cos_phi*delta_y*sin_phi*sin_theta*t1_27*t1_6*
+                theta_dot + c1*cos_phi*delta_z*phi_dot*sin_phi*t1_27*t1_37*t1_6 + c1*cos_phi*
+                delta_z*phi_dot*sin_phi*t1_27*t1_45*t1_6 + c1*cos_phi*phi_dot*t1_39*t1_6*t1_60 +
+                c1*cos_theta*delta_y*phi_dot*t1_27*t1_6*t1_60 + c1*delta_x*phi_dot*sin_theta*t1_27*
+                t1_6*t1_60 - delta_y*delta_z*t1_20 - delta_y*delta_z*t1_22*t1_52 - delta_z*t1_25*
+                t1_29 - delta_z*t1_57 - delta_z*t1_58 - sin_phi*t1_3*t1_4 - t1_0*t1_56 - t1_11*t1_59 -
+                t1_27*t1_61 - t1_28*t1_62 - t1_28*t1_63 - t1_28*t1_66 - t1_37*t1_69 - t1_45*t1_69 -
+                t1_64*t1_65)
+        Q_phi += (
+                E1*b*cos_phi*delta_z*t1_0 + E1*b*cos_theta*delta_y*sin_phi*t1_3 + E1*b*delta_x*
+                sin_phi*sin_theta*t1_3 + E1*cos_phi*sin_phi*t1_0*t1_27*t1_37 + E1*cos_phi*sin_phi*
+                t1_0*t1_27*t1_45 + E1*cos_phi*sin_phi*t1_27*t1_3 + b*c1*cos_phi*delta_x*
+                delta_x_dot*delta_z*t1_6 + b*c1*cos_phi*delta_y*delta_y_dot*delta_z*t1_6 + b*c1*
+                cos_phi*delta_z_dot*t1_59*t1_6 + c1*cos_phi*cos_theta*delta_x*delta_y_dot*sin_phi*
+                sin_theta*t1_27*t1_6 + c1*cos_phi*cos_theta*delta_x_dot*delta_y*sin_phi*sin_theta*
+                t1_27*t1_6 + 2*c1*cos_phi*cos_theta*delta_y*delta_z*phi_dot*sin_phi*t1_27*t1_6 + 2*
+                c1*cos_phi*cos_theta*delta_y*phi_dot*t1_37*t1_39*t1_6*t1_60 + c1*cos_phi*cos_theta*
+                sin_phi*sin_theta*t1_14*t1_27*t1_6*theta_dot + 2*c1*cos_phi*delta_x*delta_x_dot*
+                sin_phi*t1_27*t1_37*t1_6 + c1*cos_phi*delta_x*delta_x_dot*sin_phi*t1_27*t1_45*t1_6
+                + c1*cos_phi*delta_x*delta_y*sin_phi*t1_27*t1_45*t1_6*theta_dot + 2*c1*cos_phi*
+                delta_x*delta_z*phi_dot*sin_phi*sin_theta*t1_27*t1_6 + 2*c1*cos_phi*delta_x*
+                phi_dot*sin_theta*t1_39*t1_45*t1_6*t1_60 + 2*c1*cos_phi*delta_x*phi_dot*t1_39*
+                t1_42*t1_6*t1_60 + c1*cos_phi*delta_y*delta_y_dot*sin_phi*t1_27*t1_37*t1_6 + 2*c1*
+                cos_phi*delta_y*delta_y_dot*sin_phi*t1_27*t1_45*t1_6 + 2*c1*cos_phi*delta_y*
+                phi_dot*t1_39*t1_55*t1_6*t1_60 + c1*cos_phi*delta_z*delta_z_dot*sin_phi*t1_27*
+                t1_37*t1_6 + c1*cos_phi*delta_z*delta_z_dot*sin_phi*t1_27*t1_45*t1_6 + c1*cos_phi*
+                delta_z_dot*t1_39*t1_6*t1_60 + c1*cos_theta*delta_x*sin_phi*t1_31*t1_39*t1_6*
+                theta_dot + c1*cos_theta*delta_y*delta_z_dot*t1_27*t1_6*t1_60 + c1*cos_theta*
+                delta_y_dot*sin_phi*t1_31*t1_39*t1_6 + c1*delta_x*delta_z_dot*sin_theta*t1_27*t1_6*
+                t1_60 + c1*delta_x_dot*sin_phi*sin_theta*t1_31*t1_39*t1_6 + c1*delta_y*delta_z*
+                sin_theta*t1_27*t1_31*t1_6*theta_dot + c1*delta_y*sin_phi*sin_theta*t1_31*t1_39*
+                t1_45*t1_6*theta_dot + c1*delta_y*sin_phi*t1_31*t1_39*t1_42*t1_6*theta_dot + 2*c1*
+                delta_z*phi_dot*sin_phi*t1_31*t1_39*t1_6 + 2*c1*phi_dot*t1_31*t1_37*t1_6*t1_60*
+                t1_72 + 2*c1*phi_dot*t1_31*t1_45*t1_6*t1_60*t1_72 - cos_theta**4*t1_73 - cos_theta*
+                delta_y*t1_76 - cos_theta*delta_z*t1_33 - delta_x*sin_theta*t1_76 - delta_y*sin_theta*
+                t1_19*t1_43 - sin_theta**4*t1_73 - t1_0*t1_70 - t1_10*t1_25 - 2*t1_12*t1_28 - t1_13*
+                t1_25 - t1_14*t1_37*t1_77 - t1_15*t1_42*t1_43 - t1_16*t1_25 - t1_17*t1_3*t1_56 -
+                t1_19*t1_28*t1_34*t1_50 - t1_19*t1_28*t1_37*t1_9 - t1_2*t1_25 - t1_21*t1_32*t1_59 -
+                t1_23*t1_47 - t1_23*t1_48 - t1_23*t1_49 - t1_23*t1_51 - t1_28*t1_57 - t1_28*t1_58 - 2*
+                t1_34*t1_77*t1_9 - t1_36*t1_63 - t1_36*t1_66 - t1_37*t1_43*t1_62 - t1_37*t1_43*t1_66
+                - 2*t1_37*t1_45*t1_73 - t1_37*t1_71 - t1_37*t1_74 - t1_37*t1_78 - t1_41*t1_75 - t1_43*
+                t1_45*t1_63 - t1_45*t1_50*t1_77 - t1_45*t1_71 - t1_45*t1_74 - t1_45*t1_78 - t1_73 -
+                t1_75*t1_8)
+        Q_theta += (
+                E1*b*cos_phi*cos_theta*delta_x*t1_0 + E1*b*cos_phi*delta_y*sin_theta*t1_3 + b*c1*
+                cos_phi*cos_theta*delta_x*delta_y*delta_y_dot*t1_6 + b*c1*cos_phi*cos_theta*delta_x*
+                delta_z*delta_z_dot*t1_6 + b*c1*cos_phi*cos_theta*delta_x_dot*t1_14*t1_6 + c1*
+                cos_phi*cos_theta*phi_dot*sin_phi*sin_theta*t1_14*t1_27*t1_6 + c1*cos_phi*delta_x*
+                delta_y*phi_dot*sin_phi*t1_27*t1_45*t1_6 + c1*cos_phi*delta_y*delta_z_dot*sin_phi*
+                sin_theta*t1_27*t1_6 + 2*c1*cos_theta*delta_x*delta_y*sin_theta*t1_27*t1_31*t1_6*
+                theta_dot + c1*cos_theta*delta_x*phi_dot*sin_phi*t1_31*t1_39*t1_6 + c1*cos_theta*
+                delta_y*delta_y_dot*sin_theta*t1_27*t1_31*t1_6 + c1*delta_x_dot*delta_y*t1_27*t1_31*
+                t1_37*t1_6 + c1*delta_y*delta_z*phi_dot*sin_theta*t1_27*t1_31*t1_6 + c1*delta_y*
+                phi_dot*sin_phi*sin_theta*t1_31*t1_39*t1_45*t1_6 + c1*delta_y*phi_dot*sin_phi*
+                t1_31*t1_39*t1_42*t1_6 - cos_theta*t1_1*t1_17*t1_3 - delta_x*t1_11*t1_79 - delta_x*
+                t1_53 - delta_y*t1_46 - t1_14*t1_19*t1_54 - t1_18*t1_47 - t1_18*t1_48 - t1_18*t1_49 -
+                t1_18*t1_51 - t1_19*t1_38*t1_50 - t1_29*t1_75 - t1_35*t1_50*t1_79 - t1_36*t1_80 -
+                t1_37*t1_43*t1_80 - t1_37*t1_65*t1_9 - t1_40*t1_57)
         Q_psi += 0
         Q_r += 0
         Q_nu += 0
-    lambda2 = math.sqrt((-a*sin_phi - delta_z)**2 + (-a*cos_phi*cos_theta - delta_y)**2 + (-a*cos_phi*sin_theta - delta_x)**2)
+    lambda2 = (
+            math.sqrt((-a*sin_phi - delta_z)**2 + (-a*cos_phi*cos_theta - delta_y)**2 + (-a*cos_phi*
+            sin_theta - delta_x)**2))
     if lambda2 > l20:  # tether 2 taut: spring2, damper2
         t2_0 = 1/l20
         t2_1 = E2*delta_x
@@ -419,11 +524,69 @@ def rhs(t, y, p, dydt):
         t2_110 = t2_30*t2_78
         t2_111 = 2*t2_102
         t2_112 = t2_111*t2_48
-        Q_delta_x += E2*a*cos_phi*sin_theta*t2_3 + E2*delta_x*t2_3 + a*c2*cos_phi*delta_x*delta_y*sin_theta*t2_6*theta_dot + a*c2*cos_theta*delta_x*delta_y*phi_dot*sin_phi*t2_6 + a*c2*phi_dot*sin_phi*sin_theta*t2_14*t2_6 + c2*cos_phi*cos_theta*delta_y*phi_dot*sin_phi*sin_theta*t2_30*t2_6 + 2*c2*cos_phi*delta_x*phi_dot*sin_phi*t2_30*t2_44*t2_6 + c2*cos_phi*delta_x*phi_dot*sin_phi*t2_30*t2_48*t2_6 + c2*delta_y*t2_30*t2_34*t2_44*t2_6*theta_dot + c2*phi_dot*sin_phi*sin_theta*t2_34*t2_40*t2_48*t2_6 + c2*phi_dot*sin_phi*t2_34*t2_40*t2_49*t2_6 - delta_x*t2_21 - sin_theta*t2_0*t2_5 - sin_theta*t2_33 - sin_theta*t2_39 - t2_10 - t2_12*t2_26 - t2_13 - t2_15*t2_45 - t2_16 - t2_17*t2_18 - t2_2 - t2_20*t2_29 - t2_23*t2_24 - t2_25*t2_26 - 2*t2_26*t2_27 - t2_32 - t2_36*t2_37 - t2_43 - t2_46*t2_47
-        Q_delta_y += E2*a*cos_phi*cos_theta*t2_3 + E2*delta_y*t2_3 + a*c2*cos_phi*sin_theta*t2_54*t2_6*theta_dot + a*c2*cos_theta*phi_dot*sin_phi*t2_54*t2_6 + a*c2*delta_x*delta_y*phi_dot*sin_phi*sin_theta*t2_6 + c2*cos_phi*cos_theta*delta_x*phi_dot*sin_phi*sin_theta*t2_30*t2_6 + c2*cos_phi*delta_y*phi_dot*sin_phi*t2_30*t2_44*t2_6 + 2*c2*cos_phi*delta_y*phi_dot*sin_phi*t2_30*t2_48*t2_6 + c2*cos_theta*delta_y*sin_theta*t2_30*t2_34*t2_6*theta_dot + c2*cos_theta*phi_dot*sin_phi*t2_34*t2_40*t2_44*t2_6 + c2*phi_dot*sin_phi*t2_34*t2_40*t2_6*t2_63 - cos_theta*t2_0*t2_5 - cos_theta*t2_33 - cos_theta*t2_39 - delta_y*t2_11*t2_17 - delta_y*t2_56 - t2_12*t2_20 - 2*t2_20*t2_25 - t2_20*t2_27 - t2_20*t2_58 - t2_24*t2_57 - t2_31*t2_57 - t2_37*t2_59 - t2_46*t2_62 - t2_51 - t2_52 - t2_53 - t2_55 - t2_60 - t2_61
-        Q_delta_z += E2*a*sin_phi*t2_3 + E2*delta_z*t2_3 + a*c2*cos_phi*delta_y*delta_z*sin_theta*t2_6*theta_dot + a*c2*cos_theta*delta_y*delta_z*phi_dot*sin_phi*t2_6 + a*c2*delta_x*delta_z*phi_dot*sin_phi*sin_theta*t2_6 + c2*cos_phi*delta_y*sin_phi*sin_theta*t2_30*t2_6*theta_dot + c2*cos_phi*delta_z*phi_dot*sin_phi*t2_30*t2_44*t2_6 + c2*cos_phi*delta_z*phi_dot*sin_phi*t2_30*t2_48*t2_6 + c2*cos_phi*phi_dot*t2_40*t2_44*t2_6*t2_72 + c2*cos_phi*phi_dot*t2_40*t2_48*t2_6*t2_72 + c2*cos_theta*delta_y*phi_dot*t2_30*t2_6*t2_72 + c2*delta_x*phi_dot*sin_theta*t2_30*t2_6*t2_72 - delta_z*t2_20*t2_46 - delta_z*t2_21 - delta_z*t2_56 - sin_phi*t2_0*t2_4 - t2_17*t2_25 - t2_17*t2_27 - t2_17*t2_70 - t2_19*t2_71 - t2_31*t2_75 - t2_31*t2_76 - t2_31*t2_81 - t2_65 - t2_66 - t2_67 - t2_69 - t2_74 - t2_79 - t2_80
-        Q_phi += -cos_theta**4*t2_102 - delta_x*t2_106*t2_49 + delta_x*t2_8*t2_93 - delta_y*t2_106*t2_63 + delta_y*t2_15*t2_93 - sin_theta**4*t2_102 - t2_1*t2_3*t2_83 + t2_10*t2_83 - t2_100*t2_104 + t2_100*t2_35*t2_95 - t2_101*t2_48 + t2_101 - t2_102 + t2_103*t2_46 + t2_103*t2_8 + t2_104*t2_15 - t2_105*t2_46 + t2_106*t2_91 + t2_106*t2_92 + t2_107*t2_44 - t2_107 - t2_108*t2_44 + t2_108*t2_48 - t2_109*t2_28 - t2_110*t2_14*t2_44 - 2*t2_110*t2_37*t2_9 - t2_110*t2_48*t2_54 + t2_111*t2_44 - t2_112*t2_44 + t2_112 + t2_13*t2_83 + t2_16*t2_83 + t2_19*t2_3*t2_64 - t2_19*t2_65 - t2_19*t2_66 - t2_19*t2_67 - t2_19*t2_69 + t2_2*t2_83 + t2_29*t2_93 - t2_31*t2_70 + 2*t2_32*t2_95 - t2_35*t2_71 - t2_36*t2_94 - 2*t2_44*t2_79*t2_91 - t2_44*t2_85 + t2_44*t2_87 + 2*t2_44*t2_88 + t2_44*t2_89 + t2_44*t2_90 + t2_44*t2_96 + t2_44*t2_98 + t2_44*t2_99 - 2*t2_48*t2_79*t2_92 - t2_48*t2_85 + t2_48*t2_87 + t2_48*t2_88 + 2*t2_48*t2_89 + t2_48*t2_90 + t2_48*t2_97 + t2_48*t2_98 + t2_48*t2_99 + t2_51*t2_82 + t2_52*t2_82 + t2_53*t2_82 + t2_55*t2_82 - t2_59*t2_95 + t2_74*t2_91 + t2_74*t2_92 + t2_80*t2_91 - t2_82*t2_86 + t2_85 - t2_87 - t2_88 - t2_89 - t2_90 - t2_96 - t2_97 - t2_98
-        Q_theta += E2*a*cos_phi*cos_theta*delta_x*t2_3 + E2*a*cos_phi*delta_y*sin_theta*t2_0 + a*c2*cos_phi*delta_x*delta_x_dot*delta_y*sin_theta*t2_6 + a*c2*cos_phi*delta_y*delta_z*delta_z_dot*sin_theta*t2_6 + a*c2*cos_phi*delta_y_dot*sin_theta*t2_54*t2_6 + c2*cos_phi*cos_theta*phi_dot*sin_phi*sin_theta*t2_14*t2_30*t2_6 + c2*cos_phi*delta_x*delta_y*phi_dot*sin_phi*t2_30*t2_48*t2_6 + c2*cos_phi*delta_y*delta_z_dot*sin_phi*sin_theta*t2_30*t2_6 + 2*c2*cos_theta*delta_x*delta_y*sin_theta*t2_30*t2_34*t2_6*theta_dot + c2*cos_theta*delta_x*phi_dot*sin_phi*t2_34*t2_40*t2_44*t2_6 + c2*cos_theta*delta_y*delta_y_dot*sin_theta*t2_30*t2_34*t2_6 + c2*delta_x*phi_dot*sin_phi*t2_34*t2_40*t2_6*t2_63 + c2*delta_x_dot*delta_y*t2_30*t2_34*t2_44*t2_6 + c2*delta_y*delta_z*phi_dot*sin_theta*t2_30*t2_34*t2_6 + c2*delta_y*phi_dot*sin_phi*sin_theta*t2_34*t2_40*t2_6 - cos_theta*t2_18*t2_31 - delta_x*t2_60 - delta_x*t2_61 - delta_y*t2_42*t2_49 - delta_y*t2_43*t2_48 - t2_10*t2_20 - t2_105*t2_23 - t2_109*t2_22 - t2_13*t2_20 - t2_16*t2_20 - t2_2*t2_20 - t2_22*t2_31*t2_44*t2_9 - t2_26*t2_86 - t2_27*t2_47 - t2_28*t2_45*t2_54 - t2_29*t2_62
+        Q_delta_x += (
+                E2*a*cos_phi*sin_theta*t2_3 + E2*delta_x*t2_3 + a*c2*cos_phi*delta_x*delta_y*
+                sin_theta*t2_6*theta_dot + a*c2*cos_theta*delta_x*delta_y*phi_dot*sin_phi*t2_6 + a*
+                c2*phi_dot*sin_phi*sin_theta*t2_14*t2_6 + c2*cos_phi*cos_theta*delta_y*phi_dot*
+                sin_phi*sin_theta*t2_30*t2_6 + 2*c2*cos_phi*delta_x*phi_dot*sin_phi*t2_30*t2_44*
+                t2_6 + c2*cos_phi*delta_x*phi_dot*sin_phi*t2_30*t2_48*t2_6 + c2*delta_y*t2_30*
+                t2_34*t2_44*t2_6*theta_dot + c2*phi_dot*sin_phi*sin_theta*t2_34*t2_40*t2_48*t2_6 +
+                c2*phi_dot*sin_phi*t2_34*t2_40*t2_49*t2_6 - delta_x*t2_21 - sin_theta*t2_0*t2_5 -
+                sin_theta*t2_33 - sin_theta*t2_39 - t2_10 - t2_12*t2_26 - t2_13 - t2_15*t2_45 - t2_16 -
+                t2_17*t2_18 - t2_2 - t2_20*t2_29 - t2_23*t2_24 - t2_25*t2_26 - 2*t2_26*t2_27 - t2_32 -
+                t2_36*t2_37 - t2_43 - t2_46*t2_47)
+        Q_delta_y += (
+                E2*a*cos_phi*cos_theta*t2_3 + E2*delta_y*t2_3 + a*c2*cos_phi*sin_theta*t2_54*t2_6*
+                theta_dot + a*c2*cos_theta*phi_dot*sin_phi*t2_54*t2_6 + a*c2*delta_x*delta_y*
+                phi_dot*sin_phi*sin_theta*t2_6 + c2*cos_phi*cos_theta*delta_x*phi_dot*sin_phi*
+                sin_theta*t2_30*t2_6 + c2*cos_phi*delta_y*phi_dot*sin_phi*t2_30*t2_44*t2_6 + 2*c2*
+                cos_phi*delta_y*phi_dot*sin_phi*t2_30*t2_48*t2_6 + c2*cos_theta*delta_y*sin_theta*
+                t2_30*t2_34*t2_6*theta_dot + c2*cos_theta*phi_dot*sin_phi*t2_34*t2_40*t2_44*t2_6 +
+                c2*phi_dot*sin_phi*t2_34*t2_40*t2_6*t2_63 - cos_theta*t2_0*t2_5 - cos_theta*t2_33 -
+                cos_theta*t2_39 - delta_y*t2_11*t2_17 - delta_y*t2_56 - t2_12*t2_20 - 2*t2_20*t2_25 -
+                t2_20*t2_27 - t2_20*t2_58 - t2_24*t2_57 - t2_31*t2_57 - t2_37*t2_59 - t2_46*t2_62 -
+                t2_51 - t2_52 - t2_53 - t2_55 - t2_60 - t2_61)
+        Q_delta_z += (
+                E2*a*sin_phi*t2_3 + E2*delta_z*t2_3 + a*c2*cos_phi*delta_y*delta_z*sin_theta*t2_6*
+                theta_dot + a*c2*cos_theta*delta_y*delta_z*phi_dot*sin_phi*t2_6 + a*c2*delta_x*
+                delta_z*phi_dot*sin_phi*sin_theta*t2_6 + c2*cos_phi*delta_y*sin_phi*sin_theta*t2_30*
+                t2_6*theta_dot + c2*cos_phi*delta_z*phi_dot*sin_phi*t2_30*t2_44*t2_6 + c2*cos_phi*
+                delta_z*phi_dot*sin_phi*t2_30*t2_48*t2_6 + c2*cos_phi*phi_dot*t2_40*t2_44*t2_6*
+                t2_72 + c2*cos_phi*phi_dot*t2_40*t2_48*t2_6*t2_72 + c2*cos_theta*delta_y*phi_dot*
+                t2_30*t2_6*t2_72 + c2*delta_x*phi_dot*sin_theta*t2_30*t2_6*t2_72 - delta_z*t2_20*
+                t2_46 - delta_z*t2_21 - delta_z*t2_56 - sin_phi*t2_0*t2_4 - t2_17*t2_25 - t2_17*t2_27 -
+                t2_17*t2_70 - t2_19*t2_71 - t2_31*t2_75 - t2_31*t2_76 - t2_31*t2_81 - t2_65 - t2_66 -
+                t2_67 - t2_69 - t2_74 - t2_79 - t2_80)
+        Q_phi += (
+                -cos_theta**4*t2_102 - delta_x*t2_106*t2_49 + delta_x*t2_8*t2_93 - delta_y*t2_106*
+                t2_63 + delta_y*t2_15*t2_93 - sin_theta**4*t2_102 - t2_1*t2_3*t2_83 + t2_10*t2_83 -
+                t2_100*t2_104 + t2_100*t2_35*t2_95 - t2_101*t2_48 + t2_101 - t2_102 + t2_103*t2_46 +
+                t2_103*t2_8 + t2_104*t2_15 - t2_105*t2_46 + t2_106*t2_91 + t2_106*t2_92 + t2_107*t2_44
+                - t2_107 - t2_108*t2_44 + t2_108*t2_48 - t2_109*t2_28 - t2_110*t2_14*t2_44 - 2*t2_110*
+                t2_37*t2_9 - t2_110*t2_48*t2_54 + t2_111*t2_44 - t2_112*t2_44 + t2_112 + t2_13*t2_83 +
+                t2_16*t2_83 + t2_19*t2_3*t2_64 - t2_19*t2_65 - t2_19*t2_66 - t2_19*t2_67 - t2_19*t2_69
+                + t2_2*t2_83 + t2_29*t2_93 - t2_31*t2_70 + 2*t2_32*t2_95 - t2_35*t2_71 - t2_36*t2_94 -
+                2*t2_44*t2_79*t2_91 - t2_44*t2_85 + t2_44*t2_87 + 2*t2_44*t2_88 + t2_44*t2_89 +
+                t2_44*t2_90 + t2_44*t2_96 + t2_44*t2_98 + t2_44*t2_99 - 2*t2_48*t2_79*t2_92 - t2_48*
+                t2_85 + t2_48*t2_87 + t2_48*t2_88 + 2*t2_48*t2_89 + t2_48*t2_90 + t2_48*t2_97 + t2_48*
+                t2_98 + t2_48*t2_99 + t2_51*t2_82 + t2_52*t2_82 + t2_53*t2_82 + t2_55*t2_82 - t2_59*
+                t2_95 + t2_74*t2_91 + t2_74*t2_92 + t2_80*t2_91 - t2_82*t2_86 + t2_85 - t2_87 - t2_88 -
+                t2_89 - t2_90 - t2_96 - t2_97 - t2_98)
+        Q_theta += (
+                E2*a*cos_phi*cos_theta*delta_x*t2_3 + E2*a*cos_phi*delta_y*sin_theta*t2_0 + a*c2*
+                cos_phi*delta_x*delta_x_dot*delta_y*sin_theta*t2_6 + a*c2*cos_phi*delta_y*delta_z*
+                delta_z_dot*sin_theta*t2_6 + a*c2*cos_phi*delta_y_dot*sin_theta*t2_54*t2_6 + c2*
+                cos_phi*cos_theta*phi_dot*sin_phi*sin_theta*t2_14*t2_30*t2_6 + c2*cos_phi*delta_x*
+                delta_y*phi_dot*sin_phi*t2_30*t2_48*t2_6 + c2*cos_phi*delta_y*delta_z_dot*sin_phi*
+                sin_theta*t2_30*t2_6 + 2*c2*cos_theta*delta_x*delta_y*sin_theta*t2_30*t2_34*t2_6*
+                theta_dot + c2*cos_theta*delta_x*phi_dot*sin_phi*t2_34*t2_40*t2_44*t2_6 + c2*
+                cos_theta*delta_y*delta_y_dot*sin_theta*t2_30*t2_34*t2_6 + c2*delta_x*phi_dot*
+                sin_phi*t2_34*t2_40*t2_6*t2_63 + c2*delta_x_dot*delta_y*t2_30*t2_34*t2_44*t2_6 +
+                c2*delta_y*delta_z*phi_dot*sin_theta*t2_30*t2_34*t2_6 + c2*delta_y*phi_dot*sin_phi*
+                sin_theta*t2_34*t2_40*t2_6 - cos_theta*t2_18*t2_31 - delta_x*t2_60 - delta_x*t2_61 -
+                delta_y*t2_42*t2_49 - delta_y*t2_43*t2_48 - t2_10*t2_20 - t2_105*t2_23 - t2_109*t2_22
+                - t2_13*t2_20 - t2_16*t2_20 - t2_2*t2_20 - t2_22*t2_31*t2_44*t2_9 - t2_26*t2_86 -
+                t2_27*t2_47 - t2_28*t2_45*t2_54 - t2_29*t2_62)
         Q_psi += 0
         Q_r += 0
         Q_nu += 0
@@ -462,7 +625,9 @@ def rhs(t, y, p, dydt):
     fb31 = delta_z**2
     fb32 = 6*fb16
     fb33 = delta_y*fb32
-    fb34 = delta_y*fb0*fb7 + delta_y*fb5 - fb18*fb30 + fb18*fb33 - 15*fb22*fb23 + (15/4)*fb22*fb28 + (45/4)*fb22*fb31 - fb26*m3 - fb27 + fb28*fb30 + fb30*fb31 + fb5*r
+    fb34 = (
+            delta_y*fb0*fb7 + delta_y*fb5 - fb18*fb30 + fb18*fb33 - 15*fb22*fb23 + (15/4)*fb22*fb28
+            + (45/4)*fb22*fb31 - fb26*m3 - fb27 + fb28*fb30 + fb30*fb31 + fb5*r)
     fb35 = delta_y*delta_z
     fb36 = I1_yaw*cos_phi
     fb37 = psi_dot*theta_dot
@@ -714,7 +879,14 @@ def rhs(t, y, p, dydt):
     fb283 = cos_theta*fb234
     fb284 = fb270*sin_phi
     fb285 = fb268*sin_phi
-    fb286 = -fb103*fb284 + fb103*fb285 - fb104*fb284 + fb104*fb285 - fb106*fb284 + fb106*fb285 + fb119*fb273 - fb119*fb275 - fb120*fb273 + fb120*fb275 - fb137*fb273 + fb137*fb275 + fb152*fb273 - fb152*fb275 + fb261*sin_phi + fb262*sin_phi - fb263*fb48 - fb263*fb57 - fb264*sin_phi - fb265*fb55 - fb265*fb58 - fb266*sin_phi - fb268*fb43 - fb268*fb46 + fb270*fb43 + fb270*fb46 - fb271*fb272 - fb272*fb274 - fb272*fb276 - fb272*fb277 + fb272*fb279 + fb272*fb280 + fb272*fb281 + fb272*fb282 - fb278*fb59 + fb283*fb59 - fb284*fb99 + fb285*fb99 + fb36*fb41 + fb38*fb41 + fb41*fb70 + fb41*fb72 + fb41*fb73 + fb41*fb74
+    fb286 = (
+            -fb103*fb284 + fb103*fb285 - fb104*fb284 + fb104*fb285 - fb106*fb284 + fb106*fb285 + fb119*
+            fb273 - fb119*fb275 - fb120*fb273 + fb120*fb275 - fb137*fb273 + fb137*fb275 + fb152*fb273 -
+            fb152*fb275 + fb261*sin_phi + fb262*sin_phi - fb263*fb48 - fb263*fb57 - fb264*sin_phi -
+            fb265*fb55 - fb265*fb58 - fb266*sin_phi - fb268*fb43 - fb268*fb46 + fb270*fb43 + fb270*
+            fb46 - fb271*fb272 - fb272*fb274 - fb272*fb276 - fb272*fb277 + fb272*fb279 + fb272*fb280 +
+            fb272*fb281 + fb272*fb282 - fb278*fb59 + fb283*fb59 - fb284*fb99 + fb285*fb99 + fb36*fb41
+            + fb38*fb41 + fb41*fb70 + fb41*fb72 + fb41*fb73 + fb41*fb74)
     fb287 = fb267*fb52
     fb288 = fb267*fb49
     fb289 = fb269*fb52
@@ -802,11 +974,122 @@ def rhs(t, y, p, dydt):
     B0 = Q_delta_x - 3/2*delta_x*fb19 + delta_x*fb5 - delta_x*fb8 + fb13*fb9 + fb2 + (15/2)*fb22*fb9 + fb3
     B1 = Q_delta_y + (9/2)*fb24 + fb34
     B2 = Q_delta_z - 9/2*delta_z*fb19 - delta_z*fb8 + fb13*fb35 + (45/2)*fb22*fb35
-    B3 = 12*I1_pitch*b*cos_psi*fb10*fb107*fb90*mu*sin_psi*sin_theta + 3*I1_pitch*b*cos_psi*fb10*fb107*mu*sin_psi*sin_theta + 3*I1_pitch*b*cos_psi*fb10*fb116*fb138*mu*sin_psi + 3*I1_pitch*b*cos_theta*fb10*fb102*fb49*fb89*mu + 6*I1_pitch*b*cos_theta*fb10*fb107*fb49*mu*sin_phi + (3/2)*I1_pitch*b*cos_theta*fb10*mu*sin_phi + 9*I1_pitch*b*fb10*fb107*fb132*fb49*mu*sin_phi + 2*I1_pitch*cos_phi*fb49*nu_dot*sin_phi*theta_dot + I1_pitch*cos_phi*fb49*psi_dot*theta_dot + I1_pitch*cos_phi*fb52*nu_dot*psi_dot + 3*I1_roll*b*cos_psi*fb10*fb107*fb138*mu*sin_psi + 12*I1_roll*b*cos_psi*fb10*fb116*fb90*mu*sin_psi*sin_theta + 3*I1_roll*b*cos_psi*fb10*fb116*mu*sin_psi*sin_theta + 3*I1_roll*b*cos_theta*fb10*fb102*fb52*fb89*mu + 6*I1_roll*b*cos_theta*fb10*fb107*fb52*mu*sin_phi + (3/2)*I1_roll*b*cos_theta*fb10*mu*sin_phi + 9*I1_roll*b*fb10*fb107*fb132*fb52*mu*sin_phi + 3*I1_roll*cos_phi*cos_psi*cos_theta*fb6*mu*sin_psi*sin_theta + I1_roll*cos_phi*fb49*nu_dot*psi_dot + 2*I1_roll*cos_phi*fb52*nu_dot*sin_phi*theta_dot + I1_roll*cos_phi*fb52*psi_dot*theta_dot + 2*I1_roll*cos_psi*phi_dot*psi_dot*sin_psi - I1_roll*fb144*fb49 + 9*I1_yaw*b*cos_theta*fb10*fb102*fb107*mu*sin_phi + 3*I1_yaw*b*cos_theta*fb10*fb89*mu + (3/2)*I1_yaw*b*cos_theta*fb10*mu*sin_phi + I1_yaw*cos_phi*fb4*sin_phi + I1_yaw*cos_phi*fb47*sin_phi + 3*I1_yaw*cos_phi*fb6*fb90*mu*sin_phi + I1_yaw*cos_phi*nu_dot*psi_dot + 3*I2_pitch*a*cos_psi*fb10*fb107*fb138*mu*sin_psi + 12*I2_pitch*a*cos_psi*fb10*fb116*fb90*mu*sin_psi*sin_theta + 3*I2_pitch*a*cos_psi*fb10*fb116*mu*sin_psi*sin_theta + 6*I2_pitch*a*cos_theta*fb10*fb102*fb107*fb49*mu*sin_phi + (15/2)*I2_pitch*a*cos_theta*fb10*fb102*fb52*mu*sin_phi + 3*I2_pitch*a*cos_theta*fb10*fb49*fb89*mu + (9/2)*I2_pitch*a*fb10*fb132*fb49*fb89*mu + 2*I2_pitch*cos_phi*fb49*nu_dot*sin_phi*theta_dot + I2_pitch*cos_phi*fb49*psi_dot*theta_dot + I2_pitch*cos_phi*fb52*nu_dot*psi_dot - I2_pitch*fb39*fb42 + 12*I2_roll*a*cos_psi*fb10*fb107*fb90*mu*sin_psi*sin_theta + 3*I2_roll*a*cos_psi*fb10*fb107*mu*sin_psi*sin_theta + 3*I2_roll*a*cos_psi*fb10*fb116*fb138*mu*sin_psi + 6*I2_roll*a*cos_theta*fb10*fb102*fb107*fb52*mu*sin_phi + (15/2)*I2_roll*a*cos_theta*fb10*fb102*fb49*mu*sin_phi + 3*I2_roll*a*cos_theta*fb10*fb52*fb89*mu + (9/2)*I2_roll*a*fb10*fb132*fb52*fb89*mu + 3*I2_roll*cos_phi*cos_psi*cos_theta*fb6*mu*sin_psi*sin_theta + I2_roll*cos_phi*fb49*nu_dot*psi_dot + 2*I2_roll*cos_phi*fb52*nu_dot*sin_phi*theta_dot + I2_roll*cos_phi*fb52*psi_dot*theta_dot + 2*I2_roll*cos_psi*phi_dot*psi_dot*sin_psi + 6*I2_yaw*a*cos_theta*fb10*fb107*mu*sin_phi + (27/2)*I2_yaw*a*fb10*fb107*fb132*mu*sin_phi + I2_yaw*cos_phi*fb4*sin_phi + I2_yaw*cos_phi*fb47*sin_phi + 3*I2_yaw*cos_phi*fb6*fb90*mu*sin_phi + I2_yaw*cos_phi*nu_dot*psi_dot + (3/2)*J2*b*cos_theta*fb10*fb17*m1*mu*sin_phi + (3/2)*J2*cos_phi*fb102*fb14*fb17*fb79*m2*mu*sin_phi + (3/2)*J2*cos_phi*fb102*fb14*fb17*fb81*m1*mu*sin_phi + (45/4)*J2*cos_theta*fb102*fb107*fb111*fb17*fb20*m2*mu*sin_phi + (45/2)*J2*cos_theta*fb107*fb112*fb17*fb20*m1*mu*sin_phi + (45/4)*J2*cos_theta*fb111*fb17*fb20*fb89*m2*mu + 15*J2*fb107*fb112*fb132*fb17*fb20*m1*mu*sin_phi + Q_phi + a*cos_theta*fb4*m2*r*sin_phi + 2*a*m2*nu_dot*r_dot*sin_phi*sin_theta + b*cos_theta*fb25*m1*mu*sin_phi + cos_phi*fb102*fb6*fb79*m2*mu*sin_phi + cos_phi*fb102*fb6*fb81*m1*mu*sin_phi + 2*cos_phi*fb102*fb79*m2*nu_dot*sin_phi*theta_dot + 2*cos_phi*fb102*fb81*m1*nu_dot*sin_phi*theta_dot + cos_phi*fb79*fb80*m2*sin_phi + 2*cos_phi*fb79*fb90*m2*nu_dot*sin_phi*theta_dot + cos_phi*fb80*fb81*m1*sin_phi + 2*cos_phi*fb81*fb90*m1*nu_dot*sin_phi*theta_dot + (9/2)*cos_theta*fb10*fb102*fb107*fb111*m2*mu*sin_phi + 3*cos_theta*fb10*fb107*fb112*m1*mu*sin_phi + (3/2)*cos_theta*fb10*fb111*fb89*m2*mu + (9/2)*fb10*fb107*fb111*fb132*m2*mu*sin_phi - fb101*fb102 - fb101*fb90 - fb102*fb105 - fb102*fb126*fb176 - fb102*fb130*fb176 - fb102*fb146*fb171 - fb102*fb153*fb171 - fb102*fb155*fb156*fb76 - fb102*fb163*fb174*fb63 - fb103*fb69 - fb103*fb71 - fb104*fb177 - fb104*fb69 - fb104*fb71 - fb105*fb90 - fb106*fb69 - fb106*fb71 - 27/2*fb108*fb11*fb133*sin_phi - fb108*fb110 - fb113*fb174*fb92 - fb113*fb29*fb92 - fb115*fb117 - fb115*fb119 - fb116*fb140*fb145 - fb116*fb149*fb151 - fb117*fb168 - fb119*fb168 - fb120*fb121 - fb120*fb169 - fb121*fb123 - fb123*fb169 - fb125*fb76 - fb126*fb127 - fb126*fb133*fb162 - fb127*fb130 - fb128*fb129 - fb130*fb133*fb162 - fb131*fb72 - fb131*fb73 - fb131*fb74 - fb134*fb85 - fb134*fb88 - fb136*fb164*fb179 - fb136*fb178*fb63 - fb136*fb63*fb93 - fb137*fb140 - fb141*fb144 - fb147*fb148 - fb147*fb170 - fb148*fb154 - fb151*fb152 - fb154*fb170 - fb160*fb83 - fb160*fb87 - fb161*fb163*fb164 - fb163*fb175*fb63 - fb177*fb99 - fb36*fb37 - fb37*fb38 - fb40*fb42 - fb43*fb45 - fb45*fb46 - fb48*fb51 - fb48*fb53 - fb48*fb98 - fb51*fb57 - fb53*fb57 - fb54*fb55 - fb54*fb58 - fb55*fb56 - fb56*fb58 - fb57*fb98 - fb59*fb62 - fb63*fb65 - fb67*fb68 - fb69*fb70 - fb69*fb72 - fb69*fb73 - fb69*fb74 - fb69*fb99 - fb70*fb71 - fb71*fb72 - fb71*fb73 - fb71*fb74 - fb71*fb99 - fb75*fb76 - fb76*fb77 - fb76*fb78 - fb85 - fb88 - fb91*fb94
-    B4 = I1_pitch*fb203 - I1_roll*fb184 + I2_pitch*fb203 - I2_roll*fb184 + Q_theta + a*fb180*fb181 + fb108*fb97 - fb113*fb193 - fb113*fb231 - fb114*fb198 + fb114*fb205 + fb122*fb131 - fb122*fb197 - 39/2*fb129*fb165*fb251 + fb130*fb204 + fb131*fb145 - fb131*fb149 - fb131*fb40 + fb135*fb193 + fb135*fb231 - fb141*fb97 - fb145*fb197 + fb149*fb197 + fb153*fb204 + fb155*fb97 - fb181*fb65 + fb182*fb183 + fb183*fb194 + fb183*fb195 - fb183*fb67 - fb185*fb97 + fb188*fb189 - fb188*fb91 - fb190*fb75 - fb190*fb77 - fb191*fb192 + fb191*fb196 + fb197*fb40 - fb200*fb254 - fb200*fb97 - fb202*fb254 - fb202*fb97 - fb206*fb207 + fb207*fb223 - fb207*fb252 - fb208*fb209 + fb208*fb229 - fb209*fb210 + fb210*fb229 - fb212*fb213 + fb212*fb216 - fb213*fb250 - fb214*fb215 + fb214*fb248 + fb215*fb217 + fb216*fb250 - fb217*fb248 + fb218*fb220 + fb218*fb222 - fb220*fb224 - fb222*fb224 - fb225*fb70 - fb225*fb72 - fb226*fb73 - fb226*fb74 + fb227*fb70 + fb227*fb72 + fb228*fb73 + fb228*fb74 - fb232*fb233 + fb233*fb234 - fb235*fb241 + fb235*fb258 - fb236*fb238 + fb238*fb246 - fb239*fb240 + fb240*fb247 + fb241*fb244 - fb242*fb243 + fb242*fb259 + fb243*fb245 - fb244*fb258 - fb245*fb259 + fb256*fb73 + fb256*fb74 + fb286
-    B5 = I1_roll*fb292 + I1_roll*fb294 - I2_pitch*fb292 + I2_roll*fb292 + I2_roll*fb294 + Q_psi + cos_theta*fb244*fb303*fb304 + cos_theta*fb247*fb310 - fb102*fb309 + fb102*fb311 + fb109*fb251*fb305 + fb116*fb302*fb303 + fb119*fb4 - fb119*fb45 + fb119*fb47 - fb120*fb4 + fb120*fb45 - fb120*fb47 - fb122*fb300 - fb126*fb293 + fb129*fb237*fb61 - fb130*fb293 - fb137*fb4 + fb137*fb45 - fb137*fb47 + fb141*fb293 - fb145*fb300 - fb146*fb293 + fb149*fb300 + fb152*fb4 - fb152*fb45 + fb152*fb47 - fb153*fb293 + fb185*fb293 - fb208*fb295 + fb208*fb312 - fb208*fb317 - fb210*fb295 + fb210*fb312 - fb210*fb317 - fb220*fb314 - fb222*fb314 + fb236*fb315 + fb239*fb318 - fb246*fb315 - fb247*fb318 - fb251*fb302 - fb261 - fb262 + fb264 + fb266 + fb267*fb36 + fb267*fb38 - fb269*fb36 - fb269*fb38 + fb271 + fb274 + fb276 + fb277 - fb279 - fb280 - fb281 - fb282 + fb287*fb48 + fb287*fb57 + fb288*fb55 + fb288*fb58 - fb289*fb48 - fb289*fb57 - fb290*fb55 - fb290*fb58 - fb291*fb40 + fb295*fb70 + fb295*fb72 + fb297*fb298 + fb297*fb299 - fb297*fb73 - fb297*fb74 + fb298*fb319 + fb299*fb319 + fb300*fb40 - fb304*fb306 - fb306*fb308 - fb307*fb310 + fb309 - fb311 - fb312*fb70 - fb312*fb72 + fb313*fb73 + fb313*fb74 + fb317*fb72 - fb319*fb73 - fb319*fb74
-    B6 = I1_roll*fb322 + I1_roll*fb336 - I1_yaw*fb29 + I2_roll*fb322 + I2_roll*fb336 + Q_r + fb108*fb323 - fb122*fb350 - fb124*m1 - fb125 + fb126*fb335 - fb139*fb235*fb359 + fb139*fb358*sin_phi + fb141*fb175 - fb145*fb350 + fb146*fb335 + fb149*fb350 + fb155*fb323 + fb175*fb185 + fb180 - fb182 - fb192*fb326 - fb194 - fb195 + fb196*fb326 - fb198*fb337 + fb199*fb211 + fb199*fb249 - fb200*fb328 + fb200*fb334 - fb200*fb348 + fb200*fb356 + fb201*fb211 + fb201*fb249 - fb202*fb328 + fb202*fb334 - fb202*fb348 + fb202*fb356 + fb205*fb337 - fb206*fb325 + fb206*fb338 - fb208*fb343 - fb210*fb343 - fb213*fb339 - fb213*fb364 - fb214*fb327 - fb214*fb340 + fb216*fb339 + fb216*fb364 + fb217*fb327 + fb217*fb340 - fb219*fb326 + fb220*fb354 - fb221*fb326 + fb222*fb354 + fb223*fb325 - fb223*fb338 - fb232*fb321 + fb234*fb321 - fb239*fb360 - 3*fb24 + fb242*fb362 + fb242*fb367 - fb244*fb366*fb61 - fb245*fb362 - fb245*fb367 + fb247*fb360 + fb251*fb338*fb70 + fb252*fb338 + fb268*fb330 - fb268*fb62 - fb270*fb330 + fb270*fb62 - fb278*fb329 - fb278*fb351 + fb278*fb45 - fb278*fb47 - fb278*fb80 - fb28*fb33 - 45/2*fb28*fb341 + fb283*fb329 + fb283*fb351 - fb283*fb45 + fb283*fb47 + fb283*fb80 - fb31*fb33 - 135/2*fb31*fb341 - fb32*fb320 + 30*fb320*fb333 + fb331*fb48 + fb331*fb55 + fb34 - fb345*fb346 + fb345*fb365 + fb346*fb355 - fb347*fb70 - fb347*fb72 - fb349*fb70 - fb349*fb72 + fb350*fb40 + fb352*fb73 + fb352*fb74 + fb353*fb73 + fb353*fb74 - fb355*fb365 + fb357*fb363 - fb358*fb61 - fb361*fb73 - fb361*fb74 + fb363*fb366 - fb64 + fb67 - fb75 - fb77 - fb78
-    B7 = Q_nu + a*cos_phi*fb47*m2*r*sin_theta + a*cos_phi*fb80*m2*r*sin_theta + 2*a*cos_theta*m2*phi_dot*r*sin_phi*theta_dot + 2*b*cos_phi*m1*nu_dot*r*sin_theta*theta_dot + 2*b*cos_theta*m1*nu_dot*phi_dot*r*sin_phi - delta_x*fb27 - delta_y*fb2 - delta_y*fb3 - fb2*r - fb232*fb369*fb45 - fb268*fb368*fb68 - fb270*fb76*m2*r - fb286 - fb3*r - fb368*fb59 - fb370*fb47 - fb370*fb80 - fb59*m2*r
+    B3 = (
+            12*I1_pitch*b*cos_psi*fb10*fb107*fb90*mu*sin_psi*sin_theta + 3*I1_pitch*b*cos_psi*
+            fb10*fb107*mu*sin_psi*sin_theta + 3*I1_pitch*b*cos_psi*fb10*fb116*fb138*mu*sin_psi +
+            3*I1_pitch*b*cos_theta*fb10*fb102*fb49*fb89*mu + 6*I1_pitch*b*cos_theta*fb10*fb107*
+            fb49*mu*sin_phi + (3/2)*I1_pitch*b*cos_theta*fb10*mu*sin_phi + 9*I1_pitch*b*fb10*
+            fb107*fb132*fb49*mu*sin_phi + 2*I1_pitch*cos_phi*fb49*nu_dot*sin_phi*theta_dot +
+            I1_pitch*cos_phi*fb49*psi_dot*theta_dot + I1_pitch*cos_phi*fb52*nu_dot*psi_dot + 3*
+            I1_roll*b*cos_psi*fb10*fb107*fb138*mu*sin_psi + 12*I1_roll*b*cos_psi*fb10*fb116*
+            fb90*mu*sin_psi*sin_theta + 3*I1_roll*b*cos_psi*fb10*fb116*mu*sin_psi*sin_theta + 3*
+            I1_roll*b*cos_theta*fb10*fb102*fb52*fb89*mu + 6*I1_roll*b*cos_theta*fb10*fb107*fb52*
+            mu*sin_phi + (3/2)*I1_roll*b*cos_theta*fb10*mu*sin_phi + 9*I1_roll*b*fb10*fb107*
+            fb132*fb52*mu*sin_phi + 3*I1_roll*cos_phi*cos_psi*cos_theta*fb6*mu*sin_psi*sin_theta +
+            I1_roll*cos_phi*fb49*nu_dot*psi_dot + 2*I1_roll*cos_phi*fb52*nu_dot*sin_phi*theta_dot +
+            I1_roll*cos_phi*fb52*psi_dot*theta_dot + 2*I1_roll*cos_psi*phi_dot*psi_dot*sin_psi -
+            I1_roll*fb144*fb49 + 9*I1_yaw*b*cos_theta*fb10*fb102*fb107*mu*sin_phi + 3*I1_yaw*b*
+            cos_theta*fb10*fb89*mu + (3/2)*I1_yaw*b*cos_theta*fb10*mu*sin_phi + I1_yaw*cos_phi*
+            fb4*sin_phi + I1_yaw*cos_phi*fb47*sin_phi + 3*I1_yaw*cos_phi*fb6*fb90*mu*sin_phi +
+            I1_yaw*cos_phi*nu_dot*psi_dot + 3*I2_pitch*a*cos_psi*fb10*fb107*fb138*mu*sin_psi + 12*
+            I2_pitch*a*cos_psi*fb10*fb116*fb90*mu*sin_psi*sin_theta + 3*I2_pitch*a*cos_psi*fb10*
+            fb116*mu*sin_psi*sin_theta + 6*I2_pitch*a*cos_theta*fb10*fb102*fb107*fb49*mu*sin_phi
+            + (15/2)*I2_pitch*a*cos_theta*fb10*fb102*fb52*mu*sin_phi + 3*I2_pitch*a*cos_theta*
+            fb10*fb49*fb89*mu + (9/2)*I2_pitch*a*fb10*fb132*fb49*fb89*mu + 2*I2_pitch*cos_phi*
+            fb49*nu_dot*sin_phi*theta_dot + I2_pitch*cos_phi*fb49*psi_dot*theta_dot + I2_pitch*
+            cos_phi*fb52*nu_dot*psi_dot - I2_pitch*fb39*fb42 + 12*I2_roll*a*cos_psi*fb10*fb107*
+            fb90*mu*sin_psi*sin_theta + 3*I2_roll*a*cos_psi*fb10*fb107*mu*sin_psi*sin_theta + 3*
+            I2_roll*a*cos_psi*fb10*fb116*fb138*mu*sin_psi + 6*I2_roll*a*cos_theta*fb10*fb102*
+            fb107*fb52*mu*sin_phi + (15/2)*I2_roll*a*cos_theta*fb10*fb102*fb49*mu*sin_phi + 3*
+            I2_roll*a*cos_theta*fb10*fb52*fb89*mu + (9/2)*I2_roll*a*fb10*fb132*fb52*fb89*mu + 3*
+            I2_roll*cos_phi*cos_psi*cos_theta*fb6*mu*sin_psi*sin_theta + I2_roll*cos_phi*fb49*
+            nu_dot*psi_dot + 2*I2_roll*cos_phi*fb52*nu_dot*sin_phi*theta_dot + I2_roll*cos_phi*fb52*
+            psi_dot*theta_dot + 2*I2_roll*cos_psi*phi_dot*psi_dot*sin_psi + 6*I2_yaw*a*cos_theta*
+            fb10*fb107*mu*sin_phi + (27/2)*I2_yaw*a*fb10*fb107*fb132*mu*sin_phi + I2_yaw*cos_phi*
+            fb4*sin_phi + I2_yaw*cos_phi*fb47*sin_phi + 3*I2_yaw*cos_phi*fb6*fb90*mu*sin_phi +
+            I2_yaw*cos_phi*nu_dot*psi_dot + (3/2)*J2*b*cos_theta*fb10*fb17*m1*mu*sin_phi + (3/2)*
+            J2*cos_phi*fb102*fb14*fb17*fb79*m2*mu*sin_phi + (3/2)*J2*cos_phi*fb102*fb14*fb17*
+            fb81*m1*mu*sin_phi + (45/4)*J2*cos_theta*fb102*fb107*fb111*fb17*fb20*m2*mu*sin_phi +
+            (45/2)*J2*cos_theta*fb107*fb112*fb17*fb20*m1*mu*sin_phi + (45/4)*J2*cos_theta*fb111*
+            fb17*fb20*fb89*m2*mu + 15*J2*fb107*fb112*fb132*fb17*fb20*m1*mu*sin_phi + Q_phi + a*
+            cos_theta*fb4*m2*r*sin_phi + 2*a*m2*nu_dot*r_dot*sin_phi*sin_theta + b*cos_theta*
+            fb25*m1*mu*sin_phi + cos_phi*fb102*fb6*fb79*m2*mu*sin_phi + cos_phi*fb102*fb6*fb81*
+            m1*mu*sin_phi + 2*cos_phi*fb102*fb79*m2*nu_dot*sin_phi*theta_dot + 2*cos_phi*fb102*
+            fb81*m1*nu_dot*sin_phi*theta_dot + cos_phi*fb79*fb80*m2*sin_phi + 2*cos_phi*fb79*fb90*
+            m2*nu_dot*sin_phi*theta_dot + cos_phi*fb80*fb81*m1*sin_phi + 2*cos_phi*fb81*fb90*m1*
+            nu_dot*sin_phi*theta_dot + (9/2)*cos_theta*fb10*fb102*fb107*fb111*m2*mu*sin_phi + 3*
+            cos_theta*fb10*fb107*fb112*m1*mu*sin_phi + (3/2)*cos_theta*fb10*fb111*fb89*m2*mu +
+            (9/2)*fb10*fb107*fb111*fb132*m2*mu*sin_phi - fb101*fb102 - fb101*fb90 - fb102*fb105 -
+            fb102*fb126*fb176 - fb102*fb130*fb176 - fb102*fb146*fb171 - fb102*fb153*fb171 - fb102*
+            fb155*fb156*fb76 - fb102*fb163*fb174*fb63 - fb103*fb69 - fb103*fb71 - fb104*fb177 -
+            fb104*fb69 - fb104*fb71 - fb105*fb90 - fb106*fb69 - fb106*fb71 - 27/2*fb108*fb11*fb133*
+            sin_phi - fb108*fb110 - fb113*fb174*fb92 - fb113*fb29*fb92 - fb115*fb117 - fb115*fb119 -
+            fb116*fb140*fb145 - fb116*fb149*fb151 - fb117*fb168 - fb119*fb168 - fb120*fb121 - fb120*
+            fb169 - fb121*fb123 - fb123*fb169 - fb125*fb76 - fb126*fb127 - fb126*fb133*fb162 - fb127*
+            fb130 - fb128*fb129 - fb130*fb133*fb162 - fb131*fb72 - fb131*fb73 - fb131*fb74 - fb134*
+            fb85 - fb134*fb88 - fb136*fb164*fb179 - fb136*fb178*fb63 - fb136*fb63*fb93 - fb137*fb140
+            - fb141*fb144 - fb147*fb148 - fb147*fb170 - fb148*fb154 - fb151*fb152 - fb154*fb170 -
+            fb160*fb83 - fb160*fb87 - fb161*fb163*fb164 - fb163*fb175*fb63 - fb177*fb99 - fb36*fb37 -
+            fb37*fb38 - fb40*fb42 - fb43*fb45 - fb45*fb46 - fb48*fb51 - fb48*fb53 - fb48*fb98 - fb51*
+            fb57 - fb53*fb57 - fb54*fb55 - fb54*fb58 - fb55*fb56 - fb56*fb58 - fb57*fb98 - fb59*fb62 -
+            fb63*fb65 - fb67*fb68 - fb69*fb70 - fb69*fb72 - fb69*fb73 - fb69*fb74 - fb69*fb99 - fb70*
+            fb71 - fb71*fb72 - fb71*fb73 - fb71*fb74 - fb71*fb99 - fb75*fb76 - fb76*fb77 - fb76*fb78 -
+            fb85 - fb88 - fb91*fb94)
+    B4 = (
+            I1_pitch*fb203 - I1_roll*fb184 + I2_pitch*fb203 - I2_roll*fb184 + Q_theta + a*fb180*fb181 +
+            fb108*fb97 - fb113*fb193 - fb113*fb231 - fb114*fb198 + fb114*fb205 + fb122*fb131 - fb122*
+            fb197 - 39/2*fb129*fb165*fb251 + fb130*fb204 + fb131*fb145 - fb131*fb149 - fb131*fb40 +
+            fb135*fb193 + fb135*fb231 - fb141*fb97 - fb145*fb197 + fb149*fb197 + fb153*fb204 + fb155*
+            fb97 - fb181*fb65 + fb182*fb183 + fb183*fb194 + fb183*fb195 - fb183*fb67 - fb185*fb97 +
+            fb188*fb189 - fb188*fb91 - fb190*fb75 - fb190*fb77 - fb191*fb192 + fb191*fb196 + fb197*
+            fb40 - fb200*fb254 - fb200*fb97 - fb202*fb254 - fb202*fb97 - fb206*fb207 + fb207*fb223 -
+            fb207*fb252 - fb208*fb209 + fb208*fb229 - fb209*fb210 + fb210*fb229 - fb212*fb213 + fb212*
+            fb216 - fb213*fb250 - fb214*fb215 + fb214*fb248 + fb215*fb217 + fb216*fb250 - fb217*fb248 +
+            fb218*fb220 + fb218*fb222 - fb220*fb224 - fb222*fb224 - fb225*fb70 - fb225*fb72 - fb226*
+            fb73 - fb226*fb74 + fb227*fb70 + fb227*fb72 + fb228*fb73 + fb228*fb74 - fb232*fb233 +
+            fb233*fb234 - fb235*fb241 + fb235*fb258 - fb236*fb238 + fb238*fb246 - fb239*fb240 + fb240*
+            fb247 + fb241*fb244 - fb242*fb243 + fb242*fb259 + fb243*fb245 - fb244*fb258 - fb245*fb259 +
+            fb256*fb73 + fb256*fb74 + fb286)
+    B5 = (
+            I1_roll*fb292 + I1_roll*fb294 - I2_pitch*fb292 + I2_roll*fb292 + I2_roll*fb294 + Q_psi +
+            cos_theta*fb244*fb303*fb304 + cos_theta*fb247*fb310 - fb102*fb309 + fb102*fb311 + fb109*
+            fb251*fb305 + fb116*fb302*fb303 + fb119*fb4 - fb119*fb45 + fb119*fb47 - fb120*fb4 + fb120*
+            fb45 - fb120*fb47 - fb122*fb300 - fb126*fb293 + fb129*fb237*fb61 - fb130*fb293 - fb137*fb4
+            + fb137*fb45 - fb137*fb47 + fb141*fb293 - fb145*fb300 - fb146*fb293 + fb149*fb300 + fb152*
+            fb4 - fb152*fb45 + fb152*fb47 - fb153*fb293 + fb185*fb293 - fb208*fb295 + fb208*fb312 -
+            fb208*fb317 - fb210*fb295 + fb210*fb312 - fb210*fb317 - fb220*fb314 - fb222*fb314 + fb236*
+            fb315 + fb239*fb318 - fb246*fb315 - fb247*fb318 - fb251*fb302 - fb261 - fb262 + fb264 + fb266
+            + fb267*fb36 + fb267*fb38 - fb269*fb36 - fb269*fb38 + fb271 + fb274 + fb276 + fb277 - fb279 -
+            fb280 - fb281 - fb282 + fb287*fb48 + fb287*fb57 + fb288*fb55 + fb288*fb58 - fb289*fb48 -
+            fb289*fb57 - fb290*fb55 - fb290*fb58 - fb291*fb40 + fb295*fb70 + fb295*fb72 + fb297*fb298
+            + fb297*fb299 - fb297*fb73 - fb297*fb74 + fb298*fb319 + fb299*fb319 + fb300*fb40 - fb304*
+            fb306 - fb306*fb308 - fb307*fb310 + fb309 - fb311 - fb312*fb70 - fb312*fb72 + fb313*fb73 +
+            fb313*fb74 + fb317*fb72 - fb319*fb73 - fb319*fb74)
+    B6 = (
+            I1_roll*fb322 + I1_roll*fb336 - I1_yaw*fb29 + I2_roll*fb322 + I2_roll*fb336 + Q_r + fb108*
+            fb323 - fb122*fb350 - fb124*m1 - fb125 + fb126*fb335 - fb139*fb235*fb359 + fb139*fb358*
+            sin_phi + fb141*fb175 - fb145*fb350 + fb146*fb335 + fb149*fb350 + fb155*fb323 + fb175*fb185
+            + fb180 - fb182 - fb192*fb326 - fb194 - fb195 + fb196*fb326 - fb198*fb337 + fb199*fb211 +
+            fb199*fb249 - fb200*fb328 + fb200*fb334 - fb200*fb348 + fb200*fb356 + fb201*fb211 + fb201*
+            fb249 - fb202*fb328 + fb202*fb334 - fb202*fb348 + fb202*fb356 + fb205*fb337 - fb206*fb325 +
+            fb206*fb338 - fb208*fb343 - fb210*fb343 - fb213*fb339 - fb213*fb364 - fb214*fb327 - fb214*
+            fb340 + fb216*fb339 + fb216*fb364 + fb217*fb327 + fb217*fb340 - fb219*fb326 + fb220*fb354 -
+            fb221*fb326 + fb222*fb354 + fb223*fb325 - fb223*fb338 - fb232*fb321 + fb234*fb321 - fb239*
+            fb360 - 3*fb24 + fb242*fb362 + fb242*fb367 - fb244*fb366*fb61 - fb245*fb362 - fb245*fb367
+            + fb247*fb360 + fb251*fb338*fb70 + fb252*fb338 + fb268*fb330 - fb268*fb62 - fb270*fb330 +
+            fb270*fb62 - fb278*fb329 - fb278*fb351 + fb278*fb45 - fb278*fb47 - fb278*fb80 - fb28*fb33
+            - 45/2*fb28*fb341 + fb283*fb329 + fb283*fb351 - fb283*fb45 + fb283*fb47 + fb283*fb80 -
+            fb31*fb33 - 135/2*fb31*fb341 - fb32*fb320 + 30*fb320*fb333 + fb331*fb48 + fb331*fb55 +
+            fb34 - fb345*fb346 + fb345*fb365 + fb346*fb355 - fb347*fb70 - fb347*fb72 - fb349*fb70 -
+            fb349*fb72 + fb350*fb40 + fb352*fb73 + fb352*fb74 + fb353*fb73 + fb353*fb74 - fb355*fb365
+            + fb357*fb363 - fb358*fb61 - fb361*fb73 - fb361*fb74 + fb363*fb366 - fb64 + fb67 - fb75 -
+            fb77 - fb78)
+    B7 = (
+            Q_nu + a*cos_phi*fb47*m2*r*sin_theta + a*cos_phi*fb80*m2*r*sin_theta + 2*a*cos_theta*
+            m2*phi_dot*r*sin_phi*theta_dot + 2*b*cos_phi*m1*nu_dot*r*sin_theta*theta_dot + 2*b*
+            cos_theta*m1*nu_dot*phi_dot*r*sin_phi - delta_x*fb27 - delta_y*fb2 - delta_y*fb3 - fb2*r
+            - fb232*fb369*fb45 - fb268*fb368*fb68 - fb270*fb76*m2*r - fb286 - fb3*r - fb368*fb59 -
+            fb370*fb47 - fb370*fb80 - fb59*m2*r)
     mm0 = delta_x*m3
     mm1 = sin_psi**2
     mm2 = cos_psi**2
@@ -824,7 +1107,9 @@ def rhs(t, y, p, dydt):
     mm14 = cos_phi**2
     mm15 = mm14*mm2
     mm16 = mm1*mm14
-    mm17 = I1_pitch*mm15 + I1_roll*mm16 + I1_yaw*mm13 + I2_pitch*mm15 + I2_roll*mm16 + I2_yaw*mm13 + mm14*mm3 + mm14*mm4
+    mm17 = (
+            I1_pitch*mm15 + I1_roll*mm16 + I1_yaw*mm13 + I2_pitch*mm15 + I2_roll*mm16 + I2_yaw*mm13 +
+            mm14*mm3 + mm14*mm4)
     mm18 = I1_yaw + I2_yaw
     mm19 = mm18*sin_phi
     mm20 = cos_phi*sin_theta
@@ -857,7 +1142,10 @@ def rhs(t, y, p, dydt):
     M3_4 = cos_phi*cos_psi*sin_psi*(-I1_pitch + I1_roll - I2_pitch + I2_roll)
     M3_5 = 0
     M3_6 = cos_theta*mm7*sin_phi
-    M3_7 = -I1_pitch*mm10 + (1/4)*I1_pitch*mm11 - I1_roll*mm12 + (1/4)*I1_roll*mm9 - I2_pitch*mm10 + (1/4)*I2_pitch*mm11 - I2_roll*mm12 + (1/4)*I2_roll*mm9 + b*m1*r*sin_phi*sin_theta - mm5*r*sin_phi*sin_theta
+    M3_7 = (
+            -I1_pitch*mm10 + (1/4)*I1_pitch*mm11 - I1_roll*mm12 + (1/4)*I1_roll*mm9 - I2_pitch*mm10 +
+            (1/4)*I2_pitch*mm11 - I2_roll*mm12 + (1/4)*I2_roll*mm9 + b*m1*r*sin_phi*sin_theta - mm5*
+            r*sin_phi*sin_theta)
     M4_4 = mm17
     M4_5 = -mm19
     M4_6 = mm20*mm7
@@ -867,7 +1155,9 @@ def rhs(t, y, p, dydt):
     M5_7 = mm19
     M6_6 = m1 + m2 + m3
     M6_7 = mm0 - mm20*mm5 + mm20*mm6
-    M7_7 = delta_x**2*m3 + delta_y**2*m3 + delta_y*m3*mm23 + m1*mm22 + m2*mm22 + m3*mm22 + mm17 - mm24*mm5 + mm24*mm6
+    M7_7 = (
+            delta_x**2*m3 + delta_y**2*m3 + delta_y*m3*mm23 + m1*mm22 + m2*mm22 + m3*mm22 + mm17 -
+            mm24*mm5 + mm24*mm6)
     if I1_yaw + I2_yaw == 0.0:  # no inertia about the boom: psi'' = 0 (docs/three-d.md)
         M0_5 = 0.0
         M1_5 = 0.0
@@ -1046,26 +1336,20 @@ def rhs(t, y, p, dydt):
 
 @njit(cache=True)
 def family_forces(y, p, out):
-    """out[f, k] = generalized force of family FAMILIES[f] on q_k (N, N, N m, N, N m)."""
+    """out[f, k] = generalized force of family FAMILIES[f] on q_k (N, N, N, N m, N m, N m, N, N m)."""
     delta_x = y[0]
     delta_y = y[1]
     delta_z = y[2]
     phi = y[3]
     theta = y[4]
-    psi = y[5]
     r = y[6]
-    nu = y[7]
     delta_x_dot = y[8]
     delta_y_dot = y[9]
     delta_z_dot = y[10]
     phi_dot = y[11]
     theta_dot = y[12]
-    psi_dot = y[13]
     r_dot = y[14]
     nu_dot = y[15]
-    m1 = p[0]
-    m2 = p[1]
-    m3 = p[2]
     A1 = p[3]
     A2 = p[4]
     A3 = p[5]
@@ -1078,27 +1362,20 @@ def family_forces(y, p, out):
     c1 = p[12]
     c2 = p[13]
     CD = p[14]
-    mu = p[15]
     omega_earth = p[16]
     rho1 = p[17]
     rho2 = p[18]
     rho3 = p[19]
-    J2 = p[20]
-    R_E = p[21]
-    I1_roll = p[22]
-    I1_pitch = p[23]
-    I1_yaw = p[24]
-    I2_roll = p[25]
-    I2_pitch = p[26]
-    I2_yaw = p[27]
     sin_phi = math.sin(phi)
     cos_phi = math.cos(phi)
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
-    sin_psi = math.sin(psi)
-    cos_psi = math.cos(psi)
-    lambda1 = math.sqrt((b*sin_phi - delta_z)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*cos_phi*sin_theta - delta_x)**2)
-    lambda2 = math.sqrt((-a*sin_phi - delta_z)**2 + (-a*cos_phi*cos_theta - delta_y)**2 + (-a*cos_phi*sin_theta - delta_x)**2)
+    lambda1 = (
+            math.sqrt((b*sin_phi - delta_z)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*cos_phi*
+            sin_theta - delta_x)**2))
+    lambda2 = (
+            math.sqrt((-a*sin_phi - delta_z)**2 + (-a*cos_phi*cos_theta - delta_y)**2 + (-a*cos_phi*
+            sin_theta - delta_x)**2))
     out[:, :] = 0.0
     # drag1: air drag on the tip-mass (3.32-3.34)
     f0_0 = b**2*cos_phi**2
@@ -1180,8 +1457,14 @@ def family_forces(y, p, out):
         out[3, 0] = E1*b*cos_phi*f3_0*sin_theta + E1*delta_x*f3_3 - f3_2 - f3_3*f3_5*sin_theta
         out[3, 1] = E1*b*cos_phi*cos_theta*f3_0 + E1*delta_y*f3_3 - cos_theta*f3_3*f3_5 - f3_6
         out[3, 2] = E1*b*f3_0*sin_phi + E1*delta_z*f3_3 - f3_0*f3_7 - f3_3*f3_4*sin_phi
-        out[3, 3] = E1*b*cos_phi*delta_z*f3_0 + E1*b*cos_theta*delta_y*f3_3*sin_phi + E1*b*delta_x*f3_3*sin_phi*sin_theta + E1*cos_phi*f3_0*f3_10*f3_12*sin_phi + E1*cos_phi*f3_0*f3_10*f3_14*sin_phi + E1*cos_phi*f3_10*f3_3*sin_phi - cos_theta*f3_6*f3_9 - f3_0*f3_11 - f3_12*f3_13 - f3_13*f3_14 - f3_2*f3_9*sin_theta - f3_3*f3_7*f3_8
-        out[3, 4] = E1*b*cos_phi*cos_theta*delta_x*f3_0 + E1*b*cos_phi*delta_y*f3_3*sin_theta - cos_theta*f3_1*f3_3*f3_8 - f3_6*f3_8*sin_theta
+        out[3, 3] = (
+                E1*b*cos_phi*delta_z*f3_0 + E1*b*cos_theta*delta_y*f3_3*sin_phi + E1*b*delta_x*
+                f3_3*sin_phi*sin_theta + E1*cos_phi*f3_0*f3_10*f3_12*sin_phi + E1*cos_phi*f3_0*
+                f3_10*f3_14*sin_phi + E1*cos_phi*f3_10*f3_3*sin_phi - cos_theta*f3_6*f3_9 - f3_0*
+                f3_11 - f3_12*f3_13 - f3_13*f3_14 - f3_2*f3_9*sin_theta - f3_3*f3_7*f3_8)
+        out[3, 4] = (
+                E1*b*cos_phi*cos_theta*delta_x*f3_0 + E1*b*cos_phi*delta_y*f3_3*sin_theta -
+                cos_theta*f3_1*f3_3*f3_8 - f3_6*f3_8*sin_theta)
         out[3, 5] = 0
         out[3, 6] = 0
         out[3, 7] = 0
@@ -1214,7 +1497,11 @@ def family_forces(y, p, out):
         out[4, 0] = f4_0*f4_7 + f4_2 - f4_3*f4_7 - f4_4
         out[4, 1] = f4_0*f4_11 - f4_10 - f4_11*f4_3 + f4_9
         out[4, 2] = f4_0*f4_12 + f4_0*f4_14 - f4_13 - f4_14*f4_3
-        out[4, 3] = E2*a*cos_phi*delta_z*f4_0 + E2*a*cos_theta*delta_y*f4_3*sin_phi + E2*a*delta_x*f4_3*sin_phi*sin_theta + E2*cos_phi*f4_0*f4_17*sin_phi + E2*cos_phi*f4_17*f4_19*f4_3*sin_phi + E2*cos_phi*f4_17*f4_21*f4_3*sin_phi - cos_theta*f4_16*f4_9 - f4_13*f4_15 - f4_16*f4_2*sin_theta - f4_18*f4_3 - f4_19*f4_20 - f4_20*f4_21
+        out[4, 3] = (
+                E2*a*cos_phi*delta_z*f4_0 + E2*a*cos_theta*delta_y*f4_3*sin_phi + E2*a*delta_x*
+                f4_3*sin_phi*sin_theta + E2*cos_phi*f4_0*f4_17*sin_phi + E2*cos_phi*f4_17*f4_19*
+                f4_3*sin_phi + E2*cos_phi*f4_17*f4_21*f4_3*sin_phi - cos_theta*f4_16*f4_9 - f4_13*
+                f4_15 - f4_16*f4_2*sin_theta - f4_18*f4_3 - f4_19*f4_20 - f4_20*f4_21)
         out[4, 4] = f4_10*f4_23 + f4_2*f4_22 - f4_22*f4_4 - f4_23*f4_9
         out[4, 5] = 0
         out[4, 6] = 0
@@ -1294,11 +1581,83 @@ def family_forces(y, p, out):
         f5_70 = f5_22*f5_63
         f5_71 = f5_37*f5_59
         f5_72 = cos_theta*f5_21
-        out[5, 0] = b*c1*cos_phi*cos_theta*delta_x*delta_y_dot*f5_0 + b*c1*cos_phi*cos_theta*f5_0*f5_8*theta_dot + 2*b*c1*cos_phi*delta_x*delta_x_dot*f5_0*sin_theta + b*c1*cos_phi*delta_x*delta_z*f5_0*phi_dot + b*c1*cos_phi*delta_y*delta_y_dot*f5_0*sin_theta + b*c1*cos_phi*delta_z*delta_z_dot*f5_0*sin_theta + b*c1*delta_x*delta_z_dot*f5_0*sin_phi + c1*cos_phi*cos_theta*delta_y*f5_0*f5_22*phi_dot*sin_phi*sin_theta + 2*c1*cos_phi*delta_x*f5_0*f5_22*f5_30*phi_dot*sin_phi + c1*cos_phi*delta_x*f5_0*f5_22*f5_38*phi_dot*sin_phi + c1*delta_y*f5_0*f5_22*f5_25*f5_30*theta_dot + c1*f5_0*f5_25*f5_32*phi_dot*sin_phi*sin_theta - f5_10 - f5_14*f5_3 - f5_18*f5_3 - f5_19*f5_29 - f5_20*f5_8 - f5_21*f5_23 - f5_24*sin_theta - f5_27*f5_28 - f5_31*f5_9 - f5_33*f5_34 - f5_35*f5_37 - f5_38*f5_39 - f5_4 - f5_7
-        out[5, 1] = b*c1*cos_phi*cos_theta*delta_x*delta_x_dot*f5_0 + b*c1*cos_phi*cos_theta*delta_x*delta_y*f5_0*theta_dot + 2*b*c1*cos_phi*cos_theta*delta_y*delta_y_dot*f5_0 + b*c1*cos_phi*cos_theta*delta_z*delta_z_dot*f5_0 + b*c1*cos_phi*delta_x_dot*delta_y*f5_0*sin_theta + b*c1*cos_phi*delta_y*delta_z*f5_0*phi_dot + b*c1*delta_y*delta_z_dot*f5_0*sin_phi + c1*cos_phi*cos_theta*delta_x*f5_0*f5_22*phi_dot*sin_phi*sin_theta + c1*cos_phi*delta_y*f5_0*f5_22*f5_30*phi_dot*sin_phi + 2*c1*cos_phi*delta_y*f5_0*f5_22*f5_38*phi_dot*sin_phi + c1*cos_theta*delta_y*f5_0*f5_22*f5_25*sin_theta*theta_dot + c1*cos_theta*f5_0*f5_25*f5_32*phi_dot*sin_phi - cos_theta*f5_30*f5_37 - f5_14*f5_42 - f5_17*f5_29 - f5_18*f5_42 - f5_20*f5_3 - f5_23*f5_45 - f5_33*f5_9 - f5_34*f5_47 - f5_37*f5_48 - f5_40 - f5_41 - f5_43 - f5_44 - f5_46
-        out[5, 2] = b*c1*cos_phi*cos_theta*delta_x*delta_z*f5_0*theta_dot + b*c1*cos_phi*cos_theta*delta_y_dot*delta_z*f5_0 + b*c1*cos_phi*delta_x_dot*delta_z*f5_0*sin_theta + b*c1*cos_phi*f5_0*f5_51*phi_dot + b*c1*delta_x*delta_x_dot*f5_0*sin_phi + b*c1*delta_y*delta_y_dot*f5_0*sin_phi + 2*b*c1*delta_z*delta_z_dot*f5_0*sin_phi + c1*cos_phi*delta_y*f5_0*f5_22*sin_phi*sin_theta*theta_dot + c1*cos_phi*delta_z*f5_0*f5_22*f5_30*phi_dot*sin_phi + c1*cos_phi*delta_z*f5_0*f5_22*f5_38*phi_dot*sin_phi + c1*cos_phi*f5_0*f5_32*f5_55*phi_dot + c1*cos_theta*delta_y*f5_0*f5_22*f5_55*phi_dot + c1*delta_x*f5_0*f5_22*f5_55*phi_dot*sin_theta - delta_z*f5_12*f5_52 - delta_z*f5_21*f5_54 - delta_z*f5_45*f5_53 - delta_z*f5_49 - delta_z*f5_50 - f5_22*f5_56 - f5_23*f5_57 - f5_23*f5_58 - f5_23*f5_61 - f5_30*f5_64 - f5_38*f5_64 - f5_5*f5_51 - f5_59*f5_60
-        out[5, 3] = b*c1*cos_phi*delta_x*delta_x_dot*delta_z*f5_0 + b*c1*cos_phi*delta_y*delta_y_dot*delta_z*f5_0 + b*c1*cos_phi*delta_z_dot*f5_0*f5_51 + c1*cos_phi*cos_theta*delta_x*delta_y_dot*f5_0*f5_22*sin_phi*sin_theta + c1*cos_phi*cos_theta*delta_x_dot*delta_y*f5_0*f5_22*sin_phi*sin_theta + 2*c1*cos_phi*cos_theta*delta_y*delta_z*f5_0*f5_22*phi_dot*sin_phi + 2*c1*cos_phi*cos_theta*delta_y*f5_0*f5_30*f5_32*f5_55*phi_dot + c1*cos_phi*cos_theta*f5_0*f5_22*f5_8*sin_phi*sin_theta*theta_dot + 2*c1*cos_phi*delta_x*delta_x_dot*f5_0*f5_22*f5_30*sin_phi + c1*cos_phi*delta_x*delta_x_dot*f5_0*f5_22*f5_38*sin_phi + c1*cos_phi*delta_x*delta_y*f5_0*f5_22*f5_38*sin_phi*theta_dot + 2*c1*cos_phi*delta_x*delta_z*f5_0*f5_22*phi_dot*sin_phi*sin_theta + 2*c1*cos_phi*delta_x*f5_0*f5_32*f5_35*f5_55*phi_dot + 2*c1*cos_phi*delta_x*f5_0*f5_32*f5_38*f5_55*phi_dot*sin_theta + c1*cos_phi*delta_y*delta_y_dot*f5_0*f5_22*f5_30*sin_phi + 2*c1*cos_phi*delta_y*delta_y_dot*f5_0*f5_22*f5_38*sin_phi + 2*c1*cos_phi*delta_y*f5_0*f5_32*f5_48*f5_55*phi_dot + c1*cos_phi*delta_z*delta_z_dot*f5_0*f5_22*f5_30*sin_phi + c1*cos_phi*delta_z*delta_z_dot*f5_0*f5_22*f5_38*sin_phi + c1*cos_phi*delta_z_dot*f5_0*f5_32*f5_55 + c1*cos_theta*delta_x*f5_0*f5_25*f5_32*sin_phi*theta_dot + c1*cos_theta*delta_y*delta_z_dot*f5_0*f5_22*f5_55 + c1*cos_theta*delta_y_dot*f5_0*f5_25*f5_32*sin_phi + c1*delta_x*delta_z_dot*f5_0*f5_22*f5_55*sin_theta + c1*delta_x_dot*f5_0*f5_25*f5_32*sin_phi*sin_theta + c1*delta_y*delta_z*f5_0*f5_22*f5_25*sin_theta*theta_dot + c1*delta_y*f5_0*f5_25*f5_32*f5_35*sin_phi*theta_dot + c1*delta_y*f5_0*f5_25*f5_32*f5_38*sin_phi*sin_theta*theta_dot + 2*c1*delta_z*f5_0*f5_25*f5_32*phi_dot*sin_phi + 2*c1*f5_0*f5_25*f5_30*f5_55*f5_65*phi_dot + 2*c1*f5_0*f5_25*f5_38*f5_55*f5_65*phi_dot - cos_theta**4*f5_66 - cos_theta*delta_y*f5_69 - cos_theta*delta_z*f5_27 - delta_x*f5_69*sin_theta - f5_10*f5_54 - f5_11*f5_23*f5_28*f5_42 - f5_11*f5_23*f5_3*f5_30 - f5_16*f5_26*f5_51 - f5_2*f5_68 - f5_23*f5_49 - f5_23*f5_50 - 2*f5_23*f5_6 - 2*f5_28*f5_3*f5_70 - f5_29*f5_58 - f5_29*f5_61 - f5_30*f5_36*f5_57 - f5_30*f5_36*f5_61 - 2*f5_30*f5_38*f5_66 - f5_30*f5_67 - f5_30*f5_70*f5_8 - f5_30*f5_71 - f5_34*f5_68 - f5_35*f5_36*f5_9 - f5_36*f5_38*f5_58 - f5_36*f5_52 - f5_38*f5_42*f5_70 - f5_38*f5_67 - f5_38*f5_71 - f5_4*f5_54 - f5_40*f5_53 - f5_41*f5_53 - f5_43*f5_53 - f5_54*f5_7 - f5_66*sin_theta**4 - f5_66
-        out[5, 4] = b*c1*cos_phi*cos_theta*delta_x*delta_y*delta_y_dot*f5_0 + b*c1*cos_phi*cos_theta*delta_x*delta_z*delta_z_dot*f5_0 + b*c1*cos_phi*cos_theta*delta_x_dot*f5_0*f5_8 + c1*cos_phi*cos_theta*f5_0*f5_22*f5_8*phi_dot*sin_phi*sin_theta + c1*cos_phi*delta_x*delta_y*f5_0*f5_22*f5_38*phi_dot*sin_phi + c1*cos_phi*delta_y*delta_z_dot*f5_0*f5_22*sin_phi*sin_theta + 2*c1*cos_theta*delta_x*delta_y*f5_0*f5_22*f5_25*sin_theta*theta_dot + c1*cos_theta*delta_x*f5_0*f5_25*f5_32*phi_dot*sin_phi + c1*cos_theta*delta_y*delta_y_dot*f5_0*f5_22*f5_25*sin_theta + c1*delta_x_dot*delta_y*f5_0*f5_22*f5_25*f5_30 + c1*delta_y*delta_z*f5_0*f5_22*f5_25*phi_dot*sin_theta + c1*delta_y*f5_0*f5_25*f5_32*f5_35*phi_dot*sin_phi + c1*delta_y*f5_0*f5_25*f5_32*f5_38*phi_dot*sin_phi*sin_theta - cos_theta*f5_19*f5_23*f5_42 - delta_x*f5_44 - delta_x*f5_46 - delta_y*f5_39 - f5_11*f5_31*f5_42 - f5_11*f5_47*f5_8 - f5_13*f5_40 - f5_13*f5_41 - f5_13*f5_43 - f5_21*f5_68 - f5_29*f5_72 - f5_3*f5_30*f5_60 - f5_30*f5_36*f5_72 - f5_33*f5_49
+        out[5, 0] = (
+                b*c1*cos_phi*cos_theta*delta_x*delta_y_dot*f5_0 + b*c1*cos_phi*cos_theta*f5_0*
+                f5_8*theta_dot + 2*b*c1*cos_phi*delta_x*delta_x_dot*f5_0*sin_theta + b*c1*cos_phi*
+                delta_x*delta_z*f5_0*phi_dot + b*c1*cos_phi*delta_y*delta_y_dot*f5_0*sin_theta + b*
+                c1*cos_phi*delta_z*delta_z_dot*f5_0*sin_theta + b*c1*delta_x*delta_z_dot*f5_0*
+                sin_phi + c1*cos_phi*cos_theta*delta_y*f5_0*f5_22*phi_dot*sin_phi*sin_theta + 2*c1*
+                cos_phi*delta_x*f5_0*f5_22*f5_30*phi_dot*sin_phi + c1*cos_phi*delta_x*f5_0*f5_22*
+                f5_38*phi_dot*sin_phi + c1*delta_y*f5_0*f5_22*f5_25*f5_30*theta_dot + c1*f5_0*
+                f5_25*f5_32*phi_dot*sin_phi*sin_theta - f5_10 - f5_14*f5_3 - f5_18*f5_3 - f5_19*f5_29
+                - f5_20*f5_8 - f5_21*f5_23 - f5_24*sin_theta - f5_27*f5_28 - f5_31*f5_9 - f5_33*f5_34 -
+                f5_35*f5_37 - f5_38*f5_39 - f5_4 - f5_7)
+        out[5, 1] = (
+                b*c1*cos_phi*cos_theta*delta_x*delta_x_dot*f5_0 + b*c1*cos_phi*cos_theta*delta_x*
+                delta_y*f5_0*theta_dot + 2*b*c1*cos_phi*cos_theta*delta_y*delta_y_dot*f5_0 + b*c1*
+                cos_phi*cos_theta*delta_z*delta_z_dot*f5_0 + b*c1*cos_phi*delta_x_dot*delta_y*f5_0*
+                sin_theta + b*c1*cos_phi*delta_y*delta_z*f5_0*phi_dot + b*c1*delta_y*delta_z_dot*
+                f5_0*sin_phi + c1*cos_phi*cos_theta*delta_x*f5_0*f5_22*phi_dot*sin_phi*sin_theta +
+                c1*cos_phi*delta_y*f5_0*f5_22*f5_30*phi_dot*sin_phi + 2*c1*cos_phi*delta_y*f5_0*
+                f5_22*f5_38*phi_dot*sin_phi + c1*cos_theta*delta_y*f5_0*f5_22*f5_25*sin_theta*
+                theta_dot + c1*cos_theta*f5_0*f5_25*f5_32*phi_dot*sin_phi - cos_theta*f5_30*f5_37 -
+                f5_14*f5_42 - f5_17*f5_29 - f5_18*f5_42 - f5_20*f5_3 - f5_23*f5_45 - f5_33*f5_9 -
+                f5_34*f5_47 - f5_37*f5_48 - f5_40 - f5_41 - f5_43 - f5_44 - f5_46)
+        out[5, 2] = (
+                b*c1*cos_phi*cos_theta*delta_x*delta_z*f5_0*theta_dot + b*c1*cos_phi*cos_theta*
+                delta_y_dot*delta_z*f5_0 + b*c1*cos_phi*delta_x_dot*delta_z*f5_0*sin_theta + b*c1*
+                cos_phi*f5_0*f5_51*phi_dot + b*c1*delta_x*delta_x_dot*f5_0*sin_phi + b*c1*delta_y*
+                delta_y_dot*f5_0*sin_phi + 2*b*c1*delta_z*delta_z_dot*f5_0*sin_phi + c1*cos_phi*
+                delta_y*f5_0*f5_22*sin_phi*sin_theta*theta_dot + c1*cos_phi*delta_z*f5_0*f5_22*
+                f5_30*phi_dot*sin_phi + c1*cos_phi*delta_z*f5_0*f5_22*f5_38*phi_dot*sin_phi + c1*
+                cos_phi*f5_0*f5_32*f5_55*phi_dot + c1*cos_theta*delta_y*f5_0*f5_22*f5_55*phi_dot +
+                c1*delta_x*f5_0*f5_22*f5_55*phi_dot*sin_theta - delta_z*f5_12*f5_52 - delta_z*f5_21*
+                f5_54 - delta_z*f5_45*f5_53 - delta_z*f5_49 - delta_z*f5_50 - f5_22*f5_56 - f5_23*f5_57
+                - f5_23*f5_58 - f5_23*f5_61 - f5_30*f5_64 - f5_38*f5_64 - f5_5*f5_51 - f5_59*f5_60)
+        out[5, 3] = (
+                b*c1*cos_phi*delta_x*delta_x_dot*delta_z*f5_0 + b*c1*cos_phi*delta_y*delta_y_dot*
+                delta_z*f5_0 + b*c1*cos_phi*delta_z_dot*f5_0*f5_51 + c1*cos_phi*cos_theta*delta_x*
+                delta_y_dot*f5_0*f5_22*sin_phi*sin_theta + c1*cos_phi*cos_theta*delta_x_dot*delta_y*
+                f5_0*f5_22*sin_phi*sin_theta + 2*c1*cos_phi*cos_theta*delta_y*delta_z*f5_0*f5_22*
+                phi_dot*sin_phi + 2*c1*cos_phi*cos_theta*delta_y*f5_0*f5_30*f5_32*f5_55*phi_dot +
+                c1*cos_phi*cos_theta*f5_0*f5_22*f5_8*sin_phi*sin_theta*theta_dot + 2*c1*cos_phi*
+                delta_x*delta_x_dot*f5_0*f5_22*f5_30*sin_phi + c1*cos_phi*delta_x*delta_x_dot*f5_0*
+                f5_22*f5_38*sin_phi + c1*cos_phi*delta_x*delta_y*f5_0*f5_22*f5_38*sin_phi*theta_dot
+                + 2*c1*cos_phi*delta_x*delta_z*f5_0*f5_22*phi_dot*sin_phi*sin_theta + 2*c1*
+                cos_phi*delta_x*f5_0*f5_32*f5_35*f5_55*phi_dot + 2*c1*cos_phi*delta_x*f5_0*f5_32*
+                f5_38*f5_55*phi_dot*sin_theta + c1*cos_phi*delta_y*delta_y_dot*f5_0*f5_22*f5_30*
+                sin_phi + 2*c1*cos_phi*delta_y*delta_y_dot*f5_0*f5_22*f5_38*sin_phi + 2*c1*cos_phi*
+                delta_y*f5_0*f5_32*f5_48*f5_55*phi_dot + c1*cos_phi*delta_z*delta_z_dot*f5_0*f5_22*
+                f5_30*sin_phi + c1*cos_phi*delta_z*delta_z_dot*f5_0*f5_22*f5_38*sin_phi + c1*
+                cos_phi*delta_z_dot*f5_0*f5_32*f5_55 + c1*cos_theta*delta_x*f5_0*f5_25*f5_32*
+                sin_phi*theta_dot + c1*cos_theta*delta_y*delta_z_dot*f5_0*f5_22*f5_55 + c1*cos_theta*
+                delta_y_dot*f5_0*f5_25*f5_32*sin_phi + c1*delta_x*delta_z_dot*f5_0*f5_22*f5_55*
+                sin_theta + c1*delta_x_dot*f5_0*f5_25*f5_32*sin_phi*sin_theta + c1*delta_y*delta_z*
+                f5_0*f5_22*f5_25*sin_theta*theta_dot + c1*delta_y*f5_0*f5_25*f5_32*f5_35*sin_phi*
+                theta_dot + c1*delta_y*f5_0*f5_25*f5_32*f5_38*sin_phi*sin_theta*theta_dot + 2*c1*
+                delta_z*f5_0*f5_25*f5_32*phi_dot*sin_phi + 2*c1*f5_0*f5_25*f5_30*f5_55*f5_65*
+                phi_dot + 2*c1*f5_0*f5_25*f5_38*f5_55*f5_65*phi_dot - cos_theta**4*f5_66 - cos_theta*
+                delta_y*f5_69 - cos_theta*delta_z*f5_27 - delta_x*f5_69*sin_theta - f5_10*f5_54 -
+                f5_11*f5_23*f5_28*f5_42 - f5_11*f5_23*f5_3*f5_30 - f5_16*f5_26*f5_51 - f5_2*f5_68 -
+                f5_23*f5_49 - f5_23*f5_50 - 2*f5_23*f5_6 - 2*f5_28*f5_3*f5_70 - f5_29*f5_58 - f5_29*
+                f5_61 - f5_30*f5_36*f5_57 - f5_30*f5_36*f5_61 - 2*f5_30*f5_38*f5_66 - f5_30*f5_67 -
+                f5_30*f5_70*f5_8 - f5_30*f5_71 - f5_34*f5_68 - f5_35*f5_36*f5_9 - f5_36*f5_38*f5_58 -
+                f5_36*f5_52 - f5_38*f5_42*f5_70 - f5_38*f5_67 - f5_38*f5_71 - f5_4*f5_54 - f5_40*f5_53
+                - f5_41*f5_53 - f5_43*f5_53 - f5_54*f5_7 - f5_66*sin_theta**4 - f5_66)
+        out[5, 4] = (
+                b*c1*cos_phi*cos_theta*delta_x*delta_y*delta_y_dot*f5_0 + b*c1*cos_phi*cos_theta*
+                delta_x*delta_z*delta_z_dot*f5_0 + b*c1*cos_phi*cos_theta*delta_x_dot*f5_0*f5_8 +
+                c1*cos_phi*cos_theta*f5_0*f5_22*f5_8*phi_dot*sin_phi*sin_theta + c1*cos_phi*
+                delta_x*delta_y*f5_0*f5_22*f5_38*phi_dot*sin_phi + c1*cos_phi*delta_y*delta_z_dot*
+                f5_0*f5_22*sin_phi*sin_theta + 2*c1*cos_theta*delta_x*delta_y*f5_0*f5_22*f5_25*
+                sin_theta*theta_dot + c1*cos_theta*delta_x*f5_0*f5_25*f5_32*phi_dot*sin_phi + c1*
+                cos_theta*delta_y*delta_y_dot*f5_0*f5_22*f5_25*sin_theta + c1*delta_x_dot*delta_y*
+                f5_0*f5_22*f5_25*f5_30 + c1*delta_y*delta_z*f5_0*f5_22*f5_25*phi_dot*sin_theta +
+                c1*delta_y*f5_0*f5_25*f5_32*f5_35*phi_dot*sin_phi + c1*delta_y*f5_0*f5_25*f5_32*
+                f5_38*phi_dot*sin_phi*sin_theta - cos_theta*f5_19*f5_23*f5_42 - delta_x*f5_44 -
+                delta_x*f5_46 - delta_y*f5_39 - f5_11*f5_31*f5_42 - f5_11*f5_47*f5_8 - f5_13*f5_40 -
+                f5_13*f5_41 - f5_13*f5_43 - f5_21*f5_68 - f5_29*f5_72 - f5_3*f5_30*f5_60 - f5_30*
+                f5_36*f5_72 - f5_33*f5_49)
         out[5, 5] = 0
         out[5, 6] = 0
         out[5, 7] = 0
@@ -1405,11 +1764,63 @@ def family_forces(y, p, out):
         f6_98 = f6_25*f6_72
         f6_99 = 2*f6_92
         f6_100 = f6_44*f6_99
-        out[6, 0] = a*c2*cos_phi*delta_x*delta_y*f6_0*sin_theta*theta_dot + a*c2*cos_theta*delta_x*delta_y*f6_0*phi_dot*sin_phi + a*c2*f6_0*f6_8*phi_dot*sin_phi*sin_theta + c2*cos_phi*cos_theta*delta_y*f6_0*f6_25*phi_dot*sin_phi*sin_theta + 2*c2*cos_phi*delta_x*f6_0*f6_25*f6_40*phi_dot*sin_phi + c2*cos_phi*delta_x*f6_0*f6_25*f6_44*phi_dot*sin_phi + c2*delta_y*f6_0*f6_25*f6_30*f6_40*theta_dot + c2*f6_0*f6_30*f6_36*f6_44*phi_dot*sin_phi*sin_theta + c2*f6_0*f6_30*f6_36*f6_45*phi_dot*sin_phi - delta_x*f6_12 - delta_x*f6_15 - delta_x*f6_18 - delta_x*f6_27 - f6_10 - f6_14*f6_23 - f6_19*f6_20 - 2*f6_20*f6_21 - f6_20*f6_6 - f6_29*sin_theta - f6_32*f6_33 - f6_34*f6_35 - f6_39 - f6_4 - f6_41*f6_9 - f6_42*f6_43 - f6_7
-        out[6, 1] = a*c2*cos_phi*f6_0*f6_48*sin_theta*theta_dot + a*c2*cos_theta*f6_0*f6_48*phi_dot*sin_phi + a*c2*delta_x*delta_y*f6_0*phi_dot*sin_phi*sin_theta + c2*cos_phi*cos_theta*delta_x*f6_0*f6_25*phi_dot*sin_phi*sin_theta + c2*cos_phi*delta_y*f6_0*f6_25*f6_40*phi_dot*sin_phi + 2*c2*cos_phi*delta_y*f6_0*f6_25*f6_44*phi_dot*sin_phi + c2*cos_theta*delta_y*f6_0*f6_25*f6_30*sin_theta*theta_dot + c2*cos_theta*f6_0*f6_30*f6_36*f6_40*phi_dot*sin_phi + c2*f6_0*f6_30*f6_36*f6_59*phi_dot*sin_phi - delta_y*f6_12 - delta_y*f6_18 - delta_y*f6_50 - 2*f6_14*f6_19 - f6_14*f6_21 - f6_14*f6_51 - f6_14*f6_6 - f6_42*f6_9 - f6_43*f6_58 - f6_46 - f6_47 - f6_49 - f6_52 - f6_53 - f6_54 - f6_56 - f6_57
-        out[6, 2] = a*c2*cos_phi*delta_y*delta_z*f6_0*sin_theta*theta_dot + a*c2*cos_theta*delta_y*delta_z*f6_0*phi_dot*sin_phi + a*c2*delta_x*delta_z*f6_0*phi_dot*sin_phi*sin_theta + c2*cos_phi*delta_y*f6_0*f6_25*sin_phi*sin_theta*theta_dot + c2*cos_phi*delta_z*f6_0*f6_25*f6_40*phi_dot*sin_phi + c2*cos_phi*delta_z*f6_0*f6_25*f6_44*phi_dot*sin_phi + c2*cos_phi*f6_0*f6_36*f6_40*f6_66*phi_dot + c2*cos_phi*f6_0*f6_36*f6_44*f6_66*phi_dot + c2*cos_theta*delta_y*f6_0*f6_25*f6_66*phi_dot + c2*delta_x*f6_0*f6_25*f6_66*phi_dot*sin_theta - delta_z*f6_14*f6_43 - delta_z*f6_15 - 2*delta_z*f6_27 - delta_z*f6_50 - f6_11*f6_19 - f6_11*f6_21 - f6_11*f6_64 - f6_13*f6_65 - f6_28*f6_69 - f6_28*f6_70 - f6_28*f6_74 - f6_60 - f6_61 - f6_63 - f6_68 - f6_73
-        out[6, 3] = -cos_theta**4*f6_92 + 2*delta_x*delta_z*f6_91 + delta_x*f6_2*f6_82 - delta_x*f6_45*f6_95 - delta_y*f6_59*f6_95 + delta_y*f6_82*f6_9 + f6_10*f6_76 - f6_100*f6_40 + f6_100 - f6_13*f6_60 - f6_13*f6_61 - f6_13*f6_63 + f6_2*f6_93 - f6_22*f6_48*f6_82 + f6_23*f6_82 - f6_28*f6_64 - 2*f6_3*f6_33*f6_98 - f6_31*f6_65 - f6_32*f6_83 - f6_35*f6_70 - f6_35*f6_74 + f6_35*f6_89 + f6_4*f6_76 - 2*f6_40*f6_73*f6_80 + 2*f6_40*f6_77 + f6_40*f6_78 + f6_40*f6_79 - f6_40*f6_8*f6_98 + f6_40*f6_84 + f6_40*f6_86 + f6_40*f6_87 + f6_40*f6_96 - f6_40*f6_97 + f6_40*f6_99 + f6_43*f6_93 - f6_44*f6_48*f6_98 - 2*f6_44*f6_73*f6_81 + f6_44*f6_77 + 2*f6_44*f6_78 + f6_44*f6_79 + f6_44*f6_85 + f6_44*f6_86 + f6_44*f6_87 - f6_44*f6_90 + f6_44*f6_97 + f6_46*f6_75 + f6_47*f6_75 + f6_49*f6_75 + 2*f6_53*f6_83 + f6_68*f6_80 + f6_68*f6_81 + f6_7*f6_76 - f6_77 - f6_78 - f6_79 + f6_80*f6_95 + f6_81*f6_95 - f6_84 - f6_85 - f6_86 - f6_88*f6_94 + f6_9*f6_94 + f6_90 - f6_92*sin_theta**4 - f6_92 - f6_96
-        out[6, 4] = a*c2*cos_phi*delta_x*delta_x_dot*delta_y*f6_0*sin_theta + a*c2*cos_phi*delta_y*delta_z*delta_z_dot*f6_0*sin_theta + a*c2*cos_phi*delta_y_dot*f6_0*f6_48*sin_theta + c2*cos_phi*cos_theta*f6_0*f6_25*f6_8*phi_dot*sin_phi*sin_theta + c2*cos_phi*delta_x*delta_y*f6_0*f6_25*f6_44*phi_dot*sin_phi + c2*cos_phi*delta_y*delta_z_dot*f6_0*f6_25*sin_phi*sin_theta + 2*c2*cos_theta*delta_x*delta_y*f6_0*f6_25*f6_30*sin_theta*theta_dot + c2*cos_theta*delta_x*f6_0*f6_30*f6_36*f6_40*phi_dot*sin_phi + c2*cos_theta*delta_y*delta_y_dot*f6_0*f6_25*f6_30*sin_theta + c2*delta_x*f6_0*f6_30*f6_36*f6_59*phi_dot*sin_phi + c2*delta_x_dot*delta_y*f6_0*f6_25*f6_30*f6_40 + c2*delta_y*delta_z*f6_0*f6_25*f6_30*phi_dot*sin_theta + c2*delta_y*f6_0*f6_30*f6_36*phi_dot*sin_phi*sin_theta - cos_theta*f6_48*f6_91 - delta_x*f6_52 - delta_x*f6_54 - delta_x*f6_56 - delta_x*f6_57 - delta_y*f6_39*f6_44 - delta_y*f6_45*f6_55 - f6_10*f6_14 - f6_14*f6_4 - f6_14*f6_7 - f6_21*f6_42 - f6_22*f6_41*f6_48 - f6_23*f6_58 - f6_27*f6_3*f6_40
+        out[6, 0] = (
+                a*c2*cos_phi*delta_x*delta_y*f6_0*sin_theta*theta_dot + a*c2*cos_theta*delta_x*
+                delta_y*f6_0*phi_dot*sin_phi + a*c2*f6_0*f6_8*phi_dot*sin_phi*sin_theta + c2*
+                cos_phi*cos_theta*delta_y*f6_0*f6_25*phi_dot*sin_phi*sin_theta + 2*c2*cos_phi*
+                delta_x*f6_0*f6_25*f6_40*phi_dot*sin_phi + c2*cos_phi*delta_x*f6_0*f6_25*f6_44*
+                phi_dot*sin_phi + c2*delta_y*f6_0*f6_25*f6_30*f6_40*theta_dot + c2*f6_0*f6_30*
+                f6_36*f6_44*phi_dot*sin_phi*sin_theta + c2*f6_0*f6_30*f6_36*f6_45*phi_dot*sin_phi -
+                delta_x*f6_12 - delta_x*f6_15 - delta_x*f6_18 - delta_x*f6_27 - f6_10 - f6_14*f6_23 -
+                f6_19*f6_20 - 2*f6_20*f6_21 - f6_20*f6_6 - f6_29*sin_theta - f6_32*f6_33 - f6_34*f6_35
+                - f6_39 - f6_4 - f6_41*f6_9 - f6_42*f6_43 - f6_7)
+        out[6, 1] = (
+                a*c2*cos_phi*f6_0*f6_48*sin_theta*theta_dot + a*c2*cos_theta*f6_0*f6_48*phi_dot*
+                sin_phi + a*c2*delta_x*delta_y*f6_0*phi_dot*sin_phi*sin_theta + c2*cos_phi*
+                cos_theta*delta_x*f6_0*f6_25*phi_dot*sin_phi*sin_theta + c2*cos_phi*delta_y*f6_0*
+                f6_25*f6_40*phi_dot*sin_phi + 2*c2*cos_phi*delta_y*f6_0*f6_25*f6_44*phi_dot*
+                sin_phi + c2*cos_theta*delta_y*f6_0*f6_25*f6_30*sin_theta*theta_dot + c2*cos_theta*
+                f6_0*f6_30*f6_36*f6_40*phi_dot*sin_phi + c2*f6_0*f6_30*f6_36*f6_59*phi_dot*sin_phi
+                - delta_y*f6_12 - delta_y*f6_18 - delta_y*f6_50 - 2*f6_14*f6_19 - f6_14*f6_21 - f6_14*
+                f6_51 - f6_14*f6_6 - f6_42*f6_9 - f6_43*f6_58 - f6_46 - f6_47 - f6_49 - f6_52 - f6_53 -
+                f6_54 - f6_56 - f6_57)
+        out[6, 2] = (
+                a*c2*cos_phi*delta_y*delta_z*f6_0*sin_theta*theta_dot + a*c2*cos_theta*delta_y*
+                delta_z*f6_0*phi_dot*sin_phi + a*c2*delta_x*delta_z*f6_0*phi_dot*sin_phi*sin_theta
+                + c2*cos_phi*delta_y*f6_0*f6_25*sin_phi*sin_theta*theta_dot + c2*cos_phi*delta_z*
+                f6_0*f6_25*f6_40*phi_dot*sin_phi + c2*cos_phi*delta_z*f6_0*f6_25*f6_44*phi_dot*
+                sin_phi + c2*cos_phi*f6_0*f6_36*f6_40*f6_66*phi_dot + c2*cos_phi*f6_0*f6_36*f6_44*
+                f6_66*phi_dot + c2*cos_theta*delta_y*f6_0*f6_25*f6_66*phi_dot + c2*delta_x*f6_0*
+                f6_25*f6_66*phi_dot*sin_theta - delta_z*f6_14*f6_43 - delta_z*f6_15 - 2*delta_z*f6_27
+                - delta_z*f6_50 - f6_11*f6_19 - f6_11*f6_21 - f6_11*f6_64 - f6_13*f6_65 - f6_28*f6_69 -
+                f6_28*f6_70 - f6_28*f6_74 - f6_60 - f6_61 - f6_63 - f6_68 - f6_73)
+        out[6, 3] = (
+                -cos_theta**4*f6_92 + 2*delta_x*delta_z*f6_91 + delta_x*f6_2*f6_82 - delta_x*f6_45*
+                f6_95 - delta_y*f6_59*f6_95 + delta_y*f6_82*f6_9 + f6_10*f6_76 - f6_100*f6_40 + f6_100
+                - f6_13*f6_60 - f6_13*f6_61 - f6_13*f6_63 + f6_2*f6_93 - f6_22*f6_48*f6_82 + f6_23*
+                f6_82 - f6_28*f6_64 - 2*f6_3*f6_33*f6_98 - f6_31*f6_65 - f6_32*f6_83 - f6_35*f6_70 -
+                f6_35*f6_74 + f6_35*f6_89 + f6_4*f6_76 - 2*f6_40*f6_73*f6_80 + 2*f6_40*f6_77 + f6_40*
+                f6_78 + f6_40*f6_79 - f6_40*f6_8*f6_98 + f6_40*f6_84 + f6_40*f6_86 + f6_40*f6_87 +
+                f6_40*f6_96 - f6_40*f6_97 + f6_40*f6_99 + f6_43*f6_93 - f6_44*f6_48*f6_98 - 2*f6_44*
+                f6_73*f6_81 + f6_44*f6_77 + 2*f6_44*f6_78 + f6_44*f6_79 + f6_44*f6_85 + f6_44*f6_86 +
+                f6_44*f6_87 - f6_44*f6_90 + f6_44*f6_97 + f6_46*f6_75 + f6_47*f6_75 + f6_49*f6_75 + 2*
+                f6_53*f6_83 + f6_68*f6_80 + f6_68*f6_81 + f6_7*f6_76 - f6_77 - f6_78 - f6_79 + f6_80*
+                f6_95 + f6_81*f6_95 - f6_84 - f6_85 - f6_86 - f6_88*f6_94 + f6_9*f6_94 + f6_90 - f6_92*
+                sin_theta**4 - f6_92 - f6_96)
+        out[6, 4] = (
+                a*c2*cos_phi*delta_x*delta_x_dot*delta_y*f6_0*sin_theta + a*c2*cos_phi*delta_y*
+                delta_z*delta_z_dot*f6_0*sin_theta + a*c2*cos_phi*delta_y_dot*f6_0*f6_48*sin_theta +
+                c2*cos_phi*cos_theta*f6_0*f6_25*f6_8*phi_dot*sin_phi*sin_theta + c2*cos_phi*
+                delta_x*delta_y*f6_0*f6_25*f6_44*phi_dot*sin_phi + c2*cos_phi*delta_y*delta_z_dot*
+                f6_0*f6_25*sin_phi*sin_theta + 2*c2*cos_theta*delta_x*delta_y*f6_0*f6_25*f6_30*
+                sin_theta*theta_dot + c2*cos_theta*delta_x*f6_0*f6_30*f6_36*f6_40*phi_dot*sin_phi +
+                c2*cos_theta*delta_y*delta_y_dot*f6_0*f6_25*f6_30*sin_theta + c2*delta_x*f6_0*
+                f6_30*f6_36*f6_59*phi_dot*sin_phi + c2*delta_x_dot*delta_y*f6_0*f6_25*f6_30*f6_40 +
+                c2*delta_y*delta_z*f6_0*f6_25*f6_30*phi_dot*sin_theta + c2*delta_y*f6_0*f6_30*
+                f6_36*phi_dot*sin_phi*sin_theta - cos_theta*f6_48*f6_91 - delta_x*f6_52 - delta_x*
+                f6_54 - delta_x*f6_56 - delta_x*f6_57 - delta_y*f6_39*f6_44 - delta_y*f6_45*f6_55 -
+                f6_10*f6_14 - f6_14*f6_4 - f6_14*f6_7 - f6_21*f6_42 - f6_22*f6_41*f6_48 - f6_23*f6_58
+                - f6_27*f6_3*f6_40)
         out[6, 5] = 0
         out[6, 6] = 0
         out[6, 7] = 0
@@ -1429,7 +1840,6 @@ def jacobi(y, p):
     theta = y[4]
     psi = y[5]
     r = y[6]
-    nu = y[7]
     delta_x_dot = y[8]
     delta_y_dot = y[9]
     delta_z_dot = y[10]
@@ -1441,23 +1851,13 @@ def jacobi(y, p):
     m1 = p[0]
     m2 = p[1]
     m3 = p[2]
-    A1 = p[3]
-    A2 = p[4]
-    A3 = p[5]
     a = p[6]
     b = p[7]
     l10 = p[8]
     l20 = p[9]
     E1 = p[10]
     E2 = p[11]
-    c1 = p[12]
-    c2 = p[13]
-    CD = p[14]
     mu = p[15]
-    omega_earth = p[16]
-    rho1 = p[17]
-    rho2 = p[18]
-    rho3 = p[19]
     J2 = p[20]
     R_E = p[21]
     I1_roll = p[22]
@@ -1649,4400 +2049,44 @@ def jacobi(y, p):
     e174 = (3/4)*e71*e94
     e175 = e115*e122
     e176 = (15/4)*e135
-    h = I1_pitch*e141*e44 - I1_pitch*e23 + I1_pitch*e92 - I1_roll*e13 + I1_roll*e23 - I1_roll*e24 + I1_roll*e45 - I1_roll*e92 + I1_roll*e97 + I1_yaw*e100 - I1_yaw*e13 + I1_yaw*e5 - I1_yaw*e8 - I2_pitch*e13 - I2_pitch*e23 + I2_pitch*e24 - I2_pitch*e70 + I2_pitch*e92 - I2_roll*e13 + I2_roll*e152*e158 + I2_roll*e23 - I2_roll*e24 + I2_roll*e45 - I2_roll*e70 - I2_roll*e92 + I2_roll*e97 + I2_yaw*e100 - I2_yaw*e13 + I2_yaw*e5 - I2_yaw*e70 - I2_yaw*e8 + a*e105*e116 - a*e29*e40*m2 - cos_theta*e37*r_dot + delta_x_dot**2*e6 + delta_y_dot**2*e6 + delta_z_dot**2*e6 + e0*e4 + e0*r_dot + e1*e2 - e1*e36 - e10*e9 - e10*m3*r + e101*e87 + e101*e89 + e102*e104 - e103*e116 + e104*e135 - e106*e108 - e106*e135*e30 - e11*e12 - e11*e60 + e110*e111 - e110*e112 - e110*e67 + e110*e68 - e111*e140 + e111*e161 + e112*e140 - e112*e161 + (3/4)*e119*e51 + (9/4)*e119*e64 - e120*e60 + e122*e63 + e123*e131 - e123*e142 - e123*e173 - e123*e74 - e124*e87 - e124*e89 + e125*e131 - e125*e142 - e125*e173 - e125*e74 + e126*e33 - e126*e38 + e127*e128 + e127*e133 + e128*e130 + e128*e143 + e129*e94 + e129*e98 + e130*e133 + e132*e87 + e132*e89 + e133*e143 + e134*e94 + e134*e98 - 15/4*e136*e51 - 45/4*e136*e64 + e137*e138 + e137*e144 + e137*e165 - e137*e175 - e138*e139 - e139*e144 - e139*e165 + e139*e175 - e14*m1 - e14*m2 - e14*m3 + e140*e67 - e140*e68 + e141*e73 + e141*e75 + e141*e76 - e147*e167 + e148*e94 - e148 - e149*e151*e95 - e151*e152*e68 - e153*e167 + e154*e94 - e154 + e155*e168 - e157*e94 + e157 + e158*e49*e61*e94 + e159*e168 + e16*e9 - e160*e94 + e160 - e161*e67 + e161*e68 + e162*e163 + e162*e164 + e163*e174 + e164*e174 + e169*e171 - e169*e172 + e17*e47 + e17*e50 + e171*e176 - e172*e176 + e18*e9 + e19*e22 - e19*e44*e72 + e2*e3 + e25*e28 - e25*e34 + e27*e29*e30 - e28*e31 - e3*e36 + e31*e34 - e33*e39 + e33*e57 + e33*e58 + e37*e40 + e38*e39 - e38*e57 - e38*e58 + e4*m3*r_dot + e41*e43 + e41*e49 + e47*e48 + e48*e50 + e49*e96 + e51*e52 + e51*e59 - e51*e79 + e52*e53 + e54*e55 + e54*e56 + e54*e6 - e55*e78 - e56*e78 + e59*e64 - e59*e77 - e62*e63 - e64*e79 + e66*e67 + e66*e68 + e66*e69 + e7*m1 + e7*m2 + e7*m3 - e73*e74 + e73*e83 + e73*e84 - e74*e75 - e74*e76 + e75*e83 + e75*e84 + e76*e83 + e76*e84 + e77*e79 + e80*e81 + e81*e82 + e85*e87 + e85*e89 + e93*e95
-    lambda1 = math.sqrt((b*sin_phi - delta_z)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*cos_phi*sin_theta - delta_x)**2)
+    h = (
+            I1_pitch*e141*e44 - I1_pitch*e23 + I1_pitch*e92 - I1_roll*e13 + I1_roll*e23 - I1_roll*e24
+            + I1_roll*e45 - I1_roll*e92 + I1_roll*e97 + I1_yaw*e100 - I1_yaw*e13 + I1_yaw*e5 - I1_yaw*
+            e8 - I2_pitch*e13 - I2_pitch*e23 + I2_pitch*e24 - I2_pitch*e70 + I2_pitch*e92 - I2_roll*e13
+            + I2_roll*e152*e158 + I2_roll*e23 - I2_roll*e24 + I2_roll*e45 - I2_roll*e70 - I2_roll*e92
+            + I2_roll*e97 + I2_yaw*e100 - I2_yaw*e13 + I2_yaw*e5 - I2_yaw*e70 - I2_yaw*e8 + a*e105*
+            e116 - a*e29*e40*m2 - cos_theta*e37*r_dot + delta_x_dot**2*e6 + delta_y_dot**2*e6 +
+            delta_z_dot**2*e6 + e0*e4 + e0*r_dot + e1*e2 - e1*e36 - e10*e9 - e10*m3*r + e101*e87 +
+            e101*e89 + e102*e104 - e103*e116 + e104*e135 - e106*e108 - e106*e135*e30 - e11*e12 - e11*
+            e60 + e110*e111 - e110*e112 - e110*e67 + e110*e68 - e111*e140 + e111*e161 + e112*e140 -
+            e112*e161 + (3/4)*e119*e51 + (9/4)*e119*e64 - e120*e60 + e122*e63 + e123*e131 - e123*
+            e142 - e123*e173 - e123*e74 - e124*e87 - e124*e89 + e125*e131 - e125*e142 - e125*e173 -
+            e125*e74 + e126*e33 - e126*e38 + e127*e128 + e127*e133 + e128*e130 + e128*e143 + e129*e94
+            + e129*e98 + e130*e133 + e132*e87 + e132*e89 + e133*e143 + e134*e94 + e134*e98 - 15/4*
+            e136*e51 - 45/4*e136*e64 + e137*e138 + e137*e144 + e137*e165 - e137*e175 - e138*e139 -
+            e139*e144 - e139*e165 + e139*e175 - e14*m1 - e14*m2 - e14*m3 + e140*e67 - e140*e68 +
+            e141*e73 + e141*e75 + e141*e76 - e147*e167 + e148*e94 - e148 - e149*e151*e95 - e151*e152*
+            e68 - e153*e167 + e154*e94 - e154 + e155*e168 - e157*e94 + e157 + e158*e49*e61*e94 + e159*
+            e168 + e16*e9 - e160*e94 + e160 - e161*e67 + e161*e68 + e162*e163 + e162*e164 + e163*e174
+            + e164*e174 + e169*e171 - e169*e172 + e17*e47 + e17*e50 + e171*e176 - e172*e176 + e18*e9
+            + e19*e22 - e19*e44*e72 + e2*e3 + e25*e28 - e25*e34 + e27*e29*e30 - e28*e31 - e3*e36 +
+            e31*e34 - e33*e39 + e33*e57 + e33*e58 + e37*e40 + e38*e39 - e38*e57 - e38*e58 + e4*m3*
+            r_dot + e41*e43 + e41*e49 + e47*e48 + e48*e50 + e49*e96 + e51*e52 + e51*e59 - e51*e79 +
+            e52*e53 + e54*e55 + e54*e56 + e54*e6 - e55*e78 - e56*e78 + e59*e64 - e59*e77 - e62*e63 -
+            e64*e79 + e66*e67 + e66*e68 + e66*e69 + e7*m1 + e7*m2 + e7*m3 - e73*e74 + e73*e83 + e73*
+            e84 - e74*e75 - e74*e76 + e75*e83 + e75*e84 + e76*e83 + e76*e84 + e77*e79 + e80*e81 +
+            e81*e82 + e85*e87 + e85*e89 + e93*e95)
+    lambda1 = (
+            math.sqrt((b*sin_phi - delta_z)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*cos_phi*
+            sin_theta - delta_x)**2))
     if lambda1 > l10:
         h += (1/2)*E1*(-l10 + lambda1)**2/l10
-    lambda2 = math.sqrt((-a*sin_phi - delta_z)**2 + (-a*cos_phi*cos_theta - delta_y)**2 + (-a*cos_phi*sin_theta - delta_x)**2)
+    lambda2 = (
+            math.sqrt((-a*sin_phi - delta_z)**2 + (-a*cos_phi*cos_theta - delta_y)**2 + (-a*cos_phi*
+            sin_theta - delta_x)**2))
     if lambda2 > l20:
         h += (1/2)*E2*(-l20 + lambda2)**2/l20
     return h
-
-
-@njit(cache=True)
-def jacobian(t, y, p, J):
-    """J[i, j] = ∂(dy_i/dt)/∂y_j of model '3d-free-objective-damper' (units of y_i/s per y_j)."""
-    delta_x = y[0]
-    delta_y = y[1]
-    delta_z = y[2]
-    phi = y[3]
-    theta = y[4]
-    psi = y[5]
-    r = y[6]
-    nu = y[7]
-    delta_x_dot = y[8]
-    delta_y_dot = y[9]
-    delta_z_dot = y[10]
-    phi_dot = y[11]
-    theta_dot = y[12]
-    psi_dot = y[13]
-    r_dot = y[14]
-    nu_dot = y[15]
-    m1 = p[0]
-    m2 = p[1]
-    m3 = p[2]
-    A1 = p[3]
-    A2 = p[4]
-    A3 = p[5]
-    a = p[6]
-    b = p[7]
-    l10 = p[8]
-    l20 = p[9]
-    E1 = p[10]
-    E2 = p[11]
-    c1 = p[12]
-    c2 = p[13]
-    CD = p[14]
-    mu = p[15]
-    omega_earth = p[16]
-    rho1 = p[17]
-    rho2 = p[18]
-    rho3 = p[19]
-    J2 = p[20]
-    R_E = p[21]
-    I1_roll = p[22]
-    I1_pitch = p[23]
-    I1_yaw = p[24]
-    I2_roll = p[25]
-    I2_pitch = p[26]
-    I2_yaw = p[27]
-    sin_phi = math.sin(phi)
-    cos_phi = math.cos(phi)
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
-    sin_psi = math.sin(psi)
-    cos_psi = math.cos(psi)
-    # air drag on the three bodies (3.32-3.34, co-rotating air)
-    d0 = delta_y + r
-    d1 = -d0*nu_dot + d0*omega_earth + delta_x_dot
-    d2 = delta_x*nu_dot - delta_x*omega_earth + delta_y_dot + r_dot
-    d3 = (1/2)*CD
-    d4 = A3*d3*rho3*math.sqrt(d1**2 + d2**2 + delta_z_dot**2)
-    d5 = d1*d4
-    d6 = d2*d4
-    d7 = b**2
-    d8 = cos_phi**2
-    d9 = d8*phi_dot**2
-    d10 = b*sin_theta
-    d11 = cos_phi*d10
-    d12 = phi_dot*sin_phi
-    d13 = cos_theta*d12
-    d14 = b*cos_phi*nu_dot*sin_theta - b*d13 - d11*omega_earth - d11*theta_dot + r_dot
-    d15 = cos_phi*cos_theta
-    d16 = b*d15
-    d17 = d16 + r
-    d18 = -d10*d12 + d16*theta_dot - d17*nu_dot + d17*omega_earth
-    d19 = math.sqrt(d14**2 + d18**2 + d7*d9)
-    d20 = A1*d19*d3*rho1
-    d21 = d8*phi_dot
-    d22 = a**2
-    d23 = a*sin_theta
-    d24 = cos_phi*d23
-    d25 = a*d13 - d24*nu_dot + d24*omega_earth + d24*theta_dot + r_dot
-    d26 = a*d15
-    d27 = -d26 + r
-    d28 = a*phi_dot*sin_phi*sin_theta - d26*theta_dot - d27*nu_dot + d27*omega_earth
-    d29 = math.sqrt(d22*d9 + d25**2 + d28**2)
-    d30 = A2*d29*d3*rho2
-    d31 = d25*d30
-    d32 = d28*d30
-    d33 = d18*d20
-    d34 = d14*d20
-    d35 = -d11*d34 + d24*d31
-    Q_delta_x = -d5
-    Q_delta_y = -d6
-    Q_delta_z = -d4*delta_z_dot
-    Q_phi = (1/2)*A1*CD*b*cos_theta*d14*d19*rho1*sin_phi + (1/2)*A1*CD*b*d18*d19*rho1*sin_phi*sin_theta - a*cos_theta*d31*sin_phi - d20*d21*d7 - d21*d22*d30 - d23*d32*sin_phi
-    Q_theta = (1/2)*A2*CD*a*cos_phi*cos_theta*d28*d29*rho2 - d16*d33 - d35
-    Q_psi = 0
-    Q_r = -d31 - d34 - d6
-    Q_nu = d0*d5 + d17*d33 + d27*d32 + d35 - d6*delta_x
-    lambda1 = math.sqrt((b*sin_phi - delta_z)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*cos_phi*sin_theta - delta_x)**2)
-    if lambda1 > l10:  # tether 1 taut: spring1, damper1
-        t1_0 = 1/l10
-        t1_1 = E1*delta_x
-        t1_2 = t1_0*t1_1
-        t1_3 = 1/lambda1
-        t1_4 = E1*b
-        t1_5 = cos_phi*t1_4
-        t1_6 = lambda1**(-2)
-        t1_7 = c1*t1_6
-        t1_8 = delta_y_dot*t1_7
-        t1_9 = delta_x*delta_y
-        t1_10 = t1_8*t1_9
-        t1_11 = delta_z_dot*t1_7
-        t1_12 = delta_z*t1_11
-        t1_13 = delta_x*t1_12
-        t1_14 = delta_x**2
-        t1_15 = delta_x_dot*t1_7
-        t1_16 = t1_14*t1_15
-        t1_17 = b*cos_phi
-        t1_18 = sin_theta*t1_17
-        t1_19 = t1_7*theta_dot
-        t1_20 = t1_18*t1_19
-        t1_21 = phi_dot*t1_7
-        t1_22 = b*sin_phi
-        t1_23 = cos_theta*t1_22
-        t1_24 = t1_21*t1_23
-        t1_25 = sin_theta*t1_22
-        t1_26 = t1_21*t1_25
-        t1_27 = b**2
-        t1_28 = cos_phi*sin_phi*t1_27
-        t1_29 = delta_x*t1_21
-        t1_30 = t1_11*t1_28
-        t1_31 = cos_phi**2
-        t1_32 = t1_27*t1_31
-        t1_33 = t1_32*t1_8
-        t1_34 = cos_theta*sin_theta
-        t1_35 = sin_theta*t1_21
-        t1_36 = delta_z*t1_32
-        t1_37 = sin_theta**2
-        t1_38 = t1_32*t1_37
-        t1_39 = b**3
-        t1_40 = t1_32*t1_34
-        t1_41 = delta_x*t1_19
-        t1_42 = sin_theta**3
-        t1_43 = sin_phi*t1_31*t1_39
-        t1_44 = t1_21*t1_43
-        t1_45 = cos_theta**2
-        t1_46 = t1_35*t1_43
-        t1_47 = E1*delta_y*t1_0
-        t1_48 = t1_15*t1_9
-        t1_49 = delta_y*t1_12
-        t1_50 = delta_y**2
-        t1_51 = t1_50*t1_8
-        t1_52 = cos_theta*t1_21
-        t1_53 = t1_33*t1_45
-        t1_54 = t1_32*t1_45
-        t1_55 = cos_theta**3
-        t1_56 = E1*delta_z
-        t1_57 = delta_x*t1_15
-        t1_58 = delta_y*t1_8
-        t1_59 = delta_z**2
-        t1_60 = sin_phi**2
-        t1_61 = t1_11*t1_60
-        t1_62 = cos_theta*t1_8
-        t1_63 = sin_theta*t1_15
-        t1_64 = 2*delta_z
-        t1_65 = t1_21*t1_28
-        t1_66 = cos_theta*t1_41
-        t1_67 = cos_phi*t1_39
-        t1_68 = t1_21*t1_60
-        t1_69 = t1_67*t1_68
-        t1_70 = E1*t1_28
-        t1_71 = t1_3*t1_70
-        t1_72 = b**4
-        t1_73 = t1_31*t1_68*t1_72
-        t1_74 = t1_61*t1_67
-        t1_75 = t1_43*t1_55
-        t1_76 = 2*t1_69
-        t1_77 = t1_27*t1_68
-        t1_78 = t1_44*t1_64
-        t1_79 = cos_theta*t1_28
-        t1_80 = cos_theta*t1_29
-        Q_delta_x += E1*b*cos_phi*sin_theta*t1_0 + E1*delta_x*t1_3 + b*c1*cos_phi*cos_theta*delta_x*delta_y_dot*t1_6 + b*c1*cos_phi*cos_theta*t1_14*t1_6*theta_dot + 2*b*c1*cos_phi*delta_x*delta_x_dot*sin_theta*t1_6 + b*c1*cos_phi*delta_x*delta_z*phi_dot*t1_6 + b*c1*cos_phi*delta_y*delta_y_dot*sin_theta*t1_6 + b*c1*cos_phi*delta_z*delta_z_dot*sin_theta*t1_6 + b*c1*delta_x*delta_z_dot*sin_phi*t1_6 + c1*cos_phi*cos_theta*delta_y*phi_dot*sin_phi*sin_theta*t1_27*t1_6 + 2*c1*cos_phi*delta_x*phi_dot*sin_phi*t1_27*t1_37*t1_6 + c1*cos_phi*delta_x*phi_dot*sin_phi*t1_27*t1_45*t1_6 + c1*delta_y*t1_27*t1_31*t1_37*t1_6*theta_dot + c1*phi_dot*sin_phi*sin_theta*t1_31*t1_39*t1_6 - sin_theta*t1_3*t1_5 - sin_theta*t1_30 - t1_10 - t1_13 - t1_14*t1_26 - t1_15*t1_38 - t1_16 - t1_2 - t1_20*t1_9 - t1_24*t1_9 - t1_28*t1_29 - t1_33*t1_34 - t1_35*t1_36 - t1_40*t1_41 - t1_42*t1_44 - t1_45*t1_46
-        Q_delta_y += E1*b*cos_phi*cos_theta*t1_0 + E1*delta_y*t1_3 + b*c1*cos_phi*cos_theta*delta_x*delta_x_dot*t1_6 + b*c1*cos_phi*cos_theta*delta_x*delta_y*t1_6*theta_dot + 2*b*c1*cos_phi*cos_theta*delta_y*delta_y_dot*t1_6 + b*c1*cos_phi*cos_theta*delta_z*delta_z_dot*t1_6 + b*c1*cos_phi*delta_x_dot*delta_y*sin_theta*t1_6 + b*c1*cos_phi*delta_y*delta_z*phi_dot*t1_6 + b*c1*delta_y*delta_z_dot*sin_phi*t1_6 + c1*cos_phi*cos_theta*delta_x*phi_dot*sin_phi*sin_theta*t1_27*t1_6 + c1*cos_phi*delta_y*phi_dot*sin_phi*t1_27*t1_37*t1_6 + 2*c1*cos_phi*delta_y*phi_dot*sin_phi*t1_27*t1_45*t1_6 + c1*cos_theta*delta_y*sin_theta*t1_27*t1_31*t1_6*theta_dot + c1*cos_theta*phi_dot*sin_phi*t1_31*t1_39*t1_6 - cos_theta*t1_3*t1_5 - cos_theta*t1_30 - cos_theta*t1_37*t1_44 - delta_y*t1_21*t1_28 - t1_15*t1_40 - t1_20*t1_50 - t1_24*t1_50 - t1_26*t1_9 - t1_36*t1_52 - t1_41*t1_54 - t1_44*t1_55 - t1_47 - t1_48 - t1_49 - t1_51 - t1_53
-        Q_delta_z += E1*b*sin_phi*t1_0 + E1*delta_z*t1_3 + b*c1*cos_phi*cos_theta*delta_x*delta_z*t1_6*theta_dot + b*c1*cos_phi*cos_theta*delta_y_dot*delta_z*t1_6 + b*c1*cos_phi*delta_x_dot*delta_z*sin_theta*t1_6 + b*c1*cos_phi*phi_dot*t1_59*t1_6 + b*c1*delta_x*delta_x_dot*sin_phi*t1_6 + b*c1*delta_y*delta_y_dot*sin_phi*t1_6 + 2*b*c1*delta_z*delta_z_dot*sin_phi*t1_6 + c1*cos_phi*delta_y*sin_phi*sin_theta*t1_27*t1_6*theta_dot + c1*cos_phi*delta_z*phi_dot*sin_phi*t1_27*t1_37*t1_6 + c1*cos_phi*delta_z*phi_dot*sin_phi*t1_27*t1_45*t1_6 + c1*cos_phi*phi_dot*t1_39*t1_6*t1_60 + c1*cos_theta*delta_y*phi_dot*t1_27*t1_6*t1_60 + c1*delta_x*phi_dot*sin_theta*t1_27*t1_6*t1_60 - delta_y*delta_z*t1_20 - delta_y*delta_z*t1_22*t1_52 - delta_z*t1_25*t1_29 - delta_z*t1_57 - delta_z*t1_58 - sin_phi*t1_3*t1_4 - t1_0*t1_56 - t1_11*t1_59 - t1_27*t1_61 - t1_28*t1_62 - t1_28*t1_63 - t1_28*t1_66 - t1_37*t1_69 - t1_45*t1_69 - t1_64*t1_65
-        Q_phi += E1*b*cos_phi*delta_z*t1_0 + E1*b*cos_theta*delta_y*sin_phi*t1_3 + E1*b*delta_x*sin_phi*sin_theta*t1_3 + E1*cos_phi*sin_phi*t1_0*t1_27*t1_37 + E1*cos_phi*sin_phi*t1_0*t1_27*t1_45 + E1*cos_phi*sin_phi*t1_27*t1_3 + b*c1*cos_phi*delta_x*delta_x_dot*delta_z*t1_6 + b*c1*cos_phi*delta_y*delta_y_dot*delta_z*t1_6 + b*c1*cos_phi*delta_z_dot*t1_59*t1_6 + c1*cos_phi*cos_theta*delta_x*delta_y_dot*sin_phi*sin_theta*t1_27*t1_6 + c1*cos_phi*cos_theta*delta_x_dot*delta_y*sin_phi*sin_theta*t1_27*t1_6 + 2*c1*cos_phi*cos_theta*delta_y*delta_z*phi_dot*sin_phi*t1_27*t1_6 + 2*c1*cos_phi*cos_theta*delta_y*phi_dot*t1_37*t1_39*t1_6*t1_60 + c1*cos_phi*cos_theta*sin_phi*sin_theta*t1_14*t1_27*t1_6*theta_dot + 2*c1*cos_phi*delta_x*delta_x_dot*sin_phi*t1_27*t1_37*t1_6 + c1*cos_phi*delta_x*delta_x_dot*sin_phi*t1_27*t1_45*t1_6 + c1*cos_phi*delta_x*delta_y*sin_phi*t1_27*t1_45*t1_6*theta_dot + 2*c1*cos_phi*delta_x*delta_z*phi_dot*sin_phi*sin_theta*t1_27*t1_6 + 2*c1*cos_phi*delta_x*phi_dot*sin_theta*t1_39*t1_45*t1_6*t1_60 + 2*c1*cos_phi*delta_x*phi_dot*t1_39*t1_42*t1_6*t1_60 + c1*cos_phi*delta_y*delta_y_dot*sin_phi*t1_27*t1_37*t1_6 + 2*c1*cos_phi*delta_y*delta_y_dot*sin_phi*t1_27*t1_45*t1_6 + 2*c1*cos_phi*delta_y*phi_dot*t1_39*t1_55*t1_6*t1_60 + c1*cos_phi*delta_z*delta_z_dot*sin_phi*t1_27*t1_37*t1_6 + c1*cos_phi*delta_z*delta_z_dot*sin_phi*t1_27*t1_45*t1_6 + c1*cos_phi*delta_z_dot*t1_39*t1_6*t1_60 + c1*cos_theta*delta_x*sin_phi*t1_31*t1_39*t1_6*theta_dot + c1*cos_theta*delta_y*delta_z_dot*t1_27*t1_6*t1_60 + c1*cos_theta*delta_y_dot*sin_phi*t1_31*t1_39*t1_6 + c1*delta_x*delta_z_dot*sin_theta*t1_27*t1_6*t1_60 + c1*delta_x_dot*sin_phi*sin_theta*t1_31*t1_39*t1_6 + c1*delta_y*delta_z*sin_theta*t1_27*t1_31*t1_6*theta_dot + c1*delta_y*sin_phi*sin_theta*t1_31*t1_39*t1_45*t1_6*theta_dot + c1*delta_y*sin_phi*t1_31*t1_39*t1_42*t1_6*theta_dot + 2*c1*delta_z*phi_dot*sin_phi*t1_31*t1_39*t1_6 + 2*c1*phi_dot*t1_31*t1_37*t1_6*t1_60*t1_72 + 2*c1*phi_dot*t1_31*t1_45*t1_6*t1_60*t1_72 - cos_theta**4*t1_73 - cos_theta*delta_y*t1_76 - cos_theta*delta_z*t1_33 - delta_x*sin_theta*t1_76 - delta_y*sin_theta*t1_19*t1_43 - sin_theta**4*t1_73 - t1_0*t1_70 - t1_10*t1_25 - 2*t1_12*t1_28 - t1_13*t1_25 - t1_14*t1_37*t1_77 - t1_15*t1_42*t1_43 - t1_16*t1_25 - t1_17*t1_3*t1_56 - t1_19*t1_28*t1_34*t1_50 - t1_19*t1_28*t1_37*t1_9 - t1_2*t1_25 - t1_21*t1_32*t1_59 - t1_23*t1_47 - t1_23*t1_48 - t1_23*t1_49 - t1_23*t1_51 - t1_28*t1_57 - t1_28*t1_58 - 2*t1_34*t1_77*t1_9 - t1_36*t1_63 - t1_36*t1_66 - t1_37*t1_43*t1_62 - t1_37*t1_43*t1_66 - 2*t1_37*t1_45*t1_73 - t1_37*t1_71 - t1_37*t1_74 - t1_37*t1_78 - t1_41*t1_75 - t1_43*t1_45*t1_63 - t1_45*t1_50*t1_77 - t1_45*t1_71 - t1_45*t1_74 - t1_45*t1_78 - t1_73 - t1_75*t1_8
-        Q_theta += E1*b*cos_phi*cos_theta*delta_x*t1_0 + E1*b*cos_phi*delta_y*sin_theta*t1_3 + b*c1*cos_phi*cos_theta*delta_x*delta_y*delta_y_dot*t1_6 + b*c1*cos_phi*cos_theta*delta_x*delta_z*delta_z_dot*t1_6 + b*c1*cos_phi*cos_theta*delta_x_dot*t1_14*t1_6 + c1*cos_phi*cos_theta*phi_dot*sin_phi*sin_theta*t1_14*t1_27*t1_6 + c1*cos_phi*delta_x*delta_y*phi_dot*sin_phi*t1_27*t1_45*t1_6 + c1*cos_phi*delta_y*delta_z_dot*sin_phi*sin_theta*t1_27*t1_6 + 2*c1*cos_theta*delta_x*delta_y*sin_theta*t1_27*t1_31*t1_6*theta_dot + c1*cos_theta*delta_x*phi_dot*sin_phi*t1_31*t1_39*t1_6 + c1*cos_theta*delta_y*delta_y_dot*sin_theta*t1_27*t1_31*t1_6 + c1*delta_x_dot*delta_y*t1_27*t1_31*t1_37*t1_6 + c1*delta_y*delta_z*phi_dot*sin_theta*t1_27*t1_31*t1_6 + c1*delta_y*phi_dot*sin_phi*sin_theta*t1_31*t1_39*t1_45*t1_6 + c1*delta_y*phi_dot*sin_phi*t1_31*t1_39*t1_42*t1_6 - cos_theta*t1_1*t1_17*t1_3 - delta_x*t1_11*t1_79 - delta_x*t1_53 - delta_y*t1_46 - t1_14*t1_19*t1_54 - t1_18*t1_47 - t1_18*t1_48 - t1_18*t1_49 - t1_18*t1_51 - t1_19*t1_38*t1_50 - t1_29*t1_75 - t1_35*t1_50*t1_79 - t1_36*t1_80 - t1_37*t1_43*t1_80 - t1_37*t1_65*t1_9 - t1_40*t1_57
-        Q_psi += 0
-        Q_r += 0
-        Q_nu += 0
-    lambda2 = math.sqrt((-a*sin_phi - delta_z)**2 + (-a*cos_phi*cos_theta - delta_y)**2 + (-a*cos_phi*sin_theta - delta_x)**2)
-    if lambda2 > l20:  # tether 2 taut: spring2, damper2
-        t2_0 = 1/l20
-        t2_1 = E2*delta_x
-        t2_2 = t2_0*t2_1
-        t2_3 = 1/lambda2
-        t2_4 = E2*a
-        t2_5 = cos_phi*t2_4
-        t2_6 = lambda2**(-2)
-        t2_7 = c2*t2_6
-        t2_8 = delta_y_dot*t2_7
-        t2_9 = delta_x*delta_y
-        t2_10 = t2_8*t2_9
-        t2_11 = delta_z_dot*t2_7
-        t2_12 = delta_z*t2_11
-        t2_13 = delta_x*t2_12
-        t2_14 = delta_x**2
-        t2_15 = delta_x_dot*t2_7
-        t2_16 = t2_14*t2_15
-        t2_17 = a*sin_phi
-        t2_18 = delta_x*t2_11
-        t2_19 = a*cos_phi
-        t2_20 = cos_theta*t2_19
-        t2_21 = t2_20*t2_8
-        t2_22 = phi_dot*t2_7
-        t2_23 = delta_x*t2_22
-        t2_24 = delta_z*t2_19
-        t2_25 = delta_y*t2_8
-        t2_26 = sin_theta*t2_19
-        t2_27 = delta_x*t2_15
-        t2_28 = t2_7*theta_dot
-        t2_29 = t2_14*t2_28
-        t2_30 = a**2
-        t2_31 = cos_phi*sin_phi*t2_30
-        t2_32 = t2_23*t2_31
-        t2_33 = t2_11*t2_31
-        t2_34 = cos_phi**2
-        t2_35 = t2_30*t2_34
-        t2_36 = t2_35*t2_8
-        t2_37 = cos_theta*sin_theta
-        t2_38 = delta_z*t2_22
-        t2_39 = t2_35*t2_38
-        t2_40 = a**3
-        t2_41 = sin_phi*t2_34*t2_40
-        t2_42 = t2_22*t2_41
-        t2_43 = sin_theta*t2_42
-        t2_44 = sin_theta**2
-        t2_45 = t2_35*t2_44
-        t2_46 = delta_x*t2_28
-        t2_47 = t2_35*t2_37
-        t2_48 = cos_theta**2
-        t2_49 = sin_theta**3
-        t2_50 = E2*delta_y
-        t2_51 = t2_0*t2_50
-        t2_52 = t2_15*t2_9
-        t2_53 = delta_y*t2_12
-        t2_54 = delta_y**2
-        t2_55 = t2_54*t2_8
-        t2_56 = t2_15*t2_26
-        t2_57 = delta_y*t2_22
-        t2_58 = t2_28*t2_9
-        t2_59 = t2_15*t2_35
-        t2_60 = cos_theta*t2_42
-        t2_61 = t2_36*t2_48
-        t2_62 = t2_35*t2_48
-        t2_63 = cos_theta**3
-        t2_64 = E2*delta_z
-        t2_65 = t2_0*t2_64
-        t2_66 = delta_z*t2_27
-        t2_67 = delta_z*t2_25
-        t2_68 = delta_z**2
-        t2_69 = t2_11*t2_68
-        t2_70 = 2*t2_12
-        t2_71 = t2_22*t2_68
-        t2_72 = sin_phi**2
-        t2_73 = t2_11*t2_72
-        t2_74 = t2_30*t2_73
-        t2_75 = cos_theta*t2_8
-        t2_76 = sin_theta*t2_15
-        t2_77 = cos_phi*t2_40
-        t2_78 = t2_22*t2_72
-        t2_79 = t2_77*t2_78
-        t2_80 = 2*t2_31*t2_38
-        t2_81 = cos_theta*t2_46
-        t2_82 = cos_theta*t2_17
-        t2_83 = sin_theta*t2_17
-        t2_84 = E2*t2_31
-        t2_85 = t2_3*t2_84
-        t2_86 = t2_3*t2_50
-        t2_87 = t2_0*t2_84
-        t2_88 = t2_27*t2_31
-        t2_89 = t2_25*t2_31
-        t2_90 = t2_73*t2_77
-        t2_91 = cos_theta*delta_y
-        t2_92 = delta_x*sin_theta
-        t2_93 = t2_31*t2_37
-        t2_94 = cos_theta*delta_z
-        t2_95 = delta_z*sin_theta
-        t2_96 = t2_41*t2_75
-        t2_97 = t2_41*t2_76
-        t2_98 = 2*delta_z*t2_42
-        t2_99 = t2_12*t2_31
-        t2_100 = delta_y*t2_28
-        t2_101 = sin_theta*t2_100*t2_41
-        t2_102 = a**4*t2_34*t2_78
-        t2_103 = t2_41*t2_63
-        t2_104 = t2_41*t2_49
-        t2_105 = t2_35*t2_94
-        t2_106 = 2*t2_79
-        t2_107 = t2_41*t2_81
-        t2_108 = t2_31*t2_58
-        t2_109 = t2_54*t2_93
-        t2_110 = t2_30*t2_78
-        t2_111 = 2*t2_102
-        t2_112 = t2_111*t2_48
-        Q_delta_x += E2*a*cos_phi*sin_theta*t2_3 + E2*delta_x*t2_3 + a*c2*cos_phi*delta_x*delta_y*sin_theta*t2_6*theta_dot + a*c2*cos_theta*delta_x*delta_y*phi_dot*sin_phi*t2_6 + a*c2*phi_dot*sin_phi*sin_theta*t2_14*t2_6 + c2*cos_phi*cos_theta*delta_y*phi_dot*sin_phi*sin_theta*t2_30*t2_6 + 2*c2*cos_phi*delta_x*phi_dot*sin_phi*t2_30*t2_44*t2_6 + c2*cos_phi*delta_x*phi_dot*sin_phi*t2_30*t2_48*t2_6 + c2*delta_y*t2_30*t2_34*t2_44*t2_6*theta_dot + c2*phi_dot*sin_phi*sin_theta*t2_34*t2_40*t2_48*t2_6 + c2*phi_dot*sin_phi*t2_34*t2_40*t2_49*t2_6 - delta_x*t2_21 - sin_theta*t2_0*t2_5 - sin_theta*t2_33 - sin_theta*t2_39 - t2_10 - t2_12*t2_26 - t2_13 - t2_15*t2_45 - t2_16 - t2_17*t2_18 - t2_2 - t2_20*t2_29 - t2_23*t2_24 - t2_25*t2_26 - 2*t2_26*t2_27 - t2_32 - t2_36*t2_37 - t2_43 - t2_46*t2_47
-        Q_delta_y += E2*a*cos_phi*cos_theta*t2_3 + E2*delta_y*t2_3 + a*c2*cos_phi*sin_theta*t2_54*t2_6*theta_dot + a*c2*cos_theta*phi_dot*sin_phi*t2_54*t2_6 + a*c2*delta_x*delta_y*phi_dot*sin_phi*sin_theta*t2_6 + c2*cos_phi*cos_theta*delta_x*phi_dot*sin_phi*sin_theta*t2_30*t2_6 + c2*cos_phi*delta_y*phi_dot*sin_phi*t2_30*t2_44*t2_6 + 2*c2*cos_phi*delta_y*phi_dot*sin_phi*t2_30*t2_48*t2_6 + c2*cos_theta*delta_y*sin_theta*t2_30*t2_34*t2_6*theta_dot + c2*cos_theta*phi_dot*sin_phi*t2_34*t2_40*t2_44*t2_6 + c2*phi_dot*sin_phi*t2_34*t2_40*t2_6*t2_63 - cos_theta*t2_0*t2_5 - cos_theta*t2_33 - cos_theta*t2_39 - delta_y*t2_11*t2_17 - delta_y*t2_56 - t2_12*t2_20 - 2*t2_20*t2_25 - t2_20*t2_27 - t2_20*t2_58 - t2_24*t2_57 - t2_31*t2_57 - t2_37*t2_59 - t2_46*t2_62 - t2_51 - t2_52 - t2_53 - t2_55 - t2_60 - t2_61
-        Q_delta_z += E2*a*sin_phi*t2_3 + E2*delta_z*t2_3 + a*c2*cos_phi*delta_y*delta_z*sin_theta*t2_6*theta_dot + a*c2*cos_theta*delta_y*delta_z*phi_dot*sin_phi*t2_6 + a*c2*delta_x*delta_z*phi_dot*sin_phi*sin_theta*t2_6 + c2*cos_phi*delta_y*sin_phi*sin_theta*t2_30*t2_6*theta_dot + c2*cos_phi*delta_z*phi_dot*sin_phi*t2_30*t2_44*t2_6 + c2*cos_phi*delta_z*phi_dot*sin_phi*t2_30*t2_48*t2_6 + c2*cos_phi*phi_dot*t2_40*t2_44*t2_6*t2_72 + c2*cos_phi*phi_dot*t2_40*t2_48*t2_6*t2_72 + c2*cos_theta*delta_y*phi_dot*t2_30*t2_6*t2_72 + c2*delta_x*phi_dot*sin_theta*t2_30*t2_6*t2_72 - delta_z*t2_20*t2_46 - delta_z*t2_21 - delta_z*t2_56 - sin_phi*t2_0*t2_4 - t2_17*t2_25 - t2_17*t2_27 - t2_17*t2_70 - t2_19*t2_71 - t2_31*t2_75 - t2_31*t2_76 - t2_31*t2_81 - t2_65 - t2_66 - t2_67 - t2_69 - t2_74 - t2_79 - t2_80
-        Q_phi += -cos_theta**4*t2_102 - delta_x*t2_106*t2_49 + delta_x*t2_8*t2_93 - delta_y*t2_106*t2_63 + delta_y*t2_15*t2_93 - sin_theta**4*t2_102 - t2_1*t2_3*t2_83 + t2_10*t2_83 - t2_100*t2_104 + t2_100*t2_35*t2_95 - t2_101*t2_48 + t2_101 - t2_102 + t2_103*t2_46 + t2_103*t2_8 + t2_104*t2_15 - t2_105*t2_46 + t2_106*t2_91 + t2_106*t2_92 + t2_107*t2_44 - t2_107 - t2_108*t2_44 + t2_108*t2_48 - t2_109*t2_28 - t2_110*t2_14*t2_44 - 2*t2_110*t2_37*t2_9 - t2_110*t2_48*t2_54 + t2_111*t2_44 - t2_112*t2_44 + t2_112 + t2_13*t2_83 + t2_16*t2_83 + t2_19*t2_3*t2_64 - t2_19*t2_65 - t2_19*t2_66 - t2_19*t2_67 - t2_19*t2_69 + t2_2*t2_83 + t2_29*t2_93 - t2_31*t2_70 + 2*t2_32*t2_95 - t2_35*t2_71 - t2_36*t2_94 - 2*t2_44*t2_79*t2_91 - t2_44*t2_85 + t2_44*t2_87 + 2*t2_44*t2_88 + t2_44*t2_89 + t2_44*t2_90 + t2_44*t2_96 + t2_44*t2_98 + t2_44*t2_99 - 2*t2_48*t2_79*t2_92 - t2_48*t2_85 + t2_48*t2_87 + t2_48*t2_88 + 2*t2_48*t2_89 + t2_48*t2_90 + t2_48*t2_97 + t2_48*t2_98 + t2_48*t2_99 + t2_51*t2_82 + t2_52*t2_82 + t2_53*t2_82 + t2_55*t2_82 - t2_59*t2_95 + t2_74*t2_91 + t2_74*t2_92 + t2_80*t2_91 - t2_82*t2_86 + t2_85 - t2_87 - t2_88 - t2_89 - t2_90 - t2_96 - t2_97 - t2_98
-        Q_theta += E2*a*cos_phi*cos_theta*delta_x*t2_3 + E2*a*cos_phi*delta_y*sin_theta*t2_0 + a*c2*cos_phi*delta_x*delta_x_dot*delta_y*sin_theta*t2_6 + a*c2*cos_phi*delta_y*delta_z*delta_z_dot*sin_theta*t2_6 + a*c2*cos_phi*delta_y_dot*sin_theta*t2_54*t2_6 + c2*cos_phi*cos_theta*phi_dot*sin_phi*sin_theta*t2_14*t2_30*t2_6 + c2*cos_phi*delta_x*delta_y*phi_dot*sin_phi*t2_30*t2_48*t2_6 + c2*cos_phi*delta_y*delta_z_dot*sin_phi*sin_theta*t2_30*t2_6 + 2*c2*cos_theta*delta_x*delta_y*sin_theta*t2_30*t2_34*t2_6*theta_dot + c2*cos_theta*delta_x*phi_dot*sin_phi*t2_34*t2_40*t2_44*t2_6 + c2*cos_theta*delta_y*delta_y_dot*sin_theta*t2_30*t2_34*t2_6 + c2*delta_x*phi_dot*sin_phi*t2_34*t2_40*t2_6*t2_63 + c2*delta_x_dot*delta_y*t2_30*t2_34*t2_44*t2_6 + c2*delta_y*delta_z*phi_dot*sin_theta*t2_30*t2_34*t2_6 + c2*delta_y*phi_dot*sin_phi*sin_theta*t2_34*t2_40*t2_6 - cos_theta*t2_18*t2_31 - delta_x*t2_60 - delta_x*t2_61 - delta_y*t2_42*t2_49 - delta_y*t2_43*t2_48 - t2_10*t2_20 - t2_105*t2_23 - t2_109*t2_22 - t2_13*t2_20 - t2_16*t2_20 - t2_2*t2_20 - t2_22*t2_31*t2_44*t2_9 - t2_26*t2_86 - t2_27*t2_47 - t2_28*t2_45*t2_54 - t2_29*t2_62
-        Q_psi += 0
-        Q_r += 0
-        Q_nu += 0
-    # M q'' = Q - f (Lagrange, Eq 3.26 with r, nu as coordinates)
-    fb0 = 2*m3
-    fb1 = fb0*nu_dot
-    fb2 = delta_y_dot*fb1
-    fb3 = fb1*r_dot
-    fb4 = nu_dot**2
-    fb5 = fb4*m3
-    fb6 = r**(-3)
-    fb7 = fb6*mu
-    fb8 = fb7*m3
-    fb9 = delta_x*delta_y
-    fb10 = r**(-4)
-    fb11 = fb10*mu
-    fb12 = fb11*m3
-    fb13 = 3*fb12
-    fb14 = r**(-5)
-    fb15 = m3*mu
-    fb16 = fb14*fb15
-    fb17 = R_E**2
-    fb18 = J2*fb17
-    fb19 = fb16*fb18
-    fb20 = r**(-6)
-    fb21 = fb15*fb18
-    fb22 = fb20*fb21
-    fb23 = delta_y**2
-    fb24 = fb12*fb23
-    fb25 = r**(-2)
-    fb26 = fb25*mu
-    fb27 = delta_x_dot*fb1
-    fb28 = delta_x**2
-    fb29 = (3/2)*fb11
-    fb30 = fb29*m3
-    fb31 = delta_z**2
-    fb32 = 6*fb16
-    fb33 = delta_y*fb32
-    fb34 = delta_y*fb0*fb7 + delta_y*fb5 - fb18*fb30 + fb18*fb33 - 15*fb22*fb23 + (15/4)*fb22*fb28 + (45/4)*fb22*fb31 - fb26*m3 - fb27 + fb28*fb30 + fb30*fb31 + fb5*r
-    fb35 = delta_y*delta_z
-    fb36 = I1_yaw*cos_phi
-    fb37 = psi_dot*theta_dot
-    fb38 = I2_yaw*cos_phi
-    fb39 = cos_psi*sin_psi
-    fb40 = I1_pitch*fb39
-    fb41 = phi_dot*psi_dot
-    fb42 = 2*fb41
-    fb43 = fb36*sin_phi
-    fb44 = 2*nu_dot
-    fb45 = fb44*theta_dot
-    fb46 = fb38*sin_phi
-    fb47 = theta_dot**2
-    fb48 = I1_pitch*cos_phi
-    fb49 = cos_psi**2
-    fb50 = nu_dot*psi_dot
-    fb51 = fb49*fb50
-    fb52 = sin_psi**2
-    fb53 = fb37*fb52
-    fb54 = fb37*fb49
-    fb55 = I1_roll*cos_phi
-    fb56 = fb50*fb52
-    fb57 = I2_pitch*cos_phi
-    fb58 = I2_roll*cos_phi
-    fb59 = fb44*r_dot
-    fb60 = sin_phi*sin_theta
-    fb61 = b*fb60
-    fb62 = fb61*m1
-    fb63 = cos_theta*sin_phi
-    fb64 = fb26*m2
-    fb65 = a*fb64
-    fb66 = fb4*r
-    fb67 = fb66*m1
-    fb68 = b*fb63
-    fb69 = fb4*sin_phi
-    fb70 = fb48*fb49
-    fb71 = fb47*sin_phi
-    fb72 = fb52*fb55
-    fb73 = fb49*fb57
-    fb74 = fb52*fb58
-    fb75 = I2_pitch*fb29
-    fb76 = a*fb63
-    fb77 = I2_roll*fb29
-    fb78 = I2_yaw*fb29
-    fb79 = a**2
-    fb80 = phi_dot**2
-    fb81 = b**2
-    fb82 = cos_phi*m2
-    fb83 = fb79*fb82
-    fb84 = fb7*sin_phi
-    fb85 = fb83*fb84
-    fb86 = cos_phi*m1
-    fb87 = fb81*fb86
-    fb88 = fb84*fb87
-    fb89 = sin_phi**3
-    fb90 = cos_theta**2
-    fb91 = I2_yaw*a
-    fb92 = cos_theta*fb89
-    fb93 = 3*fb11
-    fb94 = fb92*fb93
-    fb95 = 3*fb7
-    fb96 = fb95*sin_theta
-    fb97 = cos_theta*fb96
-    fb98 = fb39*fb97
-    fb99 = fb83*fb90
-    fb100 = fb80*sin_phi
-    fb101 = fb100*fb83
-    fb102 = sin_theta**2
-    fb103 = fb102*fb83
-    fb104 = fb87*fb90
-    fb105 = fb100*fb87
-    fb106 = fb102*fb87
-    fb107 = cos_phi**2
-    fb108 = I1_yaw*fb107
-    fb109 = 6*fb11
-    fb110 = fb109*fb68
-    fb111 = a**3
-    fb112 = b**3
-    fb113 = fb112*m1
-    fb114 = fb93*sin_theta
-    fb115 = b*fb114
-    fb116 = sin_phi**2
-    fb117 = fb116*fb40
-    fb118 = fb107*fb39
-    fb119 = I1_roll*fb118
-    fb120 = I2_pitch*fb118
-    fb121 = a*fb114
-    fb122 = I2_roll*fb39
-    fb123 = fb116*fb122
-    fb124 = fb18*fb29
-    fb125 = fb124*m2
-    fb126 = I1_pitch*fb49
-    fb127 = b*fb94
-    fb128 = 3*fb84
-    fb129 = fb70*fb90
-    fb130 = I1_roll*fb52
-    fb131 = fb128*fb90
-    fb132 = cos_theta**3
-    fb133 = b*fb132
-    fb134 = 2*fb90
-    fb135 = fb111*m2
-    fb136 = fb107*fb135
-    fb137 = I1_pitch*fb118
-    fb138 = sin_theta**3
-    fb139 = b*fb138
-    fb140 = fb139*fb93
-    fb141 = I1_pitch*fb52
-    fb142 = (15/2)*fb11
-    fb143 = fb102*fb68
-    fb144 = fb142*fb143
-    fb145 = I1_roll*fb39
-    fb146 = I2_pitch*fb49
-    fb147 = fb107*fb146
-    fb148 = fb109*fb76
-    fb149 = I2_pitch*fb39
-    fb150 = fb138*fb93
-    fb151 = a*fb150
-    fb152 = I2_roll*fb118
-    fb153 = I2_roll*fb52
-    fb154 = fb107*fb153
-    fb155 = I2_yaw*fb107
-    fb156 = 9*fb11
-    fb157 = fb14*mu
-    fb158 = fb157*fb18
-    fb159 = fb158*sin_phi
-    fb160 = (9/2)*fb159
-    fb161 = (9/2)*fb11
-    fb162 = fb161*fb89
-    fb163 = fb107*fb113
-    fb164 = fb132*sin_phi
-    fb165 = fb11*sin_theta
-    fb166 = fb165*fb90
-    fb167 = 12*fb166
-    fb168 = b*fb167
-    fb169 = a*fb167
-    fb170 = a*fb156*fb164
-    fb171 = a*fb94
-    fb172 = fb18*mu
-    fb173 = fb172*fb20
-    fb174 = (45/4)*fb173
-    fb175 = fb102*fb161
-    fb176 = fb107*fb110
-    fb177 = 6*fb159
-    fb178 = (45/2)*fb173
-    fb179 = 15*fb173
-    fb180 = fb66*m2
-    fb181 = cos_phi*sin_theta
-    fb182 = fb26*m1
-    fb183 = b*fb181
-    fb184 = fb49*fb97
-    fb185 = I2_pitch*fb52
-    fb186 = cos_phi**3
-    fb187 = fb138*fb186
-    fb188 = fb187*fb93
-    fb189 = I1_yaw*b
-    fb190 = a*fb181
-    fb191 = fb29*sin_theta
-    fb192 = a*fb38
-    fb193 = fb187*fb29
-    fb194 = I1_pitch*fb29
-    fb195 = I1_roll*fb29
-    fb196 = b*fb36
-    fb197 = fb102*fb128
-    fb198 = fb116*fb192
-    fb199 = fb81*m1
-    fb200 = fb107*fb199
-    fb201 = fb79*m2
-    fb202 = fb107*fb201
-    fb203 = fb116*fb184
-    fb204 = fb116*fb97
-    fb205 = fb116*fb196
-    fb206 = fb186*fb189
-    fb207 = (39/2)*fb166
-    fb208 = fb48*fb52
-    fb209 = fb139*fb142
-    fb210 = fb49*fb55
-    fb211 = fb116*fb29
-    fb212 = fb211*sin_theta
-    fb213 = fb112*fb86
-    fb214 = fb113*fb186
-    fb215 = fb191*fb90
-    fb216 = fb111*fb82
-    fb217 = fb135*fb186
-    fb218 = fb138*fb142
-    fb219 = a*fb57
-    fb220 = fb219*fb52
-    fb221 = a*fb58
-    fb222 = fb221*fb49
-    fb223 = fb186*fb91
-    fb224 = 15*fb166
-    fb225 = fb115*fb116
-    fb226 = fb116*fb151
-    fb227 = fb116*fb140
-    fb228 = fb116*fb121
-    fb229 = b*fb224
-    fb230 = (15/4)*fb173
-    fb231 = fb187*fb230
-    fb232 = a*fb82
-    fb233 = fb124*sin_theta
-    fb234 = b*fb86
-    fb235 = fb39*fb55
-    fb236 = fb133*fb235
-    fb237 = 12*fb11
-    fb238 = fb237*sin_phi
-    fb239 = fb219*fb39
-    fb240 = fb164*fb237
-    fb241 = fb68*fb93
-    fb242 = fb39*fb57
-    fb243 = fb76*fb93
-    fb244 = fb39*fb48
-    fb245 = fb39*fb58
-    fb246 = fb133*fb244
-    fb247 = fb221*fb39
-    fb248 = fb178*fb90*sin_theta
-    fb249 = fb116*fb174
-    fb250 = fb249*sin_theta
-    fb251 = b*fb116
-    fb252 = fb251*fb72
-    fb253 = cos_theta*fb157
-    fb254 = (15/2)*fb18*fb253*sin_theta
-    fb255 = a*fb116
-    fb256 = fb207*fb255
-    fb257 = 33*fb11
-    fb258 = fb143*fb257
-    fb259 = fb102*fb257*fb76
-    fb260 = fb39*fb80
-    fb261 = I1_roll*fb260
-    fb262 = I2_roll*fb260
-    fb263 = fb41*fb52
-    fb264 = I1_pitch*fb260
-    fb265 = fb41*fb49
-    fb266 = I2_pitch*fb260
-    fb267 = phi_dot*theta_dot
-    fb268 = 2*fb267
-    fb269 = nu_dot*phi_dot
-    fb270 = 2*fb269
-    fb271 = fb269*fb70
-    fb272 = 2*sin_phi
-    fb273 = 2*fb50
-    fb274 = fb269*fb72
-    fb275 = 2*fb37
-    fb276 = fb269*fb73
-    fb277 = fb269*fb74
-    fb278 = cos_theta*fb232
-    fb279 = fb267*fb70
-    fb280 = fb267*fb72
-    fb281 = fb267*fb73
-    fb282 = fb267*fb74
-    fb283 = cos_theta*fb234
-    fb284 = fb270*sin_phi
-    fb285 = fb268*sin_phi
-    fb286 = -fb103*fb284 + fb103*fb285 - fb104*fb284 + fb104*fb285 - fb106*fb284 + fb106*fb285 + fb119*fb273 - fb119*fb275 - fb120*fb273 + fb120*fb275 - fb137*fb273 + fb137*fb275 + fb152*fb273 - fb152*fb275 + fb261*sin_phi + fb262*sin_phi - fb263*fb48 - fb263*fb57 - fb264*sin_phi - fb265*fb55 - fb265*fb58 - fb266*sin_phi - fb268*fb43 - fb268*fb46 + fb270*fb43 + fb270*fb46 - fb271*fb272 - fb272*fb274 - fb272*fb276 - fb272*fb277 + fb272*fb279 + fb272*fb280 + fb272*fb281 + fb272*fb282 - fb278*fb59 + fb283*fb59 - fb284*fb99 + fb285*fb99 + fb36*fb41 + fb38*fb41 + fb41*fb70 + fb41*fb72 + fb41*fb73 + fb41*fb74
-    fb287 = fb267*fb52
-    fb288 = fb267*fb49
-    fb289 = fb269*fb52
-    fb290 = fb269*fb49
-    fb291 = fb102*fb95
-    fb292 = fb291*fb39
-    fb293 = fb63*fb96
-    fb294 = fb293*fb49
-    fb295 = fb61*fb93
-    fb296 = a*fb60
-    fb297 = fb296*fb93
-    fb298 = fb52*fb57
-    fb299 = fb49*fb58
-    fb300 = fb116*fb90*fb95
-    fb301 = cos_theta*fb109
-    fb302 = fb244*fb301
-    fb303 = b*fb102
-    fb304 = 15*fb11
-    fb305 = cos_theta*fb235
-    fb306 = fb303*fb305
-    fb307 = cos_theta*fb239
-    fb308 = fb109*fb116
-    fb309 = fb307*fb308
-    fb310 = fb102*fb304
-    fb311 = fb116*fb247*fb301
-    fb312 = fb140*sin_phi
-    fb313 = fb151*sin_phi
-    fb314 = fb150*sin_phi
-    fb315 = fb116*fb156
-    fb316 = fb237*fb90
-    fb317 = fb316*fb61
-    fb318 = fb132*fb315
-    fb319 = fb296*fb316
-    fb320 = delta_y**3
-    fb321 = cos_theta*fb4
-    fb322 = fb175*fb49
-    fb323 = fb161*fb90
-    fb324 = fb132*fb157
-    fb325 = 18*fb324
-    fb326 = 6*fb253
-    fb327 = 6*fb324
-    fb328 = fb90*fb93
-    fb329 = 2*fb7
-    fb330 = fb296*m2
-    fb331 = b*fb326
-    fb332 = r**(-7)
-    fb333 = fb21*fb332
-    fb334 = fb102*fb29
-    fb335 = fb116*fb323
-    fb336 = fb335*fb52
-    fb337 = 12*fb253
-    fb338 = fb102*fb337
-    fb339 = fb116*fb326
-    fb340 = fb102*fb326
-    fb341 = delta_y*fb333
-    fb342 = 30*fb253
-    fb343 = fb303*fb342
-    fb344 = fb172*fb332
-    fb345 = fb217*fb344
-    fb346 = 30*fb132
-    fb347 = fb251*fb325
-    fb348 = fb179*fb90
-    fb349 = fb251*fb337
-    fb350 = 9*fb165*fb63
-    fb351 = 6*fb158
-    fb352 = fb255*fb337
-    fb353 = fb255*fb325
-    fb354 = fb102*fb342
-    fb355 = fb214*fb344
-    fb356 = fb102*fb230
-    fb357 = 12*fb157
-    fb358 = fb244*fb357
-    fb359 = fb357*sin_phi
-    fb360 = fb138*fb359
-    fb361 = fb255*fb338
-    fb362 = fb296*fb357
-    fb363 = fb235*fb61
-    fb364 = (135/2)*cos_theta*fb116*fb344
-    fb365 = (45/2)*cos_theta*fb102
-    fb366 = 48*fb157*fb90
-    fb367 = fb296*fb366
-    fb368 = m1*r
-    fb369 = r*sin_theta
-    fb370 = fb234*fb369
-    B0 = Q_delta_x - 3/2*delta_x*fb19 + delta_x*fb5 - delta_x*fb8 + fb13*fb9 + fb2 + (15/2)*fb22*fb9 + fb3
-    B1 = Q_delta_y + (9/2)*fb24 + fb34
-    B2 = Q_delta_z - 9/2*delta_z*fb19 - delta_z*fb8 + fb13*fb35 + (45/2)*fb22*fb35
-    B3 = 12*I1_pitch*b*cos_psi*fb10*fb107*fb90*mu*sin_psi*sin_theta + 3*I1_pitch*b*cos_psi*fb10*fb107*mu*sin_psi*sin_theta + 3*I1_pitch*b*cos_psi*fb10*fb116*fb138*mu*sin_psi + 3*I1_pitch*b*cos_theta*fb10*fb102*fb49*fb89*mu + 6*I1_pitch*b*cos_theta*fb10*fb107*fb49*mu*sin_phi + (3/2)*I1_pitch*b*cos_theta*fb10*mu*sin_phi + 9*I1_pitch*b*fb10*fb107*fb132*fb49*mu*sin_phi + 2*I1_pitch*cos_phi*fb49*nu_dot*sin_phi*theta_dot + I1_pitch*cos_phi*fb49*psi_dot*theta_dot + I1_pitch*cos_phi*fb52*nu_dot*psi_dot + 3*I1_roll*b*cos_psi*fb10*fb107*fb138*mu*sin_psi + 12*I1_roll*b*cos_psi*fb10*fb116*fb90*mu*sin_psi*sin_theta + 3*I1_roll*b*cos_psi*fb10*fb116*mu*sin_psi*sin_theta + 3*I1_roll*b*cos_theta*fb10*fb102*fb52*fb89*mu + 6*I1_roll*b*cos_theta*fb10*fb107*fb52*mu*sin_phi + (3/2)*I1_roll*b*cos_theta*fb10*mu*sin_phi + 9*I1_roll*b*fb10*fb107*fb132*fb52*mu*sin_phi + 3*I1_roll*cos_phi*cos_psi*cos_theta*fb6*mu*sin_psi*sin_theta + I1_roll*cos_phi*fb49*nu_dot*psi_dot + 2*I1_roll*cos_phi*fb52*nu_dot*sin_phi*theta_dot + I1_roll*cos_phi*fb52*psi_dot*theta_dot + 2*I1_roll*cos_psi*phi_dot*psi_dot*sin_psi - I1_roll*fb144*fb49 + 9*I1_yaw*b*cos_theta*fb10*fb102*fb107*mu*sin_phi + 3*I1_yaw*b*cos_theta*fb10*fb89*mu + (3/2)*I1_yaw*b*cos_theta*fb10*mu*sin_phi + I1_yaw*cos_phi*fb4*sin_phi + I1_yaw*cos_phi*fb47*sin_phi + 3*I1_yaw*cos_phi*fb6*fb90*mu*sin_phi + I1_yaw*cos_phi*nu_dot*psi_dot + 3*I2_pitch*a*cos_psi*fb10*fb107*fb138*mu*sin_psi + 12*I2_pitch*a*cos_psi*fb10*fb116*fb90*mu*sin_psi*sin_theta + 3*I2_pitch*a*cos_psi*fb10*fb116*mu*sin_psi*sin_theta + 6*I2_pitch*a*cos_theta*fb10*fb102*fb107*fb49*mu*sin_phi + (15/2)*I2_pitch*a*cos_theta*fb10*fb102*fb52*mu*sin_phi + 3*I2_pitch*a*cos_theta*fb10*fb49*fb89*mu + (9/2)*I2_pitch*a*fb10*fb132*fb49*fb89*mu + 2*I2_pitch*cos_phi*fb49*nu_dot*sin_phi*theta_dot + I2_pitch*cos_phi*fb49*psi_dot*theta_dot + I2_pitch*cos_phi*fb52*nu_dot*psi_dot - I2_pitch*fb39*fb42 + 12*I2_roll*a*cos_psi*fb10*fb107*fb90*mu*sin_psi*sin_theta + 3*I2_roll*a*cos_psi*fb10*fb107*mu*sin_psi*sin_theta + 3*I2_roll*a*cos_psi*fb10*fb116*fb138*mu*sin_psi + 6*I2_roll*a*cos_theta*fb10*fb102*fb107*fb52*mu*sin_phi + (15/2)*I2_roll*a*cos_theta*fb10*fb102*fb49*mu*sin_phi + 3*I2_roll*a*cos_theta*fb10*fb52*fb89*mu + (9/2)*I2_roll*a*fb10*fb132*fb52*fb89*mu + 3*I2_roll*cos_phi*cos_psi*cos_theta*fb6*mu*sin_psi*sin_theta + I2_roll*cos_phi*fb49*nu_dot*psi_dot + 2*I2_roll*cos_phi*fb52*nu_dot*sin_phi*theta_dot + I2_roll*cos_phi*fb52*psi_dot*theta_dot + 2*I2_roll*cos_psi*phi_dot*psi_dot*sin_psi + 6*I2_yaw*a*cos_theta*fb10*fb107*mu*sin_phi + (27/2)*I2_yaw*a*fb10*fb107*fb132*mu*sin_phi + I2_yaw*cos_phi*fb4*sin_phi + I2_yaw*cos_phi*fb47*sin_phi + 3*I2_yaw*cos_phi*fb6*fb90*mu*sin_phi + I2_yaw*cos_phi*nu_dot*psi_dot + (3/2)*J2*b*cos_theta*fb10*fb17*m1*mu*sin_phi + (3/2)*J2*cos_phi*fb102*fb14*fb17*fb79*m2*mu*sin_phi + (3/2)*J2*cos_phi*fb102*fb14*fb17*fb81*m1*mu*sin_phi + (45/4)*J2*cos_theta*fb102*fb107*fb111*fb17*fb20*m2*mu*sin_phi + (45/2)*J2*cos_theta*fb107*fb112*fb17*fb20*m1*mu*sin_phi + (45/4)*J2*cos_theta*fb111*fb17*fb20*fb89*m2*mu + 15*J2*fb107*fb112*fb132*fb17*fb20*m1*mu*sin_phi + Q_phi + a*cos_theta*fb4*m2*r*sin_phi + 2*a*m2*nu_dot*r_dot*sin_phi*sin_theta + b*cos_theta*fb25*m1*mu*sin_phi + cos_phi*fb102*fb6*fb79*m2*mu*sin_phi + cos_phi*fb102*fb6*fb81*m1*mu*sin_phi + 2*cos_phi*fb102*fb79*m2*nu_dot*sin_phi*theta_dot + 2*cos_phi*fb102*fb81*m1*nu_dot*sin_phi*theta_dot + cos_phi*fb79*fb80*m2*sin_phi + 2*cos_phi*fb79*fb90*m2*nu_dot*sin_phi*theta_dot + cos_phi*fb80*fb81*m1*sin_phi + 2*cos_phi*fb81*fb90*m1*nu_dot*sin_phi*theta_dot + (9/2)*cos_theta*fb10*fb102*fb107*fb111*m2*mu*sin_phi + 3*cos_theta*fb10*fb107*fb112*m1*mu*sin_phi + (3/2)*cos_theta*fb10*fb111*fb89*m2*mu + (9/2)*fb10*fb107*fb111*fb132*m2*mu*sin_phi - fb101*fb102 - fb101*fb90 - fb102*fb105 - fb102*fb126*fb176 - fb102*fb130*fb176 - fb102*fb146*fb171 - fb102*fb153*fb171 - fb102*fb155*fb156*fb76 - fb102*fb163*fb174*fb63 - fb103*fb69 - fb103*fb71 - fb104*fb177 - fb104*fb69 - fb104*fb71 - fb105*fb90 - fb106*fb69 - fb106*fb71 - 27/2*fb108*fb11*fb133*sin_phi - fb108*fb110 - fb113*fb174*fb92 - fb113*fb29*fb92 - fb115*fb117 - fb115*fb119 - fb116*fb140*fb145 - fb116*fb149*fb151 - fb117*fb168 - fb119*fb168 - fb120*fb121 - fb120*fb169 - fb121*fb123 - fb123*fb169 - fb125*fb76 - fb126*fb127 - fb126*fb133*fb162 - fb127*fb130 - fb128*fb129 - fb130*fb133*fb162 - fb131*fb72 - fb131*fb73 - fb131*fb74 - fb134*fb85 - fb134*fb88 - fb136*fb164*fb179 - fb136*fb178*fb63 - fb136*fb63*fb93 - fb137*fb140 - fb141*fb144 - fb147*fb148 - fb147*fb170 - fb148*fb154 - fb151*fb152 - fb154*fb170 - fb160*fb83 - fb160*fb87 - fb161*fb163*fb164 - fb163*fb175*fb63 - fb177*fb99 - fb36*fb37 - fb37*fb38 - fb40*fb42 - fb43*fb45 - fb45*fb46 - fb48*fb51 - fb48*fb53 - fb48*fb98 - fb51*fb57 - fb53*fb57 - fb54*fb55 - fb54*fb58 - fb55*fb56 - fb56*fb58 - fb57*fb98 - fb59*fb62 - fb63*fb65 - fb67*fb68 - fb69*fb70 - fb69*fb72 - fb69*fb73 - fb69*fb74 - fb69*fb99 - fb70*fb71 - fb71*fb72 - fb71*fb73 - fb71*fb74 - fb71*fb99 - fb75*fb76 - fb76*fb77 - fb76*fb78 - fb85 - fb88 - fb91*fb94
-    B4 = I1_pitch*fb203 - I1_roll*fb184 + I2_pitch*fb203 - I2_roll*fb184 + Q_theta + a*fb180*fb181 + fb108*fb97 - fb113*fb193 - fb113*fb231 - fb114*fb198 + fb114*fb205 + fb122*fb131 - fb122*fb197 - 39/2*fb129*fb165*fb251 + fb130*fb204 + fb131*fb145 - fb131*fb149 - fb131*fb40 + fb135*fb193 + fb135*fb231 - fb141*fb97 - fb145*fb197 + fb149*fb197 + fb153*fb204 + fb155*fb97 - fb181*fb65 + fb182*fb183 + fb183*fb194 + fb183*fb195 - fb183*fb67 - fb185*fb97 + fb188*fb189 - fb188*fb91 - fb190*fb75 - fb190*fb77 - fb191*fb192 + fb191*fb196 + fb197*fb40 - fb200*fb254 - fb200*fb97 - fb202*fb254 - fb202*fb97 - fb206*fb207 + fb207*fb223 - fb207*fb252 - fb208*fb209 + fb208*fb229 - fb209*fb210 + fb210*fb229 - fb212*fb213 + fb212*fb216 - fb213*fb250 - fb214*fb215 + fb214*fb248 + fb215*fb217 + fb216*fb250 - fb217*fb248 + fb218*fb220 + fb218*fb222 - fb220*fb224 - fb222*fb224 - fb225*fb70 - fb225*fb72 - fb226*fb73 - fb226*fb74 + fb227*fb70 + fb227*fb72 + fb228*fb73 + fb228*fb74 - fb232*fb233 + fb233*fb234 - fb235*fb241 + fb235*fb258 - fb236*fb238 + fb238*fb246 - fb239*fb240 + fb240*fb247 + fb241*fb244 - fb242*fb243 + fb242*fb259 + fb243*fb245 - fb244*fb258 - fb245*fb259 + fb256*fb73 + fb256*fb74 + fb286
-    B5 = I1_roll*fb292 + I1_roll*fb294 - I2_pitch*fb292 + I2_roll*fb292 + I2_roll*fb294 + Q_psi + cos_theta*fb244*fb303*fb304 + cos_theta*fb247*fb310 - fb102*fb309 + fb102*fb311 + fb109*fb251*fb305 + fb116*fb302*fb303 + fb119*fb4 - fb119*fb45 + fb119*fb47 - fb120*fb4 + fb120*fb45 - fb120*fb47 - fb122*fb300 - fb126*fb293 + fb129*fb237*fb61 - fb130*fb293 - fb137*fb4 + fb137*fb45 - fb137*fb47 + fb141*fb293 - fb145*fb300 - fb146*fb293 + fb149*fb300 + fb152*fb4 - fb152*fb45 + fb152*fb47 - fb153*fb293 + fb185*fb293 - fb208*fb295 + fb208*fb312 - fb208*fb317 - fb210*fb295 + fb210*fb312 - fb210*fb317 - fb220*fb314 - fb222*fb314 + fb236*fb315 + fb239*fb318 - fb246*fb315 - fb247*fb318 - fb251*fb302 - fb261 - fb262 + fb264 + fb266 + fb267*fb36 + fb267*fb38 - fb269*fb36 - fb269*fb38 + fb271 + fb274 + fb276 + fb277 - fb279 - fb280 - fb281 - fb282 + fb287*fb48 + fb287*fb57 + fb288*fb55 + fb288*fb58 - fb289*fb48 - fb289*fb57 - fb290*fb55 - fb290*fb58 - fb291*fb40 + fb295*fb70 + fb295*fb72 + fb297*fb298 + fb297*fb299 - fb297*fb73 - fb297*fb74 + fb298*fb319 + fb299*fb319 + fb300*fb40 - fb304*fb306 - fb306*fb308 - fb307*fb310 + fb309 - fb311 - fb312*fb70 - fb312*fb72 + fb313*fb73 + fb313*fb74 + fb317*fb72 - fb319*fb73 - fb319*fb74
-    B6 = I1_roll*fb322 + I1_roll*fb336 - I1_yaw*fb29 + I2_roll*fb322 + I2_roll*fb336 + Q_r + fb108*fb323 - fb122*fb350 - fb124*m1 - fb125 + fb126*fb335 - fb139*fb235*fb359 + fb139*fb358*sin_phi + fb141*fb175 - fb145*fb350 + fb146*fb335 + fb149*fb350 + fb155*fb323 + fb175*fb185 + fb180 - fb182 - fb192*fb326 - fb194 - fb195 + fb196*fb326 - fb198*fb337 + fb199*fb211 + fb199*fb249 - fb200*fb328 + fb200*fb334 - fb200*fb348 + fb200*fb356 + fb201*fb211 + fb201*fb249 - fb202*fb328 + fb202*fb334 - fb202*fb348 + fb202*fb356 + fb205*fb337 - fb206*fb325 + fb206*fb338 - fb208*fb343 - fb210*fb343 - fb213*fb339 - fb213*fb364 - fb214*fb327 - fb214*fb340 + fb216*fb339 + fb216*fb364 + fb217*fb327 + fb217*fb340 - fb219*fb326 + fb220*fb354 - fb221*fb326 + fb222*fb354 + fb223*fb325 - fb223*fb338 - fb232*fb321 + fb234*fb321 - fb239*fb360 - 3*fb24 + fb242*fb362 + fb242*fb367 - fb244*fb366*fb61 - fb245*fb362 - fb245*fb367 + fb247*fb360 + fb251*fb338*fb70 + fb252*fb338 + fb268*fb330 - fb268*fb62 - fb270*fb330 + fb270*fb62 - fb278*fb329 - fb278*fb351 + fb278*fb45 - fb278*fb47 - fb278*fb80 - fb28*fb33 - 45/2*fb28*fb341 + fb283*fb329 + fb283*fb351 - fb283*fb45 + fb283*fb47 + fb283*fb80 - fb31*fb33 - 135/2*fb31*fb341 - fb32*fb320 + 30*fb320*fb333 + fb331*fb48 + fb331*fb55 + fb34 - fb345*fb346 + fb345*fb365 + fb346*fb355 - fb347*fb70 - fb347*fb72 - fb349*fb70 - fb349*fb72 + fb350*fb40 + fb352*fb73 + fb352*fb74 + fb353*fb73 + fb353*fb74 - fb355*fb365 + fb357*fb363 - fb358*fb61 - fb361*fb73 - fb361*fb74 + fb363*fb366 - fb64 + fb67 - fb75 - fb77 - fb78
-    B7 = Q_nu + a*cos_phi*fb47*m2*r*sin_theta + a*cos_phi*fb80*m2*r*sin_theta + 2*a*cos_theta*m2*phi_dot*r*sin_phi*theta_dot + 2*b*cos_phi*m1*nu_dot*r*sin_theta*theta_dot + 2*b*cos_theta*m1*nu_dot*phi_dot*r*sin_phi - delta_x*fb27 - delta_y*fb2 - delta_y*fb3 - fb2*r - fb232*fb369*fb45 - fb268*fb368*fb68 - fb270*fb76*m2*r - fb286 - fb3*r - fb368*fb59 - fb370*fb47 - fb370*fb80 - fb59*m2*r
-    mm0 = delta_x*m3
-    mm1 = sin_psi**2
-    mm2 = cos_psi**2
-    mm3 = a**2*m2
-    mm4 = b**2*m1
-    mm5 = a*m2
-    mm6 = b*m1
-    mm7 = mm5 - mm6
-    mm8 = 2*psi
-    mm9 = -math.sin(mm8 - phi)
-    mm10 = (1/4)*mm9
-    mm11 = math.sin(mm8 + phi)
-    mm12 = (1/4)*mm11
-    mm13 = sin_phi**2
-    mm14 = cos_phi**2
-    mm15 = mm14*mm2
-    mm16 = mm1*mm14
-    mm17 = I1_pitch*mm15 + I1_roll*mm16 + I1_yaw*mm13 + I2_pitch*mm15 + I2_roll*mm16 + I2_yaw*mm13 + mm14*mm3 + mm14*mm4
-    mm18 = I1_yaw + I2_yaw
-    mm19 = mm18*sin_phi
-    mm20 = cos_phi*sin_theta
-    mm21 = cos_phi*cos_theta
-    mm22 = r**2
-    mm23 = 2*r
-    mm24 = mm21*mm23
-    M0_0 = m3
-    M0_1 = 0
-    M0_2 = 0
-    M0_3 = 0
-    M0_4 = 0
-    M0_5 = 0
-    M0_6 = 0
-    M0_7 = -m3*(delta_y + r)
-    M1_1 = m3
-    M1_2 = 0
-    M1_3 = 0
-    M1_4 = 0
-    M1_5 = 0
-    M1_6 = m3
-    M1_7 = mm0
-    M2_2 = m3
-    M2_3 = 0
-    M2_4 = 0
-    M2_5 = 0
-    M2_6 = 0
-    M2_7 = 0
-    M3_3 = I1_pitch*mm1 + I1_roll*mm2 + I2_pitch*mm1 + I2_roll*mm2 + mm3 + mm4
-    M3_4 = cos_phi*cos_psi*sin_psi*(-I1_pitch + I1_roll - I2_pitch + I2_roll)
-    M3_5 = 0
-    M3_6 = cos_theta*mm7*sin_phi
-    M3_7 = -I1_pitch*mm10 + (1/4)*I1_pitch*mm11 - I1_roll*mm12 + (1/4)*I1_roll*mm9 - I2_pitch*mm10 + (1/4)*I2_pitch*mm11 - I2_roll*mm12 + (1/4)*I2_roll*mm9 + b*m1*r*sin_phi*sin_theta - mm5*r*sin_phi*sin_theta
-    M4_4 = mm17
-    M4_5 = -mm19
-    M4_6 = mm20*mm7
-    M4_7 = a*cos_phi*cos_theta*m2*r - mm17 - mm21*mm6*r
-    M5_5 = mm18
-    M5_6 = 0
-    M5_7 = mm19
-    M6_6 = m1 + m2 + m3
-    M6_7 = mm0 - mm20*mm5 + mm20*mm6
-    M7_7 = delta_x**2*m3 + delta_y**2*m3 + delta_y*m3*mm23 + m1*mm22 + m2*mm22 + m3*mm22 + mm17 - mm24*mm5 + mm24*mm6
-    if I1_yaw + I2_yaw == 0.0:  # no inertia about the boom: psi'' = 0 (docs/three-d.md)
-        M0_5 = 0.0
-        M1_5 = 0.0
-        M2_5 = 0.0
-        M3_5 = 0.0
-        M4_5 = 0.0
-        M5_6 = 0.0
-        M5_7 = 0.0
-        M5_5 = 1.0
-        B5 = 0.0
-    L1_0 = M0_1 / M0_0
-    M1_1 -= L1_0 * M0_1
-    M1_2 -= L1_0 * M0_2
-    M1_3 -= L1_0 * M0_3
-    M1_4 -= L1_0 * M0_4
-    M1_5 -= L1_0 * M0_5
-    M1_6 -= L1_0 * M0_6
-    M1_7 -= L1_0 * M0_7
-    L2_0 = M0_2 / M0_0
-    M2_2 -= L2_0 * M0_2
-    M2_3 -= L2_0 * M0_3
-    M2_4 -= L2_0 * M0_4
-    M2_5 -= L2_0 * M0_5
-    M2_6 -= L2_0 * M0_6
-    M2_7 -= L2_0 * M0_7
-    L3_0 = M0_3 / M0_0
-    M3_3 -= L3_0 * M0_3
-    M3_4 -= L3_0 * M0_4
-    M3_5 -= L3_0 * M0_5
-    M3_6 -= L3_0 * M0_6
-    M3_7 -= L3_0 * M0_7
-    L4_0 = M0_4 / M0_0
-    M4_4 -= L4_0 * M0_4
-    M4_5 -= L4_0 * M0_5
-    M4_6 -= L4_0 * M0_6
-    M4_7 -= L4_0 * M0_7
-    L5_0 = M0_5 / M0_0
-    M5_5 -= L5_0 * M0_5
-    M5_6 -= L5_0 * M0_6
-    M5_7 -= L5_0 * M0_7
-    L6_0 = M0_6 / M0_0
-    M6_6 -= L6_0 * M0_6
-    M6_7 -= L6_0 * M0_7
-    L7_0 = M0_7 / M0_0
-    M7_7 -= L7_0 * M0_7
-    L2_1 = M1_2 / M1_1
-    M2_2 -= L2_1 * M1_2
-    M2_3 -= L2_1 * M1_3
-    M2_4 -= L2_1 * M1_4
-    M2_5 -= L2_1 * M1_5
-    M2_6 -= L2_1 * M1_6
-    M2_7 -= L2_1 * M1_7
-    L3_1 = M1_3 / M1_1
-    M3_3 -= L3_1 * M1_3
-    M3_4 -= L3_1 * M1_4
-    M3_5 -= L3_1 * M1_5
-    M3_6 -= L3_1 * M1_6
-    M3_7 -= L3_1 * M1_7
-    L4_1 = M1_4 / M1_1
-    M4_4 -= L4_1 * M1_4
-    M4_5 -= L4_1 * M1_5
-    M4_6 -= L4_1 * M1_6
-    M4_7 -= L4_1 * M1_7
-    L5_1 = M1_5 / M1_1
-    M5_5 -= L5_1 * M1_5
-    M5_6 -= L5_1 * M1_6
-    M5_7 -= L5_1 * M1_7
-    L6_1 = M1_6 / M1_1
-    M6_6 -= L6_1 * M1_6
-    M6_7 -= L6_1 * M1_7
-    L7_1 = M1_7 / M1_1
-    M7_7 -= L7_1 * M1_7
-    L3_2 = M2_3 / M2_2
-    M3_3 -= L3_2 * M2_3
-    M3_4 -= L3_2 * M2_4
-    M3_5 -= L3_2 * M2_5
-    M3_6 -= L3_2 * M2_6
-    M3_7 -= L3_2 * M2_7
-    L4_2 = M2_4 / M2_2
-    M4_4 -= L4_2 * M2_4
-    M4_5 -= L4_2 * M2_5
-    M4_6 -= L4_2 * M2_6
-    M4_7 -= L4_2 * M2_7
-    L5_2 = M2_5 / M2_2
-    M5_5 -= L5_2 * M2_5
-    M5_6 -= L5_2 * M2_6
-    M5_7 -= L5_2 * M2_7
-    L6_2 = M2_6 / M2_2
-    M6_6 -= L6_2 * M2_6
-    M6_7 -= L6_2 * M2_7
-    L7_2 = M2_7 / M2_2
-    M7_7 -= L7_2 * M2_7
-    L4_3 = M3_4 / M3_3
-    M4_4 -= L4_3 * M3_4
-    M4_5 -= L4_3 * M3_5
-    M4_6 -= L4_3 * M3_6
-    M4_7 -= L4_3 * M3_7
-    L5_3 = M3_5 / M3_3
-    M5_5 -= L5_3 * M3_5
-    M5_6 -= L5_3 * M3_6
-    M5_7 -= L5_3 * M3_7
-    L6_3 = M3_6 / M3_3
-    M6_6 -= L6_3 * M3_6
-    M6_7 -= L6_3 * M3_7
-    L7_3 = M3_7 / M3_3
-    M7_7 -= L7_3 * M3_7
-    L5_4 = M4_5 / M4_4
-    M5_5 -= L5_4 * M4_5
-    M5_6 -= L5_4 * M4_6
-    M5_7 -= L5_4 * M4_7
-    L6_4 = M4_6 / M4_4
-    M6_6 -= L6_4 * M4_6
-    M6_7 -= L6_4 * M4_7
-    L7_4 = M4_7 / M4_4
-    M7_7 -= L7_4 * M4_7
-    L6_5 = M5_6 / M5_5
-    M6_6 -= L6_5 * M5_6
-    M6_7 -= L6_5 * M5_7
-    L7_5 = M5_7 / M5_5
-    M7_7 -= L7_5 * M5_7
-    L7_6 = M6_7 / M6_6
-    M7_7 -= L7_6 * M6_7
-    B1 -= L1_0 * B0
-    B2 -= L2_0 * B0
-    B3 -= L3_0 * B0
-    B4 -= L4_0 * B0
-    B5 -= L5_0 * B0
-    B6 -= L6_0 * B0
-    B7 -= L7_0 * B0
-    B2 -= L2_1 * B1
-    B3 -= L3_1 * B1
-    B4 -= L4_1 * B1
-    B5 -= L5_1 * B1
-    B6 -= L6_1 * B1
-    B7 -= L7_1 * B1
-    B3 -= L3_2 * B2
-    B4 -= L4_2 * B2
-    B5 -= L5_2 * B2
-    B6 -= L6_2 * B2
-    B7 -= L7_2 * B2
-    B4 -= L4_3 * B3
-    B5 -= L5_3 * B3
-    B6 -= L6_3 * B3
-    B7 -= L7_3 * B3
-    B5 -= L5_4 * B4
-    B6 -= L6_4 * B4
-    B7 -= L7_4 * B4
-    B6 -= L6_5 * B5
-    B7 -= L7_5 * B5
-    B7 -= L7_6 * B6
-    X7 = (B7) / M7_7
-    X6 = (B6 - M6_7 * X7) / M6_6
-    X5 = (B5 - M5_6 * X6 - M5_7 * X7) / M5_5
-    X4 = (B4 - M4_5 * X5 - M4_6 * X6 - M4_7 * X7) / M4_4
-    X3 = (B3 - M3_4 * X4 - M3_5 * X5 - M3_6 * X6 - M3_7 * X7) / M3_3
-    X2 = (B2 - M2_3 * X3 - M2_4 * X4 - M2_5 * X5 - M2_6 * X6 - M2_7 * X7) / M2_2
-    X1 = (B1 - M1_2 * X2 - M1_3 * X3 - M1_4 * X4 - M1_5 * X5 - M1_6 * X6 - M1_7 * X7) / M1_1
-    X0 = (B0 - M0_1 * X1 - M0_2 * X2 - M0_3 * X3 - M0_4 * X4 - M0_5 * X5 - M0_6 * X6 - M0_7 * X7) / M0_0
-    # air drag on the three bodies (3.32-3.34, co-rotating air)
-    jd0 = 2*nu_dot
-    jd1 = 2*omega_earth
-    jd2 = jd0 - jd1
-    jd3 = delta_z_dot**2
-    jd4 = delta_x*nu_dot - delta_x*omega_earth + delta_y_dot + r_dot
-    jd5 = jd4**2
-    jd6 = delta_y + r
-    jd7 = delta_x_dot - jd6*nu_dot + jd6*omega_earth
-    jd8 = jd7**2
-    jd9 = math.sqrt(jd3 + jd5 + jd8)
-    jd10 = 1/jd9
-    jd11 = A3*rho3
-    jd12 = CD*jd11
-    jd13 = jd10*jd12
-    jd14 = (1/4)*jd13*jd2
-    jd15 = jd4*jd7
-    jd16 = nu_dot - omega_earth
-    jd17 = -jd16
-    jd18 = (1/2)*CD
-    jd19 = jd11*jd18
-    jd20 = jd19*jd9
-    jd21 = jd17*jd20
-    jd22 = -jd2
-    jd23 = (1/4)*jd22
-    jd24 = jd13*jd23
-    jd25 = jd24*jd8
-    jd26 = -jd21 - jd25
-    jd27 = jd10*jd19
-    jd28 = jd27*jd8
-    jd29 = (1/2)*jd7
-    jd30 = jd12*jd29
-    jd31 = jd10*jd30
-    jd32 = jd31*jd4
-    jd33 = -jd32
-    jd34 = -delta_z_dot*jd31
-    jd35 = -jd20*jd6
-    jd36 = delta_x*jd4
-    jd37 = 2*r
-    jd38 = jd29*(-2*delta_y - jd37) + jd36
-    jd39 = jd31*jd38
-    jd40 = jd16*jd20
-    jd41 = jd14*jd5
-    jd42 = -jd40 - jd41
-    jd43 = jd15*jd24
-    jd44 = -jd43
-    jd45 = jd27*jd5
-    jd46 = jd20 + jd45
-    jd47 = -jd46
-    jd48 = jd27*jd4
-    jd49 = -delta_z_dot*jd48
-    jd50 = delta_x*jd20
-    jd51 = jd38*jd48 + jd50
-    jd52 = jd24*jd7
-    jd53 = -delta_z_dot*jd52
-    jd54 = delta_z_dot*jd27
-    jd55 = b**2
-    jd56 = phi_dot**2
-    jd57 = jd56*sin_phi
-    jd58 = cos_phi*cos_theta
-    jd59 = b*jd58
-    jd60 = jd59*phi_dot
-    jd61 = b*sin_theta
-    jd62 = jd61*sin_phi
-    jd63 = cos_phi*jd61
-    jd64 = jd63*theta_dot
-    jd65 = phi_dot*sin_phi
-    jd66 = cos_theta*jd65
-    jd67 = b*jd66
-    jd68 = -b*cos_phi*nu_dot*sin_theta + jd63*omega_earth + jd64 + jd67
-    jd69 = -jd68 + r_dot
-    jd70 = (1/2)*jd69
-    jd71 = jd63*phi_dot
-    jd72 = b*cos_theta*sin_phi
-    jd73 = jd72*theta_dot
-    jd74 = jd59*theta_dot
-    jd75 = jd61*jd65
-    jd76 = jd59 + r
-    jd77 = jd74 - jd75 - jd76*nu_dot + jd76*omega_earth
-    jd78 = (1/2)*jd77
-    jd79 = -cos_phi*jd55*jd57 + jd70*(2*b*omega_earth*sin_phi*sin_theta + 2*b*sin_phi*sin_theta*theta_dot - jd0*jd62 - 2*jd60) + jd78*(2*b*cos_theta*nu_dot*sin_phi - jd1*jd72 - 2*jd71 - 2*jd73)
-    jd80 = cos_phi**2
-    jd81 = jd80*phi_dot
-    jd82 = jd55*jd81
-    jd83 = jd56*jd80
-    jd84 = jd69**2
-    jd85 = jd77**2
-    jd86 = math.sqrt(jd55*jd83 + jd84 + jd85)
-    jd87 = 1/jd86
-    jd88 = A1*rho1
-    jd89 = jd18*jd88
-    jd90 = jd87*jd89
-    jd91 = jd82*jd90
-    jd92 = a*cos_theta
-    jd93 = jd92*sin_phi
-    jd94 = a*jd58
-    jd95 = jd94*phi_dot
-    jd96 = a*sin_theta
-    jd97 = nu_dot*sin_phi
-    jd98 = jd96*sin_phi
-    jd99 = jd98*theta_dot
-    jd100 = a**2
-    jd101 = cos_phi*jd96
-    jd102 = jd101*theta_dot
-    jd103 = a*jd66
-    jd104 = -jd101*nu_dot + jd101*omega_earth + jd102 + jd103
-    jd105 = jd104 + r_dot
-    jd106 = jd105**2
-    jd107 = jd94*theta_dot
-    jd108 = jd65*jd96
-    jd109 = jd94 - r
-    jd110 = -jd109
-    jd111 = -jd107 + jd108 - jd110*nu_dot + jd110*omega_earth
-    jd112 = jd111**2
-    jd113 = math.sqrt(jd100*jd83 + jd106 + jd112)
-    jd114 = A2*rho2
-    jd115 = jd114*jd18
-    jd116 = jd113*jd115
-    jd117 = jd116*(jd95 + jd96*jd97 - jd98*omega_earth - jd99)
-    jd118 = jd101*phi_dot
-    jd119 = jd93*theta_dot
-    jd120 = jd118 + jd119 - jd92*jd97 + jd93*omega_earth
-    jd121 = jd116*jd98
-    jd122 = (1/2)*jd105
-    jd123 = (1/2)*jd111
-    jd124 = -cos_phi*jd100*jd57 + jd122*(jd0*jd98 - jd1*jd98 + 2*jd95 - 2*jd99) + jd123*(-jd0*jd93 + jd1*jd93 + 2*jd118 + 2*jd119)
-    jd125 = jd100*jd81
-    jd126 = 1/jd113
-    jd127 = jd115*jd126
-    jd128 = jd125*jd127
-    jd129 = b*omega_earth*sin_phi*sin_theta + b*sin_phi*sin_theta*theta_dot - jd60 - jd62*nu_dot
-    jd130 = b*cos_theta*nu_dot*sin_phi - jd71 - jd72*omega_earth - jd73
-    jd131 = CD*jd114
-    jd132 = jd126*jd131
-    jd133 = jd122*jd132
-    jd134 = jd124*jd133
-    jd135 = jd123*jd132
-    jd136 = jd135*jd98
-    jd137 = jd113*jd131
-    jd138 = jd122*jd137
-    jd139 = jd123*jd137
-    jd140 = CD*jd88
-    jd141 = jd140*jd86
-    jd142 = jd141*jd70
-    jd143 = jd141*jd78
-    jd144 = jd101*jd139 + jd138*jd94 - jd142*jd59 - jd143*jd63
-    jd145 = jd70*(jd0*jd59 - jd1*jd59 - 2*jd74 + 2*jd75) + jd78*(2*b*cos_phi*nu_dot*sin_theta - jd1*jd63 - 2*jd64 - 2*jd67)
-    jd146 = jd116*(a*cos_phi*cos_theta*omega_earth + jd107 - jd108 - jd94*nu_dot)
-    jd147 = jd122*(2*a*cos_phi*cos_theta*omega_earth + 2*a*cos_phi*cos_theta*theta_dot - jd0*jd94 - 2*jd108) + jd123*(-jd0*jd101 + jd1*jd101 + 2*jd102 + 2*jd103)
-    jd148 = jd59*nu_dot - jd59*omega_earth - jd74 + jd75
-    jd149 = -jd68
-    jd150 = jd133*jd147
-    jd151 = -jd138*jd98 + jd139*jd93 + jd142*jd62 - jd143*jd72
-    jd152 = jd140*jd87
-    jd153 = jd152*jd23
-    jd154 = jd153*jd77
-    jd155 = jd132*jd23
-    jd156 = jd112*jd155
-    jd157 = jd111*jd155
-    jd158 = jd105*jd93
-    jd159 = jd86*jd89
-    jd160 = jd159*jd55
-    jd161 = jd160*jd80
-    jd162 = jd100*jd116
-    jd163 = jd162*jd80
-    jd164 = cos_theta**2
-    jd165 = sin_phi**2
-    jd166 = jd160*jd165
-    jd167 = sin_theta**2
-    jd168 = jd162*jd165
-    jd169 = jd111*jd98 + jd125 + jd158
-    jd170 = jd55*jd80*phi_dot - jd62*jd77 - jd69*jd72
-    jd171 = jd133*jd169
-    jd172 = jd63*jd69
-    jd173 = -jd172 + jd59*jd77
-    jd174 = jd101*jd105
-    jd175 = -jd111*jd94 + jd174
-    jd176 = jd133*jd175
-    jd177 = jd152*jd70
-    jd178 = jd106*jd127
-    jd179 = -1/2*A1*CD*b*cos_theta*jd86*rho1*sin_phi + jd116*jd93
-    jd180 = -jd76
-    jd181 = jd172 + jd78*(-jd37 - 2*jd59)
-    jd182 = (1/2)*jd111*(-jd37 + 2*jd94) - jd174
-    jd183 = jd133*jd182
-    jd184 = jd159*jd59
-    jd185 = jd152*jd78
-    jd186 = jd185*jd59
-    jd187 = jd129*jd159
-    jd188 = jd177*jd79
-    jd189 = jd101*jd117 + jd101*jd134 + jd151 - jd187*jd63 - jd188*jd63
-    jd190 = jd148*jd159
-    jd191 = jd145*jd177
-    jd192 = jd101*jd146 + jd101*jd150 + jd144 - jd190*jd63 - jd191*jd63
-    jd193 = jd153*jd85
-    jd194 = -jd154*jd172 + jd157*jd174
-    jd195 = jd170*jd177
-    jd196 = jd101*jd171 - jd195*jd63
-    jd197 = jd173*jd177
-    jd198 = jd161*jd167
-    jd199 = jd163*jd167
-    jd200 = jd198 + jd199
-    jd201 = jd101*jd176 - jd197*jd63 + jd200
-    jd202 = jd84*jd90
-    jd203 = jd101*jd116
-    jd204 = jd159*jd63
-    jd205 = jd203 - jd204
-    jd206 = jd101*jd178 - jd202*jd63 + jd205
-    jd207 = jd177*jd181
-    jd208 = jd207*jd63
-    jd209 = jd101*jd183
-    jd210 = jd21*jd6 + jd25*jd6 + jd30*jd9 - jd36*jd52
-    jd211 = jd159*jd76
-    jd212 = jd110*jd116
-    jd213 = jd185*jd76
-    jd214 = jd110*jd135
-    jd215 = delta_x*jd45
-    jd216 = jd58*sin_phi*sin_theta
-    dQ0_0 = -jd14*jd15
-    dQ0_1 = jd26
-    dQ0_2 = 0
-    dQ0_3 = 0
-    dQ0_4 = 0
-    dQ0_5 = 0
-    dQ0_6 = jd26
-    dQ0_7 = 0
-    dQ0_8 = -jd20 - jd28
-    dQ0_9 = jd33
-    dQ0_10 = jd34
-    dQ0_11 = 0
-    dQ0_12 = 0
-    dQ0_13 = 0
-    dQ0_14 = jd33
-    dQ0_15 = -jd35 - jd39
-    dQ1_0 = jd42
-    dQ1_1 = jd44
-    dQ1_2 = 0
-    dQ1_3 = 0
-    dQ1_4 = 0
-    dQ1_5 = 0
-    dQ1_6 = jd44
-    dQ1_7 = 0
-    dQ1_8 = jd33
-    dQ1_9 = jd47
-    dQ1_10 = jd49
-    dQ1_11 = 0
-    dQ1_12 = 0
-    dQ1_13 = 0
-    dQ1_14 = jd47
-    dQ1_15 = -jd51
-    dQ2_0 = -delta_z_dot*jd14*jd4
-    dQ2_1 = jd53
-    dQ2_2 = 0
-    dQ2_3 = 0
-    dQ2_4 = 0
-    dQ2_5 = 0
-    dQ2_6 = jd53
-    dQ2_7 = 0
-    dQ2_8 = jd34
-    dQ2_9 = jd49
-    dQ2_10 = -jd20 - jd27*jd3
-    dQ2_11 = 0
-    dQ2_12 = 0
-    dQ2_13 = 0
-    dQ2_14 = jd49
-    dQ2_15 = -jd38*jd54
-    dQ3_0 = 0
-    dQ3_1 = 0
-    dQ3_2 = 0
-    dQ3_3 = (1/2)*A1*CD*b*cos_theta*jd129*jd86*rho1*sin_phi + (1/2)*A1*CD*b*cos_theta*jd69*jd79*jd87*rho1*sin_phi + (1/2)*A1*CD*b*jd130*jd86*rho1*sin_phi*sin_theta + (1/2)*A1*CD*b*jd77*jd79*jd87*rho1*sin_phi*sin_theta + A1*CD*cos_phi*jd55*jd86*phi_dot*rho1*sin_phi + A2*CD*cos_phi*jd100*jd113*phi_dot*rho2*sin_phi - jd117*jd93 - jd120*jd121 - jd124*jd128 - jd124*jd136 - jd134*jd93 - jd144 - jd79*jd91
-    dQ3_4 = (1/2)*A1*CD*b*cos_theta*jd145*jd69*jd87*rho1*sin_phi + (1/2)*A1*CD*b*cos_theta*jd148*jd86*rho1*sin_phi + (1/2)*A1*CD*b*jd145*jd77*jd87*rho1*sin_phi*sin_theta + (1/2)*A1*CD*b*jd149*jd86*rho1*sin_phi*sin_theta - jd104*jd121 - jd128*jd147 - jd136*jd147 - jd145*jd91 - jd146*jd93 - jd150*jd93 - jd151
-    dQ3_5 = 0
-    dQ3_6 = (1/4)*A1*CD*b*cos_theta*jd22*jd69*jd77*jd87*rho1*sin_phi + (1/2)*A1*CD*b*jd17*jd86*rho1*sin_phi*sin_theta + (1/4)*A1*CD*b*jd22*jd85*jd87*rho1*sin_phi*sin_theta - jd121*jd17 - jd125*jd157 - jd154*jd82 - jd156*jd98 - jd157*jd158
-    dQ3_7 = 0
-    dQ3_8 = 0
-    dQ3_9 = 0
-    dQ3_10 = 0
-    dQ3_11 = (1/2)*A1*CD*b*cos_theta*jd170*jd69*jd87*rho1*sin_phi + (1/2)*A1*CD*b*jd170*jd77*jd87*rho1*sin_phi*sin_theta - jd128*jd169 - jd136*jd169 - jd161 - jd163 - jd164*jd166 - jd164*jd168 - jd166*jd167 - jd167*jd168 - jd170*jd91 - jd171*jd93
-    dQ3_12 = (1/2)*A1*CD*b*cos_theta*jd173*jd69*jd87*rho1*sin_phi + (1/2)*A1*CD*b*jd173*jd77*jd87*rho1*sin_phi*sin_theta - jd128*jd175 - jd136*jd175 - jd173*jd91 - jd176*jd93
-    dQ3_13 = 0
-    dQ3_14 = (1/2)*A1*CD*b*cos_theta*jd84*jd87*rho1*sin_phi + (1/2)*A1*CD*b*jd69*jd77*jd87*rho1*sin_phi*sin_theta - jd105*jd136 - jd125*jd133 - jd177*jd82 - jd178*jd93 - jd179
-    dQ3_15 = (1/2)*A1*CD*b*cos_theta*jd181*jd69*jd87*rho1*sin_phi + (1/2)*A1*CD*b*jd180*jd86*rho1*sin_phi*sin_theta + (1/2)*A1*CD*b*jd181*jd77*jd87*rho1*sin_phi*sin_theta + (1/2)*A1*CD*cos_phi*cos_theta*jd55*jd86*rho1*sin_phi*sin_theta + (1/2)*A2*CD*cos_phi*cos_theta*jd100*jd113*rho2*sin_phi*sin_theta - jd109*jd121 - jd128*jd182 - jd136*jd182 - jd181*jd91 - jd183*jd93
-    dQ4_0 = 0
-    dQ4_1 = 0
-    dQ4_2 = 0
-    dQ4_3 = (1/2)*A2*CD*a*cos_phi*cos_theta*jd111*jd124*jd126*rho2 + (1/2)*A2*CD*a*cos_phi*cos_theta*jd113*jd120*rho2 - jd130*jd184 - jd186*jd79 - jd189
-    dQ4_4 = (1/2)*A2*CD*a*cos_phi*cos_theta*jd104*jd113*rho2 + (1/2)*A2*CD*a*cos_phi*cos_theta*jd111*jd126*jd147*rho2 - jd145*jd186 - jd149*jd184 - jd192
-    dQ4_5 = 0
-    dQ4_6 = (1/4)*A2*CD*a*cos_phi*cos_theta*jd112*jd126*jd22*rho2 + (1/2)*A2*CD*a*cos_phi*cos_theta*jd113*jd17*rho2 - jd17*jd184 - jd193*jd59 - jd194
-    dQ4_7 = 0
-    dQ4_8 = 0
-    dQ4_9 = 0
-    dQ4_10 = 0
-    dQ4_11 = (1/2)*A2*CD*a*cos_phi*cos_theta*jd111*jd126*jd169*rho2 - jd170*jd186 - jd196
-    dQ4_12 = (1/2)*A2*CD*a*cos_phi*cos_theta*jd111*jd126*jd175*rho2 - jd161*jd164 - jd163*jd164 - jd173*jd186 - jd201
-    dQ4_13 = 0
-    dQ4_14 = (1/2)*A2*CD*a*cos_phi*cos_theta*jd105*jd111*jd126*rho2 - jd186*jd69 - jd206
-    dQ4_15 = jd109*jd116*jd94 + jd135*jd182*jd94 - jd180*jd184 - jd181*jd186 + jd200 + jd208 - jd209
-    dQ5_0 = 0
-    dQ5_1 = 0
-    dQ5_2 = 0
-    dQ5_3 = 0
-    dQ5_4 = 0
-    dQ5_5 = 0
-    dQ5_6 = 0
-    dQ5_7 = 0
-    dQ5_8 = 0
-    dQ5_9 = 0
-    dQ5_10 = 0
-    dQ5_11 = 0
-    dQ5_12 = 0
-    dQ5_13 = 0
-    dQ5_14 = 0
-    dQ5_15 = 0
-    dQ6_0 = jd42
-    dQ6_1 = jd44
-    dQ6_2 = 0
-    dQ6_3 = -jd117 - jd134 - jd187 - jd188
-    dQ6_4 = -jd146 - jd150 - jd190 - jd191
-    dQ6_5 = 0
-    dQ6_6 = -jd105*jd157 - jd154*jd69 - jd43
-    dQ6_7 = 0
-    dQ6_8 = jd33
-    dQ6_9 = jd47
-    dQ6_10 = jd49
-    dQ6_11 = -jd171 - jd179 - jd195
-    dQ6_12 = -jd176 - jd197 - jd205
-    dQ6_13 = 0
-    dQ6_14 = -jd116 - jd159 - jd178 - jd202 - jd46
-    dQ6_15 = -jd183 + jd203 - jd204 - jd207 - jd51
-    dQ7_0 = (1/4)*A3*CD*jd10*jd2*jd4*jd6*jd7*rho3 - delta_x*jd40 - delta_x*jd41 - jd20*jd4
-    dQ7_1 = jd210
-    dQ7_2 = 0
-    dQ7_3 = jd120*jd212 + jd124*jd214 + jd130*jd211 + jd189 + jd213*jd79
-    dQ7_4 = jd104*jd212 + jd145*jd213 + jd147*jd214 + jd149*jd211 + jd192
-    dQ7_5 = 0
-    dQ7_6 = jd110*jd156 + jd139 + jd143 + jd17*jd211 + jd17*jd212 + jd193*jd76 + jd194 + jd210
-    dQ7_7 = 0
-    dQ7_8 = jd20*jd6 + jd28*jd6 - jd31*jd36
-    dQ7_9 = (1/2)*A3*CD*jd10*jd4*jd6*jd7*rho3 - jd215 - jd50
-    dQ7_10 = (1/2)*A3*CD*delta_z_dot*jd10*jd6*jd7*rho3 - jd36*jd54
-    dQ7_11 = jd160*jd216 + jd162*jd216 + jd169*jd214 + jd170*jd213 + jd196 - jd211*jd62 + jd212*jd98
-    dQ7_12 = jd173*jd213 + jd175*jd214 + jd201 + jd211*jd59 - jd212*jd94
-    dQ7_13 = 0
-    dQ7_14 = jd105*jd214 + jd206 + jd213*jd69 - jd215 + jd32*jd6 - jd50
-    dQ7_15 = -delta_x**2*jd20 + jd109*jd212 + jd180*jd211 + jd181*jd213 + jd182*jd214 - jd198 - jd199 - jd208 + jd209 - jd27*jd36*jd38 + jd35*jd6 + jd39*jd6
-    lambda1 = math.sqrt((b*sin_phi - delta_z)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*cos_phi*sin_theta - delta_x)**2)
-    if lambda1 > l10:  # tether 1 taut: spring1, damper1
-        jt1_0 = b*cos_phi
-        jt1_1 = jt1_0*sin_theta
-        jt1_2 = -delta_x + jt1_1
-        jt1_3 = b*sin_phi
-        jt1_4 = -delta_z + jt1_3
-        jt1_5 = cos_theta*jt1_0
-        jt1_6 = -delta_y + jt1_5
-        jt1_7 = jt1_2**2 + jt1_4**2 + jt1_6**2
-        jt1_8 = jt1_7**(-3/2)
-        jt1_9 = 2*delta_x
-        jt1_10 = 1/jt1_7
-        jt1_11 = c1*jt1_10
-        jt1_12 = delta_x_dot*jt1_11
-        jt1_13 = jt1_12*jt1_9
-        jt1_14 = 2*jt1_1 - jt1_9
-        jt1_15 = jt1_7**(-2)
-        jt1_16 = c1*jt1_15
-        jt1_17 = jt1_14*jt1_16
-        jt1_18 = delta_x**2
-        jt1_19 = delta_x_dot*jt1_18
-        jt1_20 = jt1_17*jt1_19
-        jt1_21 = E1*jt1_8
-        jt1_22 = jt1_1*jt1_21
-        jt1_23 = delta_x*jt1_17
-        jt1_24 = delta_y*delta_y_dot
-        jt1_25 = jt1_23*jt1_24
-        jt1_26 = delta_z*delta_z_dot
-        jt1_27 = jt1_23*jt1_26
-        jt1_28 = b**2
-        jt1_29 = cos_phi**2
-        jt1_30 = jt1_28*jt1_29
-        jt1_31 = jt1_11*jt1_30
-        jt1_32 = jt1_31*sin_theta
-        jt1_33 = cos_theta*jt1_32
-        jt1_34 = jt1_33*theta_dot
-        jt1_35 = sin_theta**2
-        jt1_36 = jt1_30*jt1_35
-        jt1_37 = delta_x_dot*jt1_36
-        jt1_38 = jt1_3*sin_theta
-        jt1_39 = jt1_11*phi_dot
-        jt1_40 = jt1_17*phi_dot
-        jt1_41 = jt1_18*jt1_38
-        jt1_42 = cos_phi*jt1_28*sin_phi
-        jt1_43 = jt1_23*phi_dot
-        jt1_44 = jt1_42*jt1_43
-        jt1_45 = delta_z_dot*jt1_42
-        jt1_46 = jt1_17*sin_theta
-        jt1_47 = cos_theta*sin_theta
-        jt1_48 = jt1_30*jt1_47
-        jt1_49 = delta_y_dot*jt1_48
-        jt1_50 = jt1_30*sin_theta
-        jt1_51 = delta_z*jt1_50
-        jt1_52 = sin_theta**3
-        jt1_53 = b**3
-        jt1_54 = jt1_29*sin_phi
-        jt1_55 = jt1_53*jt1_54
-        jt1_56 = jt1_40*jt1_55
-        jt1_57 = jt1_1*theta_dot
-        jt1_58 = delta_y*jt1_57
-        jt1_59 = cos_theta*jt1_3
-        jt1_60 = delta_y*jt1_59
-        jt1_61 = jt1_48*theta_dot
-        jt1_62 = cos_theta**2
-        jt1_63 = jt1_56*sin_theta
-        jt1_64 = 1/l10
-        jt1_65 = E1*jt1_64
-        jt1_66 = 1/math.sqrt(jt1_7)
-        jt1_67 = -E1*jt1_66
-        jt1_68 = delta_y_dot*jt1_11
-        jt1_69 = delta_y*jt1_68
-        jt1_70 = delta_y*jt1_11
-        jt1_71 = jt1_70*phi_dot
-        jt1_72 = -b*c1*cos_phi*cos_theta*delta_y_dot*jt1_10 - c1*cos_phi*jt1_10*jt1_28*jt1_62*phi_dot*sin_phi + jt1_1*jt1_70*theta_dot + jt1_59*jt1_71 + jt1_65 + jt1_67 + jt1_69
-        jt1_73 = delta_z_dot*jt1_11
-        jt1_74 = delta_z*jt1_73
-        jt1_75 = jt1_39*jt1_42
-        jt1_76 = -b*c1*cos_phi*delta_z*jt1_10*phi_dot - b*c1*delta_z_dot*jt1_10*sin_phi + jt1_74 + jt1_75
-        jt1_77 = delta_x*jt1_68
-        jt1_78 = delta_x*jt1_11
-        jt1_79 = jt1_78*theta_dot
-        jt1_80 = cos_theta*phi_dot
-        jt1_81 = -c1*cos_phi*cos_theta*jt1_10*jt1_28*phi_dot*sin_phi*sin_theta
-        jt1_82 = jt1_1*jt1_6
-        jt1_83 = 2*delta_y
-        jt1_84 = 2*jt1_5
-        jt1_85 = -jt1_83 + jt1_84
-        jt1_86 = delta_x*jt1_16
-        jt1_87 = jt1_85*jt1_86
-        jt1_88 = jt1_24*jt1_87
-        jt1_89 = jt1_26*jt1_87
-        jt1_90 = jt1_16*jt1_19
-        jt1_91 = jt1_85*jt1_90
-        jt1_92 = jt1_87*phi_dot
-        jt1_93 = jt1_16*jt1_85
-        jt1_94 = jt1_93*phi_dot
-        jt1_95 = jt1_42*jt1_92
-        jt1_96 = jt1_45*sin_theta
-        jt1_97 = jt1_93*jt1_96
-        jt1_98 = jt1_51*jt1_94
-        jt1_99 = jt1_55*jt1_94
-        jt1_100 = jt1_52*jt1_99
-        jt1_101 = jt1_99*sin_theta
-        jt1_102 = jt1_101*jt1_62
-        jt1_103 = delta_x*jt1_73
-        jt1_104 = jt1_32*phi_dot
-        jt1_105 = 2*delta_z
-        jt1_106 = 2*jt1_3
-        jt1_107 = -jt1_105 + jt1_106
-        jt1_108 = jt1_107*jt1_86
-        jt1_109 = jt1_108*jt1_24
-        jt1_110 = jt1_108*jt1_26
-        jt1_111 = jt1_107*jt1_90
-        jt1_112 = jt1_108*phi_dot
-        jt1_113 = jt1_107*jt1_16
-        jt1_114 = jt1_113*phi_dot
-        jt1_115 = jt1_112*jt1_42
-        jt1_116 = jt1_114*jt1_55
-        jt1_117 = jt1_116*sin_theta
-        jt1_118 = jt1_0*jt1_4
-        jt1_119 = cos_theta*jt1_6
-        jt1_120 = -jt1_118 + jt1_119*jt1_3 + jt1_2*jt1_38
-        jt1_121 = jt1_106*jt1_119 + jt1_106*jt1_2*sin_theta - 2*jt1_118
-        jt1_122 = jt1_121*jt1_90
-        jt1_123 = jt1_121*jt1_86
-        jt1_124 = jt1_123*jt1_24
-        jt1_125 = jt1_123*jt1_26
-        jt1_126 = jt1_78*phi_dot
-        jt1_127 = jt1_126*jt1_30
-        jt1_128 = jt1_73*sin_theta
-        jt1_129 = cos_phi**3
-        jt1_130 = jt1_11*jt1_53
-        jt1_131 = jt1_130*phi_dot
-        jt1_132 = jt1_129*jt1_131
-        jt1_133 = sin_phi**2
-        jt1_134 = jt1_11*jt1_18
-        jt1_135 = jt1_1*jt1_134
-        jt1_136 = jt1_134*jt1_59
-        jt1_137 = delta_z*jt1_78
-        jt1_138 = jt1_3*phi_dot
-        jt1_139 = jt1_133*jt1_28
-        jt1_140 = jt1_126*jt1_139
-        jt1_141 = jt1_121*jt1_16
-        jt1_142 = delta_y*jt1_78
-        jt1_143 = jt1_142*jt1_5
-        jt1_144 = jt1_141*phi_dot
-        jt1_145 = jt1_123*phi_dot
-        jt1_146 = jt1_145*jt1_42
-        jt1_147 = jt1_139*jt1_71
-        jt1_148 = jt1_144*jt1_55
-        jt1_149 = jt1_11*jt1_42
-        jt1_150 = jt1_35*jt1_83
-        jt1_151 = jt1_148*sin_theta
-        jt1_152 = cos_phi*jt1_133
-        jt1_153 = jt1_131*jt1_152
-        jt1_154 = 2*sin_theta
-        jt1_155 = jt1_11*jt1_139
-        jt1_156 = jt1_155*phi_dot
-        jt1_157 = -E1*b*jt1_66*sin_phi*sin_theta - 2*c1*cos_phi*cos_theta*delta_x*jt1_10*jt1_28*sin_phi*sin_theta*theta_dot - 2*c1*cos_phi*delta_x_dot*jt1_10*jt1_28*jt1_35*sin_phi - 2*c1*cos_phi*delta_z*jt1_10*jt1_28*phi_dot*sin_phi*sin_theta - 2*c1*cos_phi*jt1_10*jt1_133*jt1_52*jt1_53*phi_dot - 2*c1*cos_phi*jt1_10*jt1_133*jt1_53*jt1_62*phi_dot*sin_theta - c1*delta_z_dot*jt1_10*jt1_133*jt1_28*sin_theta + jt1_13*jt1_38 + jt1_153*jt1_154 + jt1_156*jt1_35*jt1_9 + jt1_38*jt1_65 + jt1_38*jt1_69 + jt1_38*jt1_74
-        jt1_158 = jt1_2*jt1_5
-        jt1_159 = b*cos_phi*jt1_6*sin_theta - jt1_158
-        jt1_160 = 2*b*cos_phi*jt1_6*sin_theta - jt1_2*jt1_84
-        jt1_161 = jt1_160*jt1_90
-        jt1_162 = jt1_160*jt1_86
-        jt1_163 = jt1_162*jt1_24
-        jt1_164 = jt1_162*jt1_26
-        jt1_165 = jt1_30*jt1_62
-        jt1_166 = jt1_165*jt1_78
-        jt1_167 = jt1_16*jt1_160
-        jt1_168 = jt1_12*jt1_30
-        jt1_169 = jt1_168*sin_theta
-        jt1_170 = cos_theta*jt1_169
-        jt1_171 = jt1_5*theta_dot
-        jt1_172 = jt1_167*phi_dot
-        jt1_173 = jt1_162*phi_dot
-        jt1_174 = jt1_173*jt1_42
-        jt1_175 = delta_z*phi_dot
-        jt1_176 = jt1_167*jt1_50
-        jt1_177 = jt1_172*jt1_55
-        jt1_178 = jt1_177*sin_theta
-        jt1_179 = E1*jt1_66
-        jt1_180 = jt1_30*jt1_68
-        jt1_181 = cos_theta*jt1_73
-        jt1_182 = cos_theta*jt1_31
-        jt1_183 = jt1_182*phi_dot
-        jt1_184 = cos_theta**3
-        jt1_185 = jt1_131*jt1_54
-        jt1_186 = -E1*b*cos_phi*cos_theta*jt1_64 - 2*b*c1*cos_phi*cos_theta*delta_x*delta_x_dot*jt1_10 - b*c1*cos_phi*cos_theta*delta_y*delta_y_dot*jt1_10 - b*c1*cos_phi*cos_theta*delta_z*delta_z_dot*jt1_10 - 2*c1*cos_phi*cos_theta*delta_x*jt1_10*jt1_28*phi_dot*sin_phi*sin_theta - c1*cos_phi*delta_y*jt1_10*jt1_28*jt1_62*phi_dot*sin_phi - 2*c1*cos_theta*delta_y*jt1_10*jt1_28*jt1_29*sin_theta*theta_dot - c1*cos_theta*jt1_10*jt1_29*jt1_53*phi_dot*sin_phi + cos_theta*jt1_185*jt1_35 + delta_z*jt1_183 + jt1_179*jt1_5 + jt1_180*jt1_62 + jt1_181*jt1_42 + jt1_184*jt1_185 + jt1_35*jt1_42*jt1_71
-        jt1_187 = jt1_31*jt1_35
-        jt1_188 = b*c1*cos_phi*cos_theta*delta_x*jt1_10 + b*c1*cos_phi*delta_y*jt1_10*sin_theta - jt1_142 - jt1_33
-        jt1_189 = jt1_149*sin_theta
-        jt1_190 = b*c1*cos_phi*delta_z*jt1_10*sin_theta + b*c1*delta_x*jt1_10*sin_phi - jt1_137 - jt1_189
-        jt1_191 = jt1_142*jt1_59
-        jt1_192 = jt1_42*jt1_78
-        jt1_193 = jt1_130*jt1_54
-        jt1_194 = jt1_193*sin_theta
-        jt1_195 = b*c1*cos_phi*delta_x*delta_z*jt1_10 + c1*cos_phi*cos_theta*delta_y*jt1_10*jt1_28*sin_phi*sin_theta + 2*c1*cos_phi*delta_x*jt1_10*jt1_28*jt1_35*sin_phi + c1*cos_phi*delta_x*jt1_10*jt1_28*jt1_62*sin_phi + c1*jt1_10*jt1_29*jt1_53*sin_phi*sin_theta - delta_z*jt1_32 - jt1_134*jt1_38 - jt1_191 - jt1_192 - jt1_193*jt1_52 - jt1_194*jt1_62
-        jt1_196 = jt1_1*jt1_142
-        jt1_197 = b*c1*cos_phi*cos_theta*jt1_10*jt1_18 + c1*delta_y*jt1_10*jt1_28*jt1_29*jt1_35 - jt1_196 - jt1_48*jt1_78
-        jt1_198 = delta_x_dot*jt1_70
-        jt1_199 = jt1_31*jt1_62
-        jt1_200 = jt1_199*theta_dot
-        jt1_201 = delta_x_dot*delta_y
-        jt1_202 = jt1_201*jt1_23
-        jt1_203 = delta_y*jt1_26
-        jt1_204 = jt1_17*jt1_203
-        jt1_205 = delta_y**2
-        jt1_206 = delta_y_dot*jt1_205
-        jt1_207 = jt1_17*jt1_206
-        jt1_208 = delta_y*jt1_38
-        jt1_209 = jt1_1*jt1_17
-        jt1_210 = jt1_205*theta_dot
-        jt1_211 = jt1_205*jt1_59
-        jt1_212 = cos_theta*jt1_45
-        jt1_213 = delta_y*jt1_40
-        jt1_214 = delta_x_dot*jt1_48
-        jt1_215 = jt1_17*jt1_80
-        jt1_216 = delta_z*jt1_30
-        jt1_217 = delta_y_dot*jt1_165
-        jt1_218 = jt1_165*theta_dot
-        jt1_219 = jt1_68*jt1_83
-        jt1_220 = jt1_16*jt1_206
-        jt1_221 = jt1_220*jt1_85
-        jt1_222 = jt1_21*jt1_5
-        jt1_223 = jt1_201*jt1_87
-        jt1_224 = jt1_16*jt1_203
-        jt1_225 = jt1_224*jt1_85
-        jt1_226 = jt1_1*jt1_93
-        jt1_227 = delta_y*jt1_94
-        jt1_228 = jt1_80*jt1_93
-        jt1_229 = delta_x_dot*jt1_78
-        jt1_230 = -b*c1*cos_phi*cos_theta*delta_x*jt1_10*theta_dot - b*c1*cos_phi*delta_x_dot*jt1_10*sin_theta - c1*cos_phi*jt1_10*jt1_28*jt1_35*phi_dot*sin_phi + jt1_126*jt1_38 + jt1_229
-        jt1_231 = delta_y*jt1_73
-        jt1_232 = jt1_108*jt1_201
-        jt1_233 = jt1_107*jt1_224
-        jt1_234 = jt1_107*jt1_220
-        jt1_235 = jt1_1*jt1_113
-        jt1_236 = delta_y*jt1_114
-        jt1_237 = jt1_113*jt1_80
-        jt1_238 = jt1_121*jt1_220
-        jt1_239 = jt1_123*jt1_201
-        jt1_240 = jt1_121*jt1_224
-        jt1_241 = jt1_30*jt1_70
-        jt1_242 = jt1_11*jt1_205
-        jt1_243 = jt1_242*jt1_5
-        jt1_244 = delta_z*jt1_70
-        jt1_245 = jt1_1*jt1_141
-        jt1_246 = delta_y*jt1_144
-        jt1_247 = jt1_141*jt1_80
-        jt1_248 = jt1_59*jt1_65
-        jt1_249 = jt1_59*jt1_74
-        jt1_250 = jt1_62*jt1_83
-        jt1_251 = cos_theta*jt1_83
-        jt1_252 = -E1*b*cos_theta*jt1_66*sin_phi - 2*c1*cos_phi*cos_theta*delta_z*jt1_10*jt1_28*phi_dot*sin_phi - 2*c1*cos_phi*cos_theta*jt1_10*jt1_133*jt1_35*jt1_53*phi_dot - 2*c1*cos_phi*delta_y_dot*jt1_10*jt1_28*jt1_62*sin_phi - 2*c1*cos_phi*jt1_10*jt1_133*jt1_184*jt1_53*phi_dot - c1*cos_theta*delta_z_dot*jt1_10*jt1_133*jt1_28 + 2*cos_theta*jt1_153 + jt1_156*jt1_250 + jt1_189*jt1_251*theta_dot + jt1_219*jt1_59 + jt1_229*jt1_59 + jt1_248 + jt1_249
-        jt1_253 = jt1_1*jt1_65
-        jt1_254 = jt1_1*jt1_229
-        jt1_255 = jt1_1*jt1_74
-        jt1_256 = jt1_1*jt1_219
-        jt1_257 = jt1_185*sin_theta
-        jt1_258 = jt1_126*jt1_42
-        jt1_259 = jt1_258*jt1_35
-        jt1_260 = jt1_47*jt1_75*jt1_83
-        jt1_261 = jt1_241*jt1_35*theta_dot
-        jt1_262 = jt1_162*jt1_201
-        jt1_263 = jt1_160*jt1_224
-        jt1_264 = jt1_160*jt1_220
-        jt1_265 = jt1_1*jt1_167
-        jt1_266 = delta_y*jt1_172
-        jt1_267 = jt1_167*jt1_80
-        jt1_268 = cos_theta*jt1_149
-        jt1_269 = b*c1*cos_phi*cos_theta*delta_z*jt1_10 + b*c1*delta_y*jt1_10*sin_phi - jt1_244 - jt1_268
-        jt1_270 = jt1_42*jt1_70
-        jt1_271 = delta_z*jt1_182
-        jt1_272 = jt1_184*jt1_193
-        jt1_273 = cos_theta*jt1_193*jt1_35
-        jt1_274 = b*c1*cos_phi*delta_y*delta_z*jt1_10 + c1*cos_phi*cos_theta*delta_x*jt1_10*jt1_28*sin_phi*sin_theta + c1*cos_phi*delta_y*jt1_10*jt1_28*jt1_35*sin_phi + 2*c1*cos_phi*delta_y*jt1_10*jt1_28*jt1_62*sin_phi + c1*cos_theta*jt1_10*jt1_29*jt1_53*sin_phi - jt1_142*jt1_38 - jt1_242*jt1_59 - jt1_270 - jt1_271 - jt1_272 - jt1_273
-        jt1_275 = b*c1*cos_phi*cos_theta*delta_x*delta_y*jt1_10 + c1*cos_theta*delta_y*jt1_10*jt1_28*jt1_29*sin_theta - jt1_1*jt1_242 - jt1_166
-        jt1_276 = delta_z*jt1_12
-        jt1_277 = delta_z*jt1_39
-        jt1_278 = jt1_21*jt1_3
-        jt1_279 = delta_x_dot*delta_z
-        jt1_280 = delta_z*jt1_24
-        jt1_281 = delta_z**2
-        jt1_282 = delta_z_dot*jt1_281
-        jt1_283 = delta_y*theta_dot
-        jt1_284 = delta_z*jt1_283
-        jt1_285 = delta_z*jt1_59
-        jt1_286 = jt1_175*jt1_38
-        jt1_287 = delta_z_dot*jt1_139
-        jt1_288 = jt1_17*jt1_42
-        jt1_289 = cos_theta*delta_y_dot
-        jt1_290 = delta_x_dot*jt1_42
-        jt1_291 = jt1_105*jt1_42
-        jt1_292 = cos_theta*jt1_42*theta_dot
-        jt1_293 = jt1_152*jt1_53
-        jt1_294 = jt1_293*jt1_40
-        jt1_295 = delta_z*jt1_68
-        jt1_296 = delta_z*jt1_11
-        jt1_297 = jt1_16*jt1_282
-        jt1_298 = jt1_289*jt1_42
-        jt1_299 = jt1_290*sin_theta
-        jt1_300 = jt1_293*jt1_94
-        jt1_301 = jt1_105*jt1_73
-        jt1_302 = jt1_114*jt1_293
-        jt1_303 = sin_phi**3
-        jt1_304 = jt1_131*jt1_303
-        jt1_305 = jt1_11*jt1_281
-        jt1_306 = jt1_3*jt1_305
-        jt1_307 = jt1_139*sin_theta
-        jt1_308 = jt1_70*theta_dot
-        jt1_309 = delta_z*jt1_156
-        jt1_310 = jt1_137*phi_dot
-        jt1_311 = jt1_144*jt1_293
-        jt1_312 = jt1_105*phi_dot
-        jt1_313 = jt1_312*jt1_42
-        jt1_314 = cos_theta*jt1_180
-        jt1_315 = cos_theta*jt1_79
-        jt1_316 = 2*jt1_185
-        jt1_317 = -E1*b*cos_phi*jt1_64 - b*c1*cos_phi*delta_x*delta_x_dot*jt1_10 - b*c1*cos_phi*delta_y*delta_y_dot*jt1_10 - 2*b*c1*cos_phi*delta_z*delta_z_dot*jt1_10 - 2*c1*cos_phi*cos_theta*delta_y*jt1_10*jt1_28*phi_dot*sin_phi - 2*c1*cos_phi*delta_x*jt1_10*jt1_28*phi_dot*sin_phi*sin_theta - c1*delta_y*jt1_10*jt1_28*jt1_29*sin_theta*theta_dot - 2*c1*jt1_10*jt1_29*jt1_53*phi_dot*sin_phi + jt1_0*jt1_179 + jt1_169 + jt1_30*jt1_315 + jt1_31*jt1_312 + jt1_314 + jt1_316*jt1_35 + jt1_316*jt1_62 + 2*jt1_42*jt1_73
-        jt1_318 = jt1_12*jt1_42
-        jt1_319 = jt1_172*jt1_293
-        jt1_320 = jt1_130*jt1_152
-        jt1_321 = cos_theta*jt1_139
-        jt1_322 = jt1_321*jt1_70
-        jt1_323 = jt1_296*jt1_42
-        jt1_324 = jt1_320*jt1_62
-        jt1_325 = jt1_0*jt1_305 - jt1_105*jt1_149 - jt1_137*jt1_38 - jt1_244*jt1_59 + jt1_307*jt1_78 - jt1_320*jt1_35 + jt1_320 + jt1_322 + jt1_323*jt1_35 + jt1_323*jt1_62 - jt1_324
-        jt1_326 = b*c1*cos_phi*cos_theta*delta_x*delta_z*jt1_10 + c1*cos_phi*delta_y*jt1_10*jt1_28*sin_phi*sin_theta - cos_theta*jt1_192 - jt1_1*jt1_244
-        jt1_327 = delta_z*jt1_21
-        jt1_328 = jt1_21*jt1_42
-        jt1_329 = jt1_2*jt1_328
-        jt1_330 = jt1_281*jt1_30
-        jt1_331 = b**4
-        jt1_332 = jt1_133*jt1_29
-        jt1_333 = jt1_331*jt1_332
-        jt1_334 = jt1_333*jt1_40
-        jt1_335 = delta_z_dot*jt1_293
-        jt1_336 = jt1_17*jt1_335
-        jt1_337 = cos_theta*jt1_30
-        jt1_338 = delta_z*jt1_337
-        jt1_339 = delta_y_dot*jt1_338
-        jt1_340 = jt1_279*jt1_50
-        jt1_341 = jt1_17*jt1_55
-        jt1_342 = delta_y_dot*jt1_184
-        jt1_343 = jt1_139*jt1_62
-        jt1_344 = jt1_205*jt1_343
-        jt1_345 = jt1_139*jt1_35
-        jt1_346 = jt1_18*jt1_345
-        jt1_347 = cos_theta**4
-        jt1_348 = sin_theta**4
-        jt1_349 = jt1_105*jt1_45
-        jt1_350 = jt1_156*sin_theta
-        jt1_351 = jt1_338*theta_dot
-        jt1_352 = jt1_55*theta_dot
-        jt1_353 = jt1_23*jt1_352
-        jt1_354 = delta_x_dot*jt1_55
-        jt1_355 = jt1_293*jt1_83
-        jt1_356 = jt1_9*sin_theta
-        jt1_357 = jt1_105*jt1_56
-        jt1_358 = jt1_35*jt1_42
-        jt1_359 = jt1_328*jt1_6
-        jt1_360 = jt1_333*jt1_94
-        jt1_361 = jt1_24*jt1_42
-        jt1_362 = jt1_335*jt1_93
-        jt1_363 = jt1_354*jt1_93
-        jt1_364 = jt1_55*jt1_93
-        jt1_365 = jt1_350*jt1_9
-        jt1_366 = jt1_352*jt1_87
-        jt1_367 = jt1_105*jt1_99
-        jt1_368 = jt1_42*jt1_47
-        jt1_369 = jt1_328*jt1_4
-        jt1_370 = jt1_114*jt1_333
-        jt1_371 = jt1_113*jt1_335
-        jt1_372 = jt1_113*jt1_354
-        jt1_373 = jt1_113*jt1_55
-        jt1_374 = jt1_108*jt1_352
-        jt1_375 = jt1_105*jt1_116
-        jt1_376 = delta_z*jt1_3
-        jt1_377 = jt1_179*jt1_30
-        jt1_378 = jt1_139*jt1_65
-        jt1_379 = jt1_53*jt1_73
-        jt1_380 = jt1_129*jt1_53
-        jt1_381 = jt1_12*jt1_380
-        jt1_382 = jt1_30*jt1_69
-        jt1_383 = jt1_380*jt1_68
-        jt1_384 = jt1_11*jt1_331
-        jt1_385 = jt1_384*phi_dot
-        jt1_386 = jt1_129*sin_phi
-        jt1_387 = 2*jt1_385*jt1_386
-        jt1_388 = jt1_120*jt1_328
-        jt1_389 = jt1_184*jt1_380
-        jt1_390 = jt1_144*jt1_333
-        jt1_391 = jt1_165*jt1_229
-        jt1_392 = jt1_35*jt1_382
-        jt1_393 = jt1_105*jt1_132
-        jt1_394 = 2*jt1_379*jt1_54
-        jt1_395 = 4*jt1_385
-        jt1_396 = cos_phi*jt1_303*jt1_395
-        jt1_397 = jt1_141*jt1_335
-        jt1_398 = jt1_321*sin_theta
-        jt1_399 = jt1_242*jt1_61
-        jt1_400 = jt1_134*theta_dot
-        jt1_401 = jt1_36*theta_dot
-        jt1_402 = jt1_142*theta_dot
-        jt1_403 = jt1_141*jt1_354
-        jt1_404 = jt1_141*jt1_55
-        jt1_405 = jt1_320*jt1_9
-        jt1_406 = jt1_320*jt1_83
-        jt1_407 = jt1_42*phi_dot
-        jt1_408 = 2*jt1_407
-        jt1_409 = delta_z*jt1_83
-        jt1_410 = cos_theta*jt1_55*jt1_71
-        jt1_411 = jt1_126*jt1_55*sin_theta
-        jt1_412 = jt1_123*jt1_352
-        jt1_413 = jt1_83*sin_theta
-        jt1_414 = jt1_312*jt1_404
-        jt1_415 = delta_x*jt1_69
-        jt1_416 = jt1_42*sin_theta
-        jt1_417 = -E1*b*cos_phi*cos_theta*delta_y*jt1_66 - E1*b*cos_phi*delta_x*jt1_66*sin_theta + delta_x*jt1_253 + delta_x*jt1_255 + delta_x_dot*jt1_135 + delta_x_dot*jt1_143 + delta_y*jt1_5*jt1_65 + delta_y*jt1_5*jt1_74 + delta_y_dot*jt1_243 + jt1_1*jt1_415 + 4*jt1_142*jt1_416*jt1_80
-        jt1_418 = jt1_159*jt1_328
-        jt1_419 = jt1_12*jt1_55
-        jt1_420 = jt1_172*jt1_333
-        jt1_421 = jt1_167*jt1_335
-        jt1_422 = jt1_167*jt1_354
-        jt1_423 = jt1_167*jt1_55
-        jt1_424 = jt1_162*jt1_352
-        jt1_425 = jt1_312*jt1_423
-        jt1_426 = -E1*b*cos_theta*delta_x*jt1_66*sin_phi - E1*b*delta_y*jt1_64*sin_phi*sin_theta - b*c1*delta_x*delta_x_dot*delta_y*jt1_10*sin_phi*sin_theta - b*c1*delta_y*delta_z*delta_z_dot*jt1_10*sin_phi*sin_theta - b*c1*delta_y_dot*jt1_10*jt1_205*sin_phi*sin_theta - 2*c1*cos_phi*cos_theta*delta_x*delta_x_dot*jt1_10*jt1_28*sin_phi*sin_theta - 2*c1*cos_phi*cos_theta*delta_x*delta_z*jt1_10*jt1_28*phi_dot*sin_phi - 2*c1*cos_phi*cos_theta*delta_x*jt1_10*jt1_133*jt1_35*jt1_53*phi_dot - 2*c1*cos_phi*delta_x*jt1_10*jt1_133*jt1_184*jt1_53*phi_dot - 2*c1*cos_phi*delta_y*jt1_10*jt1_133*jt1_53*phi_dot*sin_theta - c1*cos_theta*delta_x*delta_z_dot*jt1_10*jt1_133*jt1_28 + cos_theta*jt1_153*jt1_9 + delta_x*jt1_248 + delta_x*jt1_249 + delta_x_dot*jt1_136 + delta_y*jt1_179*jt1_38 + jt1_153*jt1_250*sin_theta + jt1_153*jt1_52*jt1_83 + jt1_219*jt1_368 + jt1_231*jt1_307 + 4*jt1_368*jt1_402 + jt1_409*jt1_75*sin_theta + jt1_415*jt1_59
-        jt1_427 = jt1_332*jt1_384
-        jt1_428 = jt1_105*jt1_193
-        jt1_429 = jt1_55*jt1_78
-        jt1_430 = c1*cos_phi*cos_theta*jt1_10*jt1_18*jt1_28*sin_phi*sin_theta + c1*cos_phi*delta_x*delta_y*jt1_10*jt1_28*jt1_62*sin_phi + c1*cos_theta*delta_x*jt1_10*jt1_29*jt1_53*sin_phi + c1*delta_y*delta_z*jt1_10*jt1_28*jt1_29*sin_theta + c1*delta_y*jt1_10*jt1_29*jt1_52*jt1_53*sin_phi + c1*delta_y*jt1_10*jt1_29*jt1_53*jt1_62*sin_phi*sin_theta - cos_theta*jt1_35*jt1_429 - jt1_137*jt1_337 - jt1_142*jt1_358 - jt1_184*jt1_429 - jt1_242*jt1_368 - jt1_55*jt1_70*sin_theta
-        jt1_431 = delta_x*jt1_21
-        jt1_432 = jt1_18*jt1_218
-        jt1_433 = jt1_205*jt1_401
-        jt1_434 = jt1_23*jt1_80
-        jt1_435 = jt1_184*jt1_55
-        jt1_436 = delta_y*jt1_35
-        jt1_437 = jt1_80*jt1_87
-        jt1_438 = jt1_437*jt1_55
-        jt1_439 = jt1_228*jt1_416
-        jt1_440 = jt1_108*jt1_80
-        jt1_441 = jt1_142*phi_dot
-        jt1_442 = jt1_123*jt1_80
-        jt1_443 = jt1_162*jt1_80
-        dQ0_0 += E1*delta_x*jt1_2*jt1_8 + b*c1*cos_phi*cos_theta*delta_x*delta_y_dot*jt1_14*jt1_15 + 2*b*c1*cos_phi*cos_theta*delta_x*jt1_10*theta_dot + b*c1*cos_phi*cos_theta*jt1_14*jt1_15*jt1_18*theta_dot + 2*b*c1*cos_phi*delta_x*delta_x_dot*jt1_14*jt1_15*sin_theta + b*c1*cos_phi*delta_x*delta_z*jt1_14*jt1_15*phi_dot + 2*b*c1*cos_phi*delta_x_dot*jt1_10*sin_theta + b*c1*cos_phi*delta_y*delta_y_dot*jt1_14*jt1_15*sin_theta + b*c1*cos_phi*delta_z*delta_z_dot*jt1_14*jt1_15*sin_theta + b*c1*delta_x*delta_z_dot*jt1_14*jt1_15*sin_phi + c1*cos_phi*cos_theta*delta_y*jt1_14*jt1_15*jt1_28*phi_dot*sin_phi*sin_theta + 2*c1*cos_phi*delta_x*jt1_14*jt1_15*jt1_28*jt1_35*phi_dot*sin_phi + c1*cos_phi*delta_x*jt1_14*jt1_15*jt1_28*jt1_62*phi_dot*sin_phi + 2*c1*cos_phi*jt1_10*jt1_28*jt1_35*phi_dot*sin_phi + c1*delta_y*jt1_14*jt1_15*jt1_28*jt1_29*jt1_35*theta_dot + c1*jt1_14*jt1_15*jt1_29*jt1_53*phi_dot*sin_phi*sin_theta - jt1_13 - jt1_17*jt1_37 - jt1_17*jt1_49 - jt1_2*jt1_22 - jt1_20 - jt1_23*jt1_58 - jt1_23*jt1_61 - jt1_25 - jt1_27 - jt1_34 - jt1_38*jt1_39*jt1_9 - jt1_40*jt1_41 - jt1_40*jt1_51 - jt1_43*jt1_60 - jt1_44 - jt1_45*jt1_46 - jt1_52*jt1_56 - jt1_62*jt1_63 - jt1_72 - jt1_76
-        dQ0_1 += E1*delta_x*jt1_6*jt1_8 + b*c1*cos_phi*cos_theta*delta_x*delta_y_dot*jt1_15*jt1_85 + b*c1*cos_phi*cos_theta*jt1_15*jt1_18*jt1_85*theta_dot + 2*b*c1*cos_phi*delta_x*delta_x_dot*jt1_15*jt1_85*sin_theta + b*c1*cos_phi*delta_x*delta_z*jt1_15*jt1_85*phi_dot + b*c1*cos_phi*delta_y*delta_y_dot*jt1_15*jt1_85*sin_theta + b*c1*cos_phi*delta_y_dot*jt1_10*sin_theta + b*c1*cos_phi*delta_z*delta_z_dot*jt1_15*jt1_85*sin_theta + b*c1*delta_x*delta_z_dot*jt1_15*jt1_85*sin_phi + c1*cos_phi*cos_theta*delta_y*jt1_15*jt1_28*jt1_85*phi_dot*sin_phi*sin_theta + 2*c1*cos_phi*delta_x*jt1_15*jt1_28*jt1_35*jt1_85*phi_dot*sin_phi + c1*cos_phi*delta_x*jt1_15*jt1_28*jt1_62*jt1_85*phi_dot*sin_phi + c1*delta_y*jt1_15*jt1_28*jt1_29*jt1_35*jt1_85*theta_dot + c1*jt1_10*jt1_28*jt1_29*jt1_35*theta_dot + c1*jt1_15*jt1_29*jt1_53*jt1_85*phi_dot*sin_phi*sin_theta - jt1_1*jt1_79 - jt1_100 - jt1_102 - jt1_21*jt1_82 - jt1_3*jt1_78*jt1_80 - jt1_37*jt1_93 - jt1_41*jt1_94 - jt1_49*jt1_93 - jt1_58*jt1_87 - jt1_60*jt1_92 - jt1_61*jt1_87 - jt1_77 - jt1_81 - jt1_88 - jt1_89 - jt1_91 - jt1_95 - jt1_97 - jt1_98
-        dQ0_2 += E1*delta_x*jt1_4*jt1_8 + b*c1*cos_phi*cos_theta*delta_x*delta_y_dot*jt1_107*jt1_15 + b*c1*cos_phi*cos_theta*jt1_107*jt1_15*jt1_18*theta_dot + 2*b*c1*cos_phi*delta_x*delta_x_dot*jt1_107*jt1_15*sin_theta + b*c1*cos_phi*delta_x*delta_z*jt1_107*jt1_15*phi_dot + b*c1*cos_phi*delta_x*jt1_10*phi_dot + b*c1*cos_phi*delta_y*delta_y_dot*jt1_107*jt1_15*sin_theta + b*c1*cos_phi*delta_z*delta_z_dot*jt1_107*jt1_15*sin_theta + b*c1*cos_phi*delta_z_dot*jt1_10*sin_theta + b*c1*delta_x*delta_z_dot*jt1_107*jt1_15*sin_phi + c1*cos_phi*cos_theta*delta_y*jt1_107*jt1_15*jt1_28*phi_dot*sin_phi*sin_theta + 2*c1*cos_phi*delta_x*jt1_107*jt1_15*jt1_28*jt1_35*phi_dot*sin_phi + c1*cos_phi*delta_x*jt1_107*jt1_15*jt1_28*jt1_62*phi_dot*sin_phi + c1*delta_y*jt1_107*jt1_15*jt1_28*jt1_29*jt1_35*theta_dot + c1*jt1_107*jt1_15*jt1_29*jt1_53*phi_dot*sin_phi*sin_theta - jt1_103 - jt1_104 - jt1_108*jt1_58 - jt1_108*jt1_61 - jt1_109 - jt1_110 - jt1_111 - jt1_112*jt1_60 - jt1_113*jt1_37 - jt1_113*jt1_49 - jt1_113*jt1_96 - jt1_114*jt1_41 - jt1_114*jt1_51 - jt1_115 - jt1_116*jt1_52 - jt1_117*jt1_62 - jt1_22*jt1_4
-        dQ0_3 += E1*delta_x*jt1_120*jt1_8 + b*c1*cos_phi*cos_theta*delta_x*delta_y_dot*jt1_121*jt1_15 + b*c1*cos_phi*cos_theta*jt1_121*jt1_15*jt1_18*theta_dot + 2*b*c1*cos_phi*delta_x*delta_x_dot*jt1_121*jt1_15*sin_theta + b*c1*cos_phi*delta_x*delta_z*jt1_121*jt1_15*phi_dot + b*c1*cos_phi*delta_x*delta_z_dot*jt1_10 + b*c1*cos_phi*delta_y*delta_y_dot*jt1_121*jt1_15*sin_theta + b*c1*cos_phi*delta_z*delta_z_dot*jt1_121*jt1_15*sin_theta + b*c1*delta_x*delta_y*jt1_10*sin_phi*sin_theta*theta_dot + b*c1*delta_x*delta_z_dot*jt1_121*jt1_15*sin_phi + c1*cos_phi*cos_theta*delta_y*jt1_121*jt1_15*jt1_28*phi_dot*sin_phi*sin_theta + 2*c1*cos_phi*cos_theta*delta_y_dot*jt1_10*jt1_28*sin_phi*sin_theta + 2*c1*cos_phi*delta_x*jt1_121*jt1_15*jt1_28*jt1_35*phi_dot*sin_phi + c1*cos_phi*delta_x*jt1_121*jt1_15*jt1_28*jt1_62*phi_dot*sin_phi + c1*cos_theta*delta_y*jt1_10*jt1_28*jt1_29*phi_dot*sin_theta + c1*delta_x*jt1_10*jt1_133*jt1_28*phi_dot + 2*c1*delta_x*jt1_10*jt1_28*jt1_29*jt1_35*phi_dot + c1*delta_x*jt1_10*jt1_28*jt1_29*jt1_62*phi_dot + c1*delta_y*jt1_121*jt1_15*jt1_28*jt1_29*jt1_35*theta_dot + c1*jt1_10*jt1_129*jt1_53*phi_dot*sin_theta + c1*jt1_121*jt1_15*jt1_29*jt1_53*phi_dot*sin_phi*sin_theta - jt1_120*jt1_22 - jt1_122 - jt1_123*jt1_58 - jt1_123*jt1_61 - jt1_124 - jt1_125 - jt1_127 - jt1_128*jt1_30 - jt1_132*jt1_52 - jt1_132*jt1_62*sin_theta - jt1_135*phi_dot - jt1_136*theta_dot - jt1_137*jt1_138 - jt1_140*jt1_62 - jt1_141*jt1_37 - jt1_141*jt1_49 - jt1_141*jt1_96 - jt1_143*phi_dot - jt1_144*jt1_41 - jt1_144*jt1_51 - jt1_145*jt1_60 - jt1_146 - jt1_147*jt1_47 - jt1_148*jt1_52 - jt1_149*jt1_150*theta_dot - jt1_151*jt1_62 - jt1_157 - jt1_59*jt1_77
-        dQ0_4 += E1*delta_x*jt1_159*jt1_8 + b*c1*cos_phi*cos_theta*delta_x*delta_y_dot*jt1_15*jt1_160 + b*c1*cos_phi*cos_theta*jt1_15*jt1_160*jt1_18*theta_dot + 2*b*c1*cos_phi*delta_x*delta_x_dot*jt1_15*jt1_160*sin_theta + b*c1*cos_phi*delta_x*delta_z*jt1_15*jt1_160*phi_dot + b*c1*cos_phi*delta_y*delta_y_dot*jt1_15*jt1_160*sin_theta + b*c1*cos_phi*delta_z*delta_z_dot*jt1_15*jt1_160*sin_theta + b*c1*delta_x*delta_y*jt1_10*phi_dot*sin_phi*sin_theta + b*c1*delta_x*delta_z_dot*jt1_15*jt1_160*sin_phi + c1*cos_phi*cos_theta*delta_y*jt1_15*jt1_160*jt1_28*phi_dot*sin_phi*sin_theta + 2*c1*cos_phi*delta_x*jt1_15*jt1_160*jt1_28*jt1_35*phi_dot*sin_phi + c1*cos_phi*delta_x*jt1_15*jt1_160*jt1_28*jt1_62*phi_dot*sin_phi + c1*delta_x*jt1_10*jt1_28*jt1_29*jt1_35*theta_dot + c1*delta_y*jt1_15*jt1_160*jt1_28*jt1_29*jt1_35*theta_dot + c1*delta_y_dot*jt1_10*jt1_28*jt1_29*jt1_35 + c1*jt1_15*jt1_160*jt1_29*jt1_53*phi_dot*sin_phi*sin_theta - jt1_1*jt1_77 - jt1_135*theta_dot - jt1_136*phi_dot - jt1_142*jt1_171 - jt1_159*jt1_22 - jt1_161 - jt1_162*jt1_58 - jt1_162*jt1_61 - jt1_163 - jt1_164 - jt1_166*theta_dot - jt1_167*jt1_37 - jt1_167*jt1_49 - jt1_167*jt1_96 - 2*jt1_170 - jt1_172*jt1_41 - jt1_173*jt1_60 - jt1_174 - jt1_175*jt1_176 - jt1_177*jt1_52 - jt1_178*jt1_62 - jt1_186
-        dQ0_5 += 0
-        dQ0_6 += 0
-        dQ0_7 += 0
-        dQ0_8 += 2*b*c1*cos_phi*delta_x*jt1_10*sin_theta - jt1_134 - jt1_187
-        dQ0_9 += jt1_188
-        dQ0_10 += jt1_190
-        dQ0_11 += jt1_195
-        dQ0_12 += jt1_197
-        dQ0_13 += 0
-        dQ0_14 += 0
-        dQ0_15 += 0
-        dQ1_0 += E1*delta_y*jt1_2*jt1_8 + b*c1*cos_phi*cos_theta*delta_x*delta_x_dot*jt1_14*jt1_15 + b*c1*cos_phi*cos_theta*delta_x*delta_y*jt1_14*jt1_15*theta_dot + b*c1*cos_phi*cos_theta*delta_x_dot*jt1_10 + 2*b*c1*cos_phi*cos_theta*delta_y*delta_y_dot*jt1_14*jt1_15 + b*c1*cos_phi*cos_theta*delta_y*jt1_10*theta_dot + b*c1*cos_phi*cos_theta*delta_z*delta_z_dot*jt1_14*jt1_15 + b*c1*cos_phi*delta_x_dot*delta_y*jt1_14*jt1_15*sin_theta + b*c1*cos_phi*delta_y*delta_z*jt1_14*jt1_15*phi_dot + b*c1*delta_y*delta_z_dot*jt1_14*jt1_15*sin_phi + c1*cos_phi*cos_theta*delta_x*jt1_14*jt1_15*jt1_28*phi_dot*sin_phi*sin_theta + c1*cos_phi*delta_y*jt1_14*jt1_15*jt1_28*jt1_35*phi_dot*sin_phi + 2*c1*cos_phi*delta_y*jt1_14*jt1_15*jt1_28*jt1_62*phi_dot*sin_phi + c1*cos_theta*delta_y*jt1_14*jt1_15*jt1_28*jt1_29*sin_theta*theta_dot + c1*cos_theta*jt1_14*jt1_15*jt1_29*jt1_53*phi_dot*sin_phi - jt1_158*jt1_21 - jt1_17*jt1_212 - jt1_17*jt1_214 - jt1_17*jt1_217 - jt1_184*jt1_56 - jt1_198 - jt1_200 - jt1_202 - jt1_204 - jt1_207 - jt1_208*jt1_43 - jt1_209*jt1_210 - jt1_211*jt1_40 - jt1_213*jt1_42 - jt1_215*jt1_216 - jt1_215*jt1_35*jt1_55 - jt1_218*jt1_23 - jt1_38*jt1_71 - jt1_81
-        dQ1_1 += E1*delta_y*jt1_6*jt1_8 + b*c1*cos_phi*cos_theta*delta_x*delta_x_dot*jt1_15*jt1_85 + b*c1*cos_phi*cos_theta*delta_x*delta_y*jt1_15*jt1_85*theta_dot + 2*b*c1*cos_phi*cos_theta*delta_y*delta_y_dot*jt1_15*jt1_85 + 2*b*c1*cos_phi*cos_theta*delta_y_dot*jt1_10 + b*c1*cos_phi*cos_theta*delta_z*delta_z_dot*jt1_15*jt1_85 + b*c1*cos_phi*delta_x_dot*delta_y*jt1_15*jt1_85*sin_theta + b*c1*cos_phi*delta_y*delta_z*jt1_15*jt1_85*phi_dot + b*c1*delta_y*delta_z_dot*jt1_15*jt1_85*sin_phi + c1*cos_phi*cos_theta*delta_x*jt1_15*jt1_28*jt1_85*phi_dot*sin_phi*sin_theta + c1*cos_phi*delta_y*jt1_15*jt1_28*jt1_35*jt1_85*phi_dot*sin_phi + 2*c1*cos_phi*delta_y*jt1_15*jt1_28*jt1_62*jt1_85*phi_dot*sin_phi + 2*c1*cos_phi*jt1_10*jt1_28*jt1_62*phi_dot*sin_phi + c1*cos_theta*delta_y*jt1_15*jt1_28*jt1_29*jt1_85*sin_theta*theta_dot + c1*cos_theta*jt1_15*jt1_29*jt1_53*jt1_85*phi_dot*sin_phi - jt1_11*jt1_57*jt1_83 - jt1_184*jt1_99 - jt1_208*jt1_92 - jt1_210*jt1_226 - jt1_211*jt1_94 - jt1_212*jt1_93 - jt1_214*jt1_93 - jt1_216*jt1_228 - jt1_217*jt1_93 - jt1_218*jt1_87 - jt1_219 - jt1_221 - jt1_222*jt1_6 - jt1_223 - jt1_225 - jt1_227*jt1_42 - jt1_228*jt1_35*jt1_55 - jt1_230 + jt1_34 - jt1_39*jt1_59*jt1_83 - jt1_65 - jt1_67 - jt1_76
-        dQ1_2 += E1*delta_y*jt1_4*jt1_8 + b*c1*cos_phi*cos_theta*delta_x*delta_x_dot*jt1_107*jt1_15 + b*c1*cos_phi*cos_theta*delta_x*delta_y*jt1_107*jt1_15*theta_dot + 2*b*c1*cos_phi*cos_theta*delta_y*delta_y_dot*jt1_107*jt1_15 + b*c1*cos_phi*cos_theta*delta_z*delta_z_dot*jt1_107*jt1_15 + b*c1*cos_phi*cos_theta*delta_z_dot*jt1_10 + b*c1*cos_phi*delta_x_dot*delta_y*jt1_107*jt1_15*sin_theta + b*c1*cos_phi*delta_y*delta_z*jt1_107*jt1_15*phi_dot + b*c1*cos_phi*delta_y*jt1_10*phi_dot + b*c1*delta_y*delta_z_dot*jt1_107*jt1_15*sin_phi + c1*cos_phi*cos_theta*delta_x*jt1_107*jt1_15*jt1_28*phi_dot*sin_phi*sin_theta + c1*cos_phi*delta_y*jt1_107*jt1_15*jt1_28*jt1_35*phi_dot*sin_phi + 2*c1*cos_phi*delta_y*jt1_107*jt1_15*jt1_28*jt1_62*phi_dot*sin_phi + c1*cos_theta*delta_y*jt1_107*jt1_15*jt1_28*jt1_29*sin_theta*theta_dot + c1*cos_theta*jt1_107*jt1_15*jt1_29*jt1_53*phi_dot*sin_phi - jt1_108*jt1_218 - jt1_112*jt1_208 - jt1_113*jt1_212 - jt1_113*jt1_214 - jt1_113*jt1_217 - jt1_114*jt1_211 - jt1_116*jt1_184 - jt1_183 - jt1_210*jt1_235 - jt1_216*jt1_237 - jt1_222*jt1_4 - jt1_231 - jt1_232 - jt1_233 - jt1_234 - jt1_236*jt1_42 - jt1_237*jt1_35*jt1_55
-        dQ1_3 += E1*delta_y*jt1_120*jt1_8 + b*c1*cos_phi*cos_theta*delta_x*delta_x_dot*jt1_121*jt1_15 + b*c1*cos_phi*cos_theta*delta_x*delta_y*jt1_121*jt1_15*theta_dot + 2*b*c1*cos_phi*cos_theta*delta_y*delta_y_dot*jt1_121*jt1_15 + b*c1*cos_phi*cos_theta*delta_z*delta_z_dot*jt1_121*jt1_15 + b*c1*cos_phi*delta_x_dot*delta_y*jt1_121*jt1_15*sin_theta + b*c1*cos_phi*delta_y*delta_z*jt1_121*jt1_15*phi_dot + b*c1*cos_phi*delta_y*delta_z_dot*jt1_10 + b*c1*delta_y*delta_z_dot*jt1_121*jt1_15*sin_phi + b*c1*jt1_10*jt1_205*sin_phi*sin_theta*theta_dot + c1*cos_phi*cos_theta*delta_x*jt1_121*jt1_15*jt1_28*phi_dot*sin_phi*sin_theta + 2*c1*cos_phi*cos_theta*delta_x_dot*jt1_10*jt1_28*sin_phi*sin_theta + 2*c1*cos_phi*delta_x*jt1_10*jt1_28*jt1_62*sin_phi*theta_dot + c1*cos_phi*delta_y*jt1_121*jt1_15*jt1_28*jt1_35*phi_dot*sin_phi + 2*c1*cos_phi*delta_y*jt1_121*jt1_15*jt1_28*jt1_62*phi_dot*sin_phi + c1*cos_theta*delta_x*jt1_10*jt1_28*jt1_29*phi_dot*sin_theta + c1*cos_theta*delta_y*jt1_121*jt1_15*jt1_28*jt1_29*sin_theta*theta_dot + c1*cos_theta*jt1_10*jt1_129*jt1_53*phi_dot + c1*cos_theta*jt1_121*jt1_15*jt1_29*jt1_53*phi_dot*sin_phi + c1*delta_y*jt1_10*jt1_133*jt1_28*phi_dot + c1*delta_y*jt1_10*jt1_28*jt1_29*jt1_35*phi_dot + 2*c1*delta_y*jt1_10*jt1_28*jt1_29*jt1_62*phi_dot - cos_theta*jt1_132*jt1_35 - jt1_120*jt1_222 - jt1_123*jt1_218 - jt1_132*jt1_184 - jt1_138*jt1_244 - jt1_140*jt1_47 - jt1_141*jt1_212 - jt1_141*jt1_214 - jt1_141*jt1_217 - jt1_144*jt1_211 - jt1_145*jt1_208 - jt1_147*jt1_35 - jt1_148*jt1_184 - jt1_181*jt1_30 - jt1_191*theta_dot - jt1_196*phi_dot - jt1_198*jt1_38 - jt1_210*jt1_245 - jt1_216*jt1_247 - jt1_238 - jt1_239 - jt1_240 - jt1_241*phi_dot - jt1_243*phi_dot - jt1_246*jt1_42 - jt1_247*jt1_35*jt1_55 - jt1_252
-        dQ1_4 += E1*b*cos_phi*jt1_66*sin_theta + E1*delta_y*jt1_159*jt1_8 + b*c1*cos_phi*cos_theta*delta_x*delta_x_dot*jt1_15*jt1_160 + b*c1*cos_phi*cos_theta*delta_x*delta_y*jt1_15*jt1_160*theta_dot + b*c1*cos_phi*cos_theta*delta_x_dot*delta_y*jt1_10 + 2*b*c1*cos_phi*cos_theta*delta_y*delta_y_dot*jt1_15*jt1_160 + b*c1*cos_phi*cos_theta*delta_z*delta_z_dot*jt1_15*jt1_160 + b*c1*cos_phi*delta_x_dot*delta_y*jt1_15*jt1_160*sin_theta + b*c1*cos_phi*delta_y*delta_z*jt1_15*jt1_160*phi_dot + b*c1*delta_y*delta_z_dot*jt1_15*jt1_160*sin_phi + b*c1*jt1_10*jt1_205*phi_dot*sin_phi*sin_theta + c1*cos_phi*cos_theta*delta_x*jt1_15*jt1_160*jt1_28*phi_dot*sin_phi*sin_theta + c1*cos_phi*delta_x*jt1_10*jt1_28*jt1_62*phi_dot*sin_phi + c1*cos_phi*delta_y*jt1_15*jt1_160*jt1_28*jt1_35*phi_dot*sin_phi + 2*c1*cos_phi*delta_y*jt1_15*jt1_160*jt1_28*jt1_62*phi_dot*sin_phi + c1*cos_phi*delta_z_dot*jt1_10*jt1_28*sin_phi*sin_theta + 2*c1*cos_theta*delta_x*jt1_10*jt1_28*jt1_29*sin_theta*theta_dot + c1*cos_theta*delta_y*jt1_15*jt1_160*jt1_28*jt1_29*sin_theta*theta_dot + 2*c1*cos_theta*delta_y_dot*jt1_10*jt1_28*jt1_29*sin_theta + c1*cos_theta*jt1_15*jt1_160*jt1_29*jt1_53*phi_dot*sin_phi + c1*delta_x_dot*jt1_10*jt1_28*jt1_29*jt1_35 + c1*delta_y*jt1_10*jt1_28*jt1_29*jt1_62*theta_dot + c1*delta_z*jt1_10*jt1_28*jt1_29*phi_dot*sin_theta + c1*jt1_10*jt1_29*jt1_52*jt1_53*phi_dot*sin_phi + c1*jt1_10*jt1_29*jt1_53*jt1_62*phi_dot*sin_phi*sin_theta - jt1_159*jt1_222 - jt1_162*jt1_218 - jt1_167*jt1_212 - jt1_167*jt1_214 - jt1_167*jt1_217 - jt1_168*jt1_62 - jt1_171*jt1_242 - jt1_172*jt1_211 - jt1_173*jt1_208 - jt1_177*jt1_184 - jt1_191*phi_dot - jt1_196*theta_dot - jt1_210*jt1_265 - jt1_216*jt1_267 - jt1_253 - jt1_254 - jt1_255 - jt1_256 - jt1_257 - jt1_259 - jt1_260 - jt1_261 - jt1_262 - jt1_263 - jt1_264 - jt1_266*jt1_42 - jt1_267*jt1_35*jt1_55
-        dQ1_5 += 0
-        dQ1_6 += 0
-        dQ1_7 += 0
-        dQ1_8 += jt1_188
-        dQ1_9 += 2*b*c1*cos_phi*cos_theta*delta_y*jt1_10 - jt1_199 - jt1_242
-        dQ1_10 += jt1_269
-        dQ1_11 += jt1_274
-        dQ1_12 += jt1_275
-        dQ1_13 += 0
-        dQ1_14 += 0
-        dQ1_15 += 0
-        dQ2_0 += E1*delta_z*jt1_2*jt1_8 + b*c1*cos_phi*cos_theta*delta_x*delta_z*jt1_14*jt1_15*theta_dot + b*c1*cos_phi*cos_theta*delta_y_dot*delta_z*jt1_14*jt1_15 + b*c1*cos_phi*cos_theta*delta_z*jt1_10*theta_dot + b*c1*cos_phi*delta_x_dot*delta_z*jt1_14*jt1_15*sin_theta + b*c1*cos_phi*jt1_14*jt1_15*jt1_281*phi_dot + b*c1*delta_x*delta_x_dot*jt1_14*jt1_15*sin_phi + b*c1*delta_x_dot*jt1_10*sin_phi + b*c1*delta_y*delta_y_dot*jt1_14*jt1_15*sin_phi + 2*b*c1*delta_z*delta_z_dot*jt1_14*jt1_15*sin_phi + c1*cos_phi*delta_y*jt1_14*jt1_15*jt1_28*sin_phi*sin_theta*theta_dot + c1*cos_phi*delta_z*jt1_14*jt1_15*jt1_28*jt1_35*phi_dot*sin_phi + c1*cos_phi*delta_z*jt1_14*jt1_15*jt1_28*jt1_62*phi_dot*sin_phi + c1*cos_phi*jt1_133*jt1_14*jt1_15*jt1_53*phi_dot + c1*cos_theta*delta_y*jt1_133*jt1_14*jt1_15*jt1_28*phi_dot + c1*delta_x*jt1_133*jt1_14*jt1_15*jt1_28*phi_dot*sin_theta + c1*jt1_10*jt1_133*jt1_28*phi_dot*sin_theta - jt1_17*jt1_280 - jt1_17*jt1_282 - jt1_17*jt1_287 - jt1_2*jt1_278 - jt1_209*jt1_284 - jt1_213*jt1_285 - jt1_23*jt1_279 - jt1_23*jt1_286 - jt1_23*jt1_292 - jt1_268*theta_dot - jt1_276 - jt1_277*jt1_38 - jt1_288*jt1_289 - jt1_290*jt1_46 - jt1_291*jt1_40 - jt1_294*jt1_35 - jt1_294*jt1_62
-        dQ2_1 += E1*delta_z*jt1_6*jt1_8 + b*c1*cos_phi*cos_theta*delta_x*delta_z*jt1_15*jt1_85*theta_dot + b*c1*cos_phi*cos_theta*delta_y_dot*delta_z*jt1_15*jt1_85 + b*c1*cos_phi*delta_x_dot*delta_z*jt1_15*jt1_85*sin_theta + b*c1*cos_phi*jt1_15*jt1_281*jt1_85*phi_dot + b*c1*delta_x*delta_x_dot*jt1_15*jt1_85*sin_phi + b*c1*delta_y*delta_y_dot*jt1_15*jt1_85*sin_phi + b*c1*delta_y_dot*jt1_10*sin_phi + 2*b*c1*delta_z*delta_z_dot*jt1_15*jt1_85*sin_phi + c1*cos_phi*delta_y*jt1_15*jt1_28*jt1_85*sin_phi*sin_theta*theta_dot + c1*cos_phi*delta_z*jt1_15*jt1_28*jt1_35*jt1_85*phi_dot*sin_phi + c1*cos_phi*delta_z*jt1_15*jt1_28*jt1_62*jt1_85*phi_dot*sin_phi + c1*cos_phi*jt1_10*jt1_28*sin_phi*sin_theta*theta_dot + c1*cos_phi*jt1_133*jt1_15*jt1_53*jt1_85*phi_dot + c1*cos_theta*delta_y*jt1_133*jt1_15*jt1_28*jt1_85*phi_dot + c1*cos_theta*jt1_10*jt1_133*jt1_28*phi_dot + c1*delta_x*jt1_133*jt1_15*jt1_28*jt1_85*phi_dot*sin_theta - jt1_1*jt1_296*theta_dot - jt1_226*jt1_284 - jt1_227*jt1_285 - jt1_277*jt1_59 - jt1_278*jt1_6 - jt1_279*jt1_87 - jt1_280*jt1_93 - jt1_286*jt1_87 - jt1_287*jt1_93 - jt1_291*jt1_94 - jt1_292*jt1_87 - jt1_295 - jt1_297*jt1_85 - jt1_298*jt1_93 - jt1_299*jt1_93 - jt1_300*jt1_35 - jt1_300*jt1_62
-        dQ2_2 += E1*delta_z*jt1_4*jt1_8 + b*c1*cos_phi*cos_theta*delta_x*delta_z*jt1_107*jt1_15*theta_dot + b*c1*cos_phi*cos_theta*delta_y_dot*delta_z*jt1_107*jt1_15 + b*c1*cos_phi*delta_x_dot*delta_z*jt1_107*jt1_15*sin_theta + 2*b*c1*cos_phi*delta_z*jt1_10*phi_dot + b*c1*cos_phi*jt1_107*jt1_15*jt1_281*phi_dot + b*c1*delta_x*delta_x_dot*jt1_107*jt1_15*sin_phi + b*c1*delta_y*delta_y_dot*jt1_107*jt1_15*sin_phi + 2*b*c1*delta_z*delta_z_dot*jt1_107*jt1_15*sin_phi + 2*b*c1*delta_z_dot*jt1_10*sin_phi + c1*cos_phi*delta_y*jt1_107*jt1_15*jt1_28*sin_phi*sin_theta*theta_dot + c1*cos_phi*delta_z*jt1_107*jt1_15*jt1_28*jt1_35*phi_dot*sin_phi + c1*cos_phi*delta_z*jt1_107*jt1_15*jt1_28*jt1_62*phi_dot*sin_phi + c1*cos_phi*jt1_107*jt1_133*jt1_15*jt1_53*phi_dot + c1*cos_theta*delta_y*jt1_107*jt1_133*jt1_15*jt1_28*phi_dot + c1*delta_x*jt1_107*jt1_133*jt1_15*jt1_28*phi_dot*sin_theta - jt1_107*jt1_297 - jt1_108*jt1_279 - jt1_108*jt1_286 - jt1_108*jt1_292 - jt1_113*jt1_280 - jt1_113*jt1_287 - jt1_113*jt1_298 - jt1_113*jt1_299 - jt1_114*jt1_291 - jt1_230 - jt1_235*jt1_284 - jt1_236*jt1_285 - jt1_278*jt1_4 - jt1_301 - jt1_302*jt1_35 - jt1_302*jt1_62 - jt1_72 - 2*jt1_75
-        dQ2_3 += E1*delta_z*jt1_120*jt1_8 + b*c1*cos_phi*cos_theta*delta_x*delta_z*jt1_121*jt1_15*theta_dot + b*c1*cos_phi*cos_theta*delta_y_dot*delta_z*jt1_121*jt1_15 + b*c1*cos_phi*delta_x_dot*delta_z*jt1_121*jt1_15*sin_theta + b*c1*cos_phi*jt1_121*jt1_15*jt1_281*phi_dot + b*c1*delta_x*delta_x_dot*jt1_121*jt1_15*sin_phi + b*c1*delta_y*delta_y_dot*jt1_121*jt1_15*sin_phi + b*c1*delta_y*delta_z*jt1_10*sin_phi*sin_theta*theta_dot + 2*b*c1*delta_z*delta_z_dot*jt1_121*jt1_15*sin_phi + c1*cos_phi*delta_y*jt1_121*jt1_15*jt1_28*sin_phi*sin_theta*theta_dot + c1*cos_phi*delta_z*jt1_121*jt1_15*jt1_28*jt1_35*phi_dot*sin_phi + c1*cos_phi*delta_z*jt1_121*jt1_15*jt1_28*jt1_62*phi_dot*sin_phi + c1*cos_phi*jt1_121*jt1_133*jt1_15*jt1_53*phi_dot + c1*cos_theta*delta_x*jt1_10*jt1_133*jt1_28*theta_dot + c1*cos_theta*delta_y*jt1_121*jt1_133*jt1_15*jt1_28*phi_dot + c1*cos_theta*delta_y_dot*jt1_10*jt1_133*jt1_28 + c1*delta_x*jt1_121*jt1_133*jt1_15*jt1_28*phi_dot*sin_theta + c1*delta_x_dot*jt1_10*jt1_133*jt1_28*sin_theta + 2*c1*delta_z*jt1_10*jt1_133*jt1_28*phi_dot + c1*delta_z*jt1_10*jt1_28*jt1_29*jt1_35*phi_dot + c1*delta_z*jt1_10*jt1_28*jt1_29*jt1_62*phi_dot + c1*jt1_10*jt1_303*jt1_35*jt1_53*phi_dot + c1*jt1_10*jt1_303*jt1_53*jt1_62*phi_dot - jt1_1*jt1_310 - jt1_120*jt1_278 - jt1_121*jt1_297 - jt1_123*jt1_279 - jt1_123*jt1_286 - jt1_123*jt1_292 - jt1_137*jt1_59*theta_dot - jt1_141*jt1_280 - jt1_141*jt1_287 - jt1_141*jt1_298 - jt1_141*jt1_299 - jt1_141*jt1_313 - jt1_244*jt1_5*phi_dot - jt1_245*jt1_284 - jt1_246*jt1_285 - jt1_276*jt1_38 - jt1_295*jt1_59 - jt1_304 - jt1_306*phi_dot - jt1_307*jt1_308 - jt1_309*jt1_35 - jt1_309*jt1_62 - jt1_311*jt1_35 - jt1_311*jt1_62 - jt1_317
-        dQ2_4 += E1*delta_z*jt1_159*jt1_8 + b*c1*cos_phi*cos_theta*delta_x*delta_z*jt1_15*jt1_160*theta_dot + b*c1*cos_phi*cos_theta*delta_x_dot*delta_z*jt1_10 + b*c1*cos_phi*cos_theta*delta_y_dot*delta_z*jt1_15*jt1_160 + b*c1*cos_phi*delta_x_dot*delta_z*jt1_15*jt1_160*sin_theta + b*c1*cos_phi*jt1_15*jt1_160*jt1_281*phi_dot + b*c1*delta_x*delta_x_dot*jt1_15*jt1_160*sin_phi + b*c1*delta_y*delta_y_dot*jt1_15*jt1_160*sin_phi + b*c1*delta_y*delta_z*jt1_10*phi_dot*sin_phi*sin_theta + 2*b*c1*delta_z*delta_z_dot*jt1_15*jt1_160*sin_phi + c1*cos_phi*cos_theta*delta_y*jt1_10*jt1_28*sin_phi*theta_dot + c1*cos_phi*delta_x*jt1_10*jt1_28*sin_phi*sin_theta*theta_dot + c1*cos_phi*delta_y*jt1_15*jt1_160*jt1_28*sin_phi*sin_theta*theta_dot + c1*cos_phi*delta_y_dot*jt1_10*jt1_28*sin_phi*sin_theta + c1*cos_phi*delta_z*jt1_15*jt1_160*jt1_28*jt1_35*phi_dot*sin_phi + c1*cos_phi*delta_z*jt1_15*jt1_160*jt1_28*jt1_62*phi_dot*sin_phi + c1*cos_phi*jt1_133*jt1_15*jt1_160*jt1_53*phi_dot + c1*cos_theta*delta_x*jt1_10*jt1_133*jt1_28*phi_dot + c1*cos_theta*delta_y*jt1_133*jt1_15*jt1_160*jt1_28*phi_dot + c1*delta_x*jt1_133*jt1_15*jt1_160*jt1_28*phi_dot*sin_theta - cos_theta*jt1_318 - jt1_1*jt1_295 - jt1_137*jt1_57 - jt1_147*sin_theta - jt1_159*jt1_278 - jt1_160*jt1_297 - jt1_162*jt1_279 - jt1_162*jt1_286 - jt1_162*jt1_292 - jt1_167*jt1_175*jt1_60 - jt1_167*jt1_280 - jt1_167*jt1_287 - jt1_167*jt1_298 - jt1_167*jt1_299 - jt1_167*jt1_313 - jt1_171*jt1_244 - jt1_265*jt1_284 - jt1_310*jt1_59 - jt1_319*jt1_35 - jt1_319*jt1_62
-        dQ2_5 += 0
-        dQ2_6 += 0
-        dQ2_7 += 0
-        dQ2_8 += jt1_190
-        dQ2_9 += jt1_269
-        dQ2_10 += 2*b*c1*delta_z*jt1_10*sin_phi - jt1_155 - jt1_305
-        dQ2_11 += jt1_325
-        dQ2_12 += jt1_326
-        dQ2_13 += 0
-        dQ2_14 += 0
-        dQ2_15 += 0
-        dQ3_0 += E1*b*cos_theta*delta_y*jt1_2*jt1_8*sin_phi + E1*b*delta_x*jt1_2*jt1_8*sin_phi*sin_theta + E1*cos_phi*jt1_2*jt1_28*jt1_8*sin_phi + b*c1*cos_phi*delta_x*delta_x_dot*delta_z*jt1_14*jt1_15 + b*c1*cos_phi*delta_x_dot*delta_z*jt1_10 + b*c1*cos_phi*delta_y*delta_y_dot*delta_z*jt1_14*jt1_15 + b*c1*cos_phi*delta_z_dot*jt1_14*jt1_15*jt1_281 + c1*cos_phi*cos_theta*delta_x*delta_y_dot*jt1_14*jt1_15*jt1_28*sin_phi*sin_theta + c1*cos_phi*cos_theta*delta_x_dot*delta_y*jt1_14*jt1_15*jt1_28*sin_phi*sin_theta + 2*c1*cos_phi*cos_theta*delta_y*delta_z*jt1_14*jt1_15*jt1_28*phi_dot*sin_phi + 2*c1*cos_phi*cos_theta*delta_y*jt1_133*jt1_14*jt1_15*jt1_35*jt1_53*phi_dot + c1*cos_phi*cos_theta*delta_y_dot*jt1_10*jt1_28*sin_phi*sin_theta + c1*cos_phi*cos_theta*jt1_14*jt1_15*jt1_18*jt1_28*sin_phi*sin_theta*theta_dot + 2*c1*cos_phi*delta_x*delta_x_dot*jt1_14*jt1_15*jt1_28*jt1_35*sin_phi + c1*cos_phi*delta_x*delta_x_dot*jt1_14*jt1_15*jt1_28*jt1_62*sin_phi + c1*cos_phi*delta_x*delta_y*jt1_14*jt1_15*jt1_28*jt1_62*sin_phi*theta_dot + 2*c1*cos_phi*delta_x*delta_z*jt1_14*jt1_15*jt1_28*phi_dot*sin_phi*sin_theta + 2*c1*cos_phi*delta_x*jt1_133*jt1_14*jt1_15*jt1_52*jt1_53*phi_dot + 2*c1*cos_phi*delta_x*jt1_133*jt1_14*jt1_15*jt1_53*jt1_62*phi_dot*sin_theta + c1*cos_phi*delta_x_dot*jt1_10*jt1_28*jt1_62*sin_phi + c1*cos_phi*delta_y*delta_y_dot*jt1_14*jt1_15*jt1_28*jt1_35*sin_phi + 2*c1*cos_phi*delta_y*delta_y_dot*jt1_14*jt1_15*jt1_28*jt1_62*sin_phi + c1*cos_phi*delta_y*jt1_10*jt1_28*jt1_62*sin_phi*theta_dot + 2*c1*cos_phi*delta_y*jt1_133*jt1_14*jt1_15*jt1_184*jt1_53*phi_dot + c1*cos_phi*delta_z*delta_z_dot*jt1_14*jt1_15*jt1_28*jt1_35*sin_phi + c1*cos_phi*delta_z*delta_z_dot*jt1_14*jt1_15*jt1_28*jt1_62*sin_phi + c1*cos_phi*delta_z_dot*jt1_133*jt1_14*jt1_15*jt1_53 + c1*cos_theta*delta_x*jt1_14*jt1_15*jt1_29*jt1_53*sin_phi*theta_dot + c1*cos_theta*delta_y*delta_z_dot*jt1_133*jt1_14*jt1_15*jt1_28 + c1*cos_theta*delta_y_dot*jt1_14*jt1_15*jt1_29*jt1_53*sin_phi + c1*cos_theta*jt1_10*jt1_29*jt1_53*sin_phi*theta_dot + c1*delta_x*delta_z_dot*jt1_133*jt1_14*jt1_15*jt1_28*sin_theta + c1*delta_x_dot*jt1_14*jt1_15*jt1_29*jt1_53*sin_phi*sin_theta + c1*delta_y*delta_z*jt1_14*jt1_15*jt1_28*jt1_29*sin_theta*theta_dot + c1*delta_y*jt1_14*jt1_15*jt1_29*jt1_52*jt1_53*sin_phi*theta_dot + c1*delta_y*jt1_14*jt1_15*jt1_29*jt1_53*jt1_62*sin_phi*sin_theta*theta_dot + 2*c1*delta_z*jt1_14*jt1_15*jt1_29*jt1_53*phi_dot*sin_phi + 2*c1*jt1_133*jt1_14*jt1_15*jt1_29*jt1_331*jt1_35*phi_dot + 2*c1*jt1_133*jt1_14*jt1_15*jt1_29*jt1_331*jt1_62*phi_dot - cos_theta*jt1_35*jt1_353 - delta_x_dot*jt1_341*jt1_52 - delta_y*jt1_17*jt1_352*sin_theta - jt1_0*jt1_2*jt1_327 - jt1_157 - jt1_17*jt1_339 - jt1_17*jt1_340 - jt1_17*jt1_349 - jt1_184*jt1_353 - jt1_198*jt1_59 - jt1_20*jt1_38 - jt1_202*jt1_59 - jt1_204*jt1_59 - jt1_207*jt1_59 - jt1_210*jt1_288*jt1_47 - jt1_213*jt1_321*jt1_356 - jt1_215*jt1_355 - jt1_23*jt1_283*jt1_358 - jt1_23*jt1_290 - jt1_23*jt1_351 - jt1_24*jt1_288 - jt1_25*jt1_38 - jt1_251*jt1_350 - jt1_27*jt1_38 - jt1_270*jt1_35*theta_dot - jt1_271*theta_dot - jt1_272*theta_dot - jt1_273*theta_dot - jt1_289*jt1_341*jt1_35 - jt1_294*jt1_356 - jt1_318 - jt1_329*jt1_35 - jt1_329*jt1_62 - jt1_330*jt1_40 - jt1_334*jt1_347 - jt1_334*jt1_348 - 2*jt1_334*jt1_35*jt1_62 - jt1_334 - jt1_336*jt1_35 - jt1_336*jt1_62 - jt1_341*jt1_342 - jt1_344*jt1_40 - jt1_346*jt1_40 - jt1_35*jt1_357 - jt1_354*jt1_46*jt1_62 - jt1_357*jt1_62
-        dQ3_1 += E1*b*cos_theta*delta_y*jt1_6*jt1_8*sin_phi + E1*b*delta_x*jt1_6*jt1_8*sin_phi*sin_theta + E1*cos_phi*jt1_28*jt1_6*jt1_8*sin_phi + b*c1*cos_phi*delta_x*delta_x_dot*delta_z*jt1_15*jt1_85 + b*c1*cos_phi*delta_y*delta_y_dot*delta_z*jt1_15*jt1_85 + b*c1*cos_phi*delta_y_dot*delta_z*jt1_10 + b*c1*cos_phi*delta_z_dot*jt1_15*jt1_281*jt1_85 + c1*cos_phi*cos_theta*delta_x*delta_y_dot*jt1_15*jt1_28*jt1_85*sin_phi*sin_theta + c1*cos_phi*cos_theta*delta_x_dot*delta_y*jt1_15*jt1_28*jt1_85*sin_phi*sin_theta + c1*cos_phi*cos_theta*delta_x_dot*jt1_10*jt1_28*sin_phi*sin_theta + 2*c1*cos_phi*cos_theta*delta_y*delta_z*jt1_15*jt1_28*jt1_85*phi_dot*sin_phi + 2*c1*cos_phi*cos_theta*delta_y*jt1_133*jt1_15*jt1_35*jt1_53*jt1_85*phi_dot + c1*cos_phi*cos_theta*jt1_15*jt1_18*jt1_28*jt1_85*sin_phi*sin_theta*theta_dot + 2*c1*cos_phi*delta_x*delta_x_dot*jt1_15*jt1_28*jt1_35*jt1_85*sin_phi + c1*cos_phi*delta_x*delta_x_dot*jt1_15*jt1_28*jt1_62*jt1_85*sin_phi + c1*cos_phi*delta_x*delta_y*jt1_15*jt1_28*jt1_62*jt1_85*sin_phi*theta_dot + 2*c1*cos_phi*delta_x*delta_z*jt1_15*jt1_28*jt1_85*phi_dot*sin_phi*sin_theta + c1*cos_phi*delta_x*jt1_10*jt1_28*jt1_62*sin_phi*theta_dot + 2*c1*cos_phi*delta_x*jt1_133*jt1_15*jt1_52*jt1_53*jt1_85*phi_dot + 2*c1*cos_phi*delta_x*jt1_133*jt1_15*jt1_53*jt1_62*jt1_85*phi_dot*sin_theta + c1*cos_phi*delta_y*delta_y_dot*jt1_15*jt1_28*jt1_35*jt1_85*sin_phi + 2*c1*cos_phi*delta_y*delta_y_dot*jt1_15*jt1_28*jt1_62*jt1_85*sin_phi + 2*c1*cos_phi*delta_y*jt1_133*jt1_15*jt1_184*jt1_53*jt1_85*phi_dot + c1*cos_phi*delta_y_dot*jt1_10*jt1_28*jt1_35*sin_phi + c1*cos_phi*delta_z*delta_z_dot*jt1_15*jt1_28*jt1_35*jt1_85*sin_phi + c1*cos_phi*delta_z*delta_z_dot*jt1_15*jt1_28*jt1_62*jt1_85*sin_phi + c1*cos_phi*delta_z_dot*jt1_133*jt1_15*jt1_53*jt1_85 + c1*cos_theta*delta_x*jt1_15*jt1_29*jt1_53*jt1_85*sin_phi*theta_dot + c1*cos_theta*delta_y*delta_z_dot*jt1_133*jt1_15*jt1_28*jt1_85 + c1*cos_theta*delta_y_dot*jt1_15*jt1_29*jt1_53*jt1_85*sin_phi + c1*delta_x*delta_z_dot*jt1_133*jt1_15*jt1_28*jt1_85*sin_theta + c1*delta_x_dot*jt1_15*jt1_29*jt1_53*jt1_85*sin_phi*sin_theta + c1*delta_y*delta_z*jt1_15*jt1_28*jt1_29*jt1_85*sin_theta*theta_dot + c1*delta_y*jt1_15*jt1_29*jt1_52*jt1_53*jt1_85*sin_phi*theta_dot + c1*delta_y*jt1_15*jt1_29*jt1_53*jt1_62*jt1_85*sin_phi*sin_theta*theta_dot + c1*delta_z*jt1_10*jt1_28*jt1_29*sin_theta*theta_dot + 2*c1*delta_z*jt1_15*jt1_29*jt1_53*jt1_85*phi_dot*sin_phi + c1*jt1_10*jt1_29*jt1_52*jt1_53*sin_phi*theta_dot + c1*jt1_10*jt1_29*jt1_53*jt1_62*sin_phi*sin_theta*theta_dot + 2*c1*jt1_133*jt1_15*jt1_29*jt1_331*jt1_35*jt1_85*phi_dot + 2*c1*jt1_133*jt1_15*jt1_29*jt1_331*jt1_62*jt1_85*phi_dot - cos_theta*jt1_35*jt1_366 - cos_theta*jt1_365 - jt1_0*jt1_327*jt1_6 - jt1_184*jt1_366 - jt1_192*jt1_35*theta_dot - jt1_194*theta_dot - jt1_210*jt1_368*jt1_93 - jt1_221*jt1_59 - jt1_223*jt1_59 - jt1_225*jt1_59 - jt1_227*jt1_321*jt1_356 - jt1_228*jt1_355 - jt1_252 - jt1_283*jt1_358*jt1_87 - jt1_283*jt1_364*sin_theta - jt1_289*jt1_35*jt1_364 - jt1_290*jt1_87 - jt1_300*jt1_356 - jt1_330*jt1_94 - jt1_339*jt1_93 - jt1_340*jt1_93 - jt1_342*jt1_364 - jt1_344*jt1_94 - jt1_346*jt1_94 - jt1_347*jt1_360 - jt1_348*jt1_360 - jt1_349*jt1_93 - jt1_35*jt1_359 - 2*jt1_35*jt1_360*jt1_62 - jt1_35*jt1_362 - jt1_35*jt1_367 - jt1_351*jt1_87 - jt1_359*jt1_62 - jt1_360 - jt1_361*jt1_93 - jt1_362*jt1_62 - jt1_363*jt1_52 - jt1_363*jt1_62*sin_theta - jt1_367*jt1_62 - jt1_38*jt1_77 - jt1_38*jt1_88 - jt1_38*jt1_89 - jt1_38*jt1_91 - jt1_42*jt1_68
-        dQ3_2 += E1*b*cos_theta*delta_y*jt1_4*jt1_8*sin_phi + E1*b*delta_x*jt1_4*jt1_8*sin_phi*sin_theta + E1*cos_phi*jt1_28*jt1_4*jt1_8*sin_phi + b*c1*cos_phi*delta_x*delta_x_dot*delta_z*jt1_107*jt1_15 + b*c1*cos_phi*delta_y*delta_y_dot*delta_z*jt1_107*jt1_15 + b*c1*cos_phi*delta_z_dot*jt1_107*jt1_15*jt1_281 + c1*cos_phi*cos_theta*delta_x*delta_y_dot*jt1_107*jt1_15*jt1_28*sin_phi*sin_theta + c1*cos_phi*cos_theta*delta_x_dot*delta_y*jt1_107*jt1_15*jt1_28*sin_phi*sin_theta + 2*c1*cos_phi*cos_theta*delta_y*delta_z*jt1_107*jt1_15*jt1_28*phi_dot*sin_phi + 2*c1*cos_phi*cos_theta*delta_y*jt1_107*jt1_133*jt1_15*jt1_35*jt1_53*phi_dot + c1*cos_phi*cos_theta*jt1_107*jt1_15*jt1_18*jt1_28*sin_phi*sin_theta*theta_dot + 2*c1*cos_phi*delta_x*delta_x_dot*jt1_107*jt1_15*jt1_28*jt1_35*sin_phi + c1*cos_phi*delta_x*delta_x_dot*jt1_107*jt1_15*jt1_28*jt1_62*sin_phi + c1*cos_phi*delta_x*delta_y*jt1_107*jt1_15*jt1_28*jt1_62*sin_phi*theta_dot + 2*c1*cos_phi*delta_x*delta_z*jt1_107*jt1_15*jt1_28*phi_dot*sin_phi*sin_theta + 2*c1*cos_phi*delta_x*jt1_107*jt1_133*jt1_15*jt1_52*jt1_53*phi_dot + 2*c1*cos_phi*delta_x*jt1_107*jt1_133*jt1_15*jt1_53*jt1_62*phi_dot*sin_theta + c1*cos_phi*delta_y*delta_y_dot*jt1_107*jt1_15*jt1_28*jt1_35*sin_phi + 2*c1*cos_phi*delta_y*delta_y_dot*jt1_107*jt1_15*jt1_28*jt1_62*sin_phi + 2*c1*cos_phi*delta_y*jt1_107*jt1_133*jt1_15*jt1_184*jt1_53*phi_dot + c1*cos_phi*delta_z*delta_z_dot*jt1_107*jt1_15*jt1_28*jt1_35*sin_phi + c1*cos_phi*delta_z*delta_z_dot*jt1_107*jt1_15*jt1_28*jt1_62*sin_phi + c1*cos_phi*delta_z_dot*jt1_10*jt1_28*jt1_35*sin_phi + c1*cos_phi*delta_z_dot*jt1_10*jt1_28*jt1_62*sin_phi + c1*cos_phi*delta_z_dot*jt1_107*jt1_133*jt1_15*jt1_53 + c1*cos_theta*delta_x*jt1_107*jt1_15*jt1_29*jt1_53*sin_phi*theta_dot + c1*cos_theta*delta_y*delta_z_dot*jt1_107*jt1_133*jt1_15*jt1_28 + c1*cos_theta*delta_y_dot*jt1_107*jt1_15*jt1_29*jt1_53*sin_phi + c1*delta_x*delta_z_dot*jt1_107*jt1_133*jt1_15*jt1_28*sin_theta + c1*delta_x_dot*jt1_107*jt1_15*jt1_29*jt1_53*sin_phi*sin_theta + c1*delta_y*delta_z*jt1_107*jt1_15*jt1_28*jt1_29*sin_theta*theta_dot + c1*delta_y*jt1_107*jt1_15*jt1_29*jt1_52*jt1_53*sin_phi*theta_dot + c1*delta_y*jt1_107*jt1_15*jt1_29*jt1_53*jt1_62*sin_phi*sin_theta*theta_dot + 2*c1*delta_z*jt1_107*jt1_15*jt1_29*jt1_53*phi_dot*sin_phi + 2*c1*jt1_107*jt1_133*jt1_15*jt1_29*jt1_331*jt1_35*phi_dot + 2*c1*jt1_107*jt1_133*jt1_15*jt1_29*jt1_331*jt1_62*phi_dot - cos_theta*jt1_35*jt1_374 - jt1_103*jt1_38 - jt1_108*jt1_283*jt1_358 - jt1_108*jt1_290 - jt1_108*jt1_351 - jt1_109*jt1_38 - jt1_110*jt1_38 - jt1_111*jt1_38 - jt1_113*jt1_210*jt1_368 - jt1_113*jt1_339 - jt1_113*jt1_340 - jt1_113*jt1_349 - jt1_113*jt1_361 - jt1_114*jt1_330 - jt1_114*jt1_344 - jt1_114*jt1_346 - jt1_118*jt1_327 - jt1_184*jt1_374 - jt1_231*jt1_59 - jt1_232*jt1_59 - jt1_233*jt1_59 - jt1_234*jt1_59 - jt1_236*jt1_321*jt1_356 - jt1_237*jt1_355 - jt1_283*jt1_373*sin_theta - jt1_289*jt1_35*jt1_373 - jt1_302*jt1_356 - jt1_317 - jt1_342*jt1_373 - jt1_347*jt1_370 - jt1_348*jt1_370 - jt1_35*jt1_369 - 2*jt1_35*jt1_370*jt1_62 - jt1_35*jt1_371 - jt1_35*jt1_375 - jt1_369*jt1_62 - jt1_370 - jt1_371*jt1_62 - jt1_372*jt1_52 - jt1_372*jt1_62*sin_theta - jt1_375*jt1_62
-        dQ3_3 += E1*b*cos_theta*delta_y*jt1_120*jt1_8*sin_phi + E1*b*delta_x*jt1_120*jt1_8*sin_phi*sin_theta + E1*b*delta_z*jt1_66*sin_phi + E1*cos_phi*jt1_120*jt1_28*jt1_8*sin_phi + E1*jt1_133*jt1_28*jt1_35*jt1_66 + E1*jt1_133*jt1_28*jt1_62*jt1_66 + E1*jt1_133*jt1_28*jt1_64 + E1*jt1_28*jt1_29*jt1_35*jt1_64 + E1*jt1_28*jt1_29*jt1_62*jt1_64 + E1*jt1_28*jt1_29*jt1_66 + b*c1*cos_phi*delta_x*delta_x_dot*delta_z*jt1_121*jt1_15 + b*c1*cos_phi*delta_y*delta_y_dot*delta_z*jt1_121*jt1_15 + b*c1*cos_phi*delta_z_dot*jt1_121*jt1_15*jt1_281 + c1*cos_phi*cos_theta*delta_x*delta_y_dot*jt1_121*jt1_15*jt1_28*sin_phi*sin_theta + 2*c1*cos_phi*cos_theta*delta_x*delta_z*jt1_10*jt1_28*sin_phi*theta_dot + 2*c1*cos_phi*cos_theta*delta_x*jt1_10*jt1_133*jt1_35*jt1_53*theta_dot + c1*cos_phi*cos_theta*delta_x_dot*delta_y*jt1_121*jt1_15*jt1_28*sin_phi*sin_theta + 2*c1*cos_phi*cos_theta*delta_y*delta_z*jt1_121*jt1_15*jt1_28*phi_dot*sin_phi + 2*c1*cos_phi*cos_theta*delta_y*delta_z_dot*jt1_10*jt1_28*sin_phi + 2*c1*cos_phi*cos_theta*delta_y*jt1_121*jt1_133*jt1_15*jt1_35*jt1_53*phi_dot + 2*c1*cos_phi*cos_theta*delta_y_dot*delta_z*jt1_10*jt1_28*sin_phi + 2*c1*cos_phi*cos_theta*delta_y_dot*jt1_10*jt1_133*jt1_35*jt1_53 + c1*cos_phi*cos_theta*jt1_121*jt1_15*jt1_18*jt1_28*sin_phi*sin_theta*theta_dot + 2*c1*cos_phi*delta_x*delta_x_dot*jt1_121*jt1_15*jt1_28*jt1_35*sin_phi + c1*cos_phi*delta_x*delta_x_dot*jt1_121*jt1_15*jt1_28*jt1_62*sin_phi + c1*cos_phi*delta_x*delta_y*jt1_121*jt1_15*jt1_28*jt1_62*sin_phi*theta_dot + 2*c1*cos_phi*delta_x*delta_z*jt1_121*jt1_15*jt1_28*phi_dot*sin_phi*sin_theta + 2*c1*cos_phi*delta_x*delta_z_dot*jt1_10*jt1_28*sin_phi*sin_theta + 2*c1*cos_phi*delta_x*jt1_10*jt1_133*jt1_184*jt1_53*theta_dot + 2*c1*cos_phi*delta_x*jt1_121*jt1_133*jt1_15*jt1_52*jt1_53*phi_dot + 2*c1*cos_phi*delta_x*jt1_121*jt1_133*jt1_15*jt1_53*jt1_62*phi_dot*sin_theta + 2*c1*cos_phi*delta_x_dot*delta_z*jt1_10*jt1_28*sin_phi*sin_theta + 2*c1*cos_phi*delta_x_dot*jt1_10*jt1_133*jt1_52*jt1_53 + 2*c1*cos_phi*delta_x_dot*jt1_10*jt1_133*jt1_53*jt1_62*sin_theta + c1*cos_phi*delta_y*delta_y_dot*jt1_121*jt1_15*jt1_28*jt1_35*sin_phi + 2*c1*cos_phi*delta_y*delta_y_dot*jt1_121*jt1_15*jt1_28*jt1_62*sin_phi + 2*c1*cos_phi*delta_y*jt1_10*jt1_133*jt1_53*sin_theta*theta_dot + 2*c1*cos_phi*delta_y*jt1_121*jt1_133*jt1_15*jt1_184*jt1_53*phi_dot + 2*c1*cos_phi*delta_y_dot*jt1_10*jt1_133*jt1_184*jt1_53 + c1*cos_phi*delta_z*delta_z_dot*jt1_121*jt1_15*jt1_28*jt1_35*sin_phi + c1*cos_phi*delta_z*delta_z_dot*jt1_121*jt1_15*jt1_28*jt1_62*sin_phi + 4*c1*cos_phi*delta_z*jt1_10*jt1_133*jt1_35*jt1_53*phi_dot + 4*c1*cos_phi*delta_z*jt1_10*jt1_133*jt1_53*jt1_62*phi_dot + c1*cos_phi*delta_z_dot*jt1_121*jt1_133*jt1_15*jt1_53 + 2*c1*cos_phi*jt1_10*jt1_28*jt1_281*phi_dot*sin_phi + 2*c1*cos_phi*jt1_10*jt1_303*jt1_331*jt1_347*phi_dot + 2*c1*cos_phi*jt1_10*jt1_303*jt1_331*jt1_348*phi_dot + 4*c1*cos_phi*jt1_10*jt1_303*jt1_331*jt1_35*jt1_62*phi_dot + 2*c1*cos_phi*jt1_10*jt1_303*jt1_331*phi_dot + c1*cos_theta*delta_x*delta_y_dot*jt1_10*jt1_28*jt1_29*sin_theta + c1*cos_theta*delta_x*jt1_10*jt1_129*jt1_53*theta_dot + c1*cos_theta*delta_x*jt1_121*jt1_15*jt1_29*jt1_53*sin_phi*theta_dot + c1*cos_theta*delta_x_dot*delta_y*jt1_10*jt1_28*jt1_29*sin_theta + 2*c1*cos_theta*delta_y*delta_z*jt1_10*jt1_28*jt1_29*phi_dot + c1*cos_theta*delta_y*delta_z_dot*jt1_121*jt1_133*jt1_15*jt1_28 + 4*c1*cos_theta*delta_y*jt1_10*jt1_29*jt1_35*jt1_53*phi_dot*sin_phi + 2*c1*cos_theta*delta_y*jt1_10*jt1_303*jt1_53*phi_dot + c1*cos_theta*delta_y_dot*jt1_10*jt1_129*jt1_53 + c1*cos_theta*delta_y_dot*jt1_121*jt1_15*jt1_29*jt1_53*sin_phi + c1*cos_theta*jt1_10*jt1_133*jt1_205*jt1_28*sin_theta*theta_dot + c1*cos_theta*jt1_10*jt1_18*jt1_28*jt1_29*sin_theta*theta_dot + c1*delta_x*delta_x_dot*jt1_10*jt1_133*jt1_28 + 2*c1*delta_x*delta_x_dot*jt1_10*jt1_28*jt1_29*jt1_35 + c1*delta_x*delta_y*jt1_10*jt1_133*jt1_28*jt1_35*theta_dot + c1*delta_x*delta_y*jt1_10*jt1_28*jt1_29*jt1_62*theta_dot + 2*c1*delta_x*delta_z*jt1_10*jt1_28*jt1_29*phi_dot*sin_theta + c1*delta_x*delta_z_dot*jt1_121*jt1_133*jt1_15*jt1_28*sin_theta + 4*c1*delta_x*jt1_10*jt1_29*jt1_52*jt1_53*phi_dot*sin_phi + 4*c1*delta_x*jt1_10*jt1_29*jt1_53*jt1_62*phi_dot*sin_phi*sin_theta + 2*c1*delta_x*jt1_10*jt1_303*jt1_53*phi_dot*sin_theta + c1*delta_x_dot*jt1_10*jt1_129*jt1_53*sin_theta + c1*delta_x_dot*jt1_121*jt1_15*jt1_29*jt1_53*sin_phi*sin_theta + c1*delta_y*delta_y_dot*jt1_10*jt1_133*jt1_28 + 2*c1*delta_y*delta_y_dot*jt1_10*jt1_28*jt1_29*jt1_62 + c1*delta_y*delta_z*jt1_121*jt1_15*jt1_28*jt1_29*sin_theta*theta_dot + c1*delta_y*jt1_10*jt1_129*jt1_52*jt1_53*theta_dot + c1*delta_y*jt1_10*jt1_129*jt1_53*jt1_62*sin_theta*theta_dot + 4*c1*delta_y*jt1_10*jt1_184*jt1_29*jt1_53*phi_dot*sin_phi + c1*delta_y*jt1_121*jt1_15*jt1_29*jt1_52*jt1_53*sin_phi*theta_dot + c1*delta_y*jt1_121*jt1_15*jt1_29*jt1_53*jt1_62*sin_phi*sin_theta*theta_dot + 2*c1*delta_z*delta_z_dot*jt1_10*jt1_133*jt1_28 + c1*delta_z*delta_z_dot*jt1_10*jt1_28*jt1_29*jt1_35 + c1*delta_z*delta_z_dot*jt1_10*jt1_28*jt1_29*jt1_62 + 2*c1*delta_z*jt1_10*jt1_129*jt1_53*phi_dot + 2*c1*delta_z*jt1_121*jt1_15*jt1_29*jt1_53*phi_dot*sin_phi + 2*c1*delta_z_dot*jt1_10*jt1_29*jt1_53*sin_phi + c1*delta_z_dot*jt1_10*jt1_303*jt1_35*jt1_53 + c1*delta_z_dot*jt1_10*jt1_303*jt1_53*jt1_62 + 4*c1*jt1_10*jt1_129*jt1_331*jt1_35*phi_dot*sin_phi + 4*c1*jt1_10*jt1_129*jt1_331*jt1_62*phi_dot*sin_phi + 2*c1*jt1_121*jt1_133*jt1_15*jt1_29*jt1_331*jt1_35*phi_dot + 2*c1*jt1_121*jt1_133*jt1_15*jt1_29*jt1_331*jt1_62*phi_dot - cos_theta*jt1_156*jt1_409 - 2*cos_theta*jt1_293*jt1_68 - cos_theta*jt1_35*jt1_383 - cos_theta*jt1_35*jt1_412 - cos_theta*jt1_405*theta_dot - delta_x_dot*jt1_137*jt1_3 - 4*delta_z*jt1_153 - delta_z*jt1_365 - delta_z_dot*jt1_306 - jt1_0*jt1_120*jt1_327 - jt1_12*jt1_154*jt1_293 - jt1_122*jt1_38 - jt1_123*jt1_283*jt1_358 - jt1_123*jt1_290 - jt1_123*jt1_351 - jt1_124*jt1_38 - jt1_125*jt1_38 - jt1_13*jt1_345 - jt1_134*jt1_35*jt1_408 - jt1_139*jt1_179 - jt1_139*jt1_229*jt1_62 - jt1_139*jt1_35*jt1_69 - jt1_141*jt1_210*jt1_368 - jt1_141*jt1_339 - jt1_141*jt1_340 - jt1_141*jt1_349 - jt1_141*jt1_361 - jt1_142*jt1_401 - jt1_144*jt1_330 - jt1_144*jt1_344 - jt1_144*jt1_346 - jt1_184*jt1_304*jt1_83 - jt1_184*jt1_383 - jt1_184*jt1_412 - jt1_198*jt1_398 - jt1_219*jt1_343 - jt1_229*jt1_30 - jt1_238*jt1_59 - jt1_239*jt1_59 - jt1_240*jt1_59 - jt1_242*jt1_408*jt1_62 - jt1_246*jt1_321*jt1_356 - jt1_247*jt1_355 - jt1_251*jt1_304*jt1_35 - jt1_283*jt1_404*sin_theta - jt1_289*jt1_35*jt1_404 - jt1_30*jt1_301 - jt1_30*jt1_65 - jt1_303*jt1_379 - jt1_304*jt1_356*jt1_62 - jt1_304*jt1_52*jt1_9 - jt1_308*jt1_380*sin_theta - jt1_311*jt1_356 - jt1_315*jt1_35*jt1_380 - jt1_323*jt1_413*theta_dot - jt1_324*jt1_413*theta_dot - jt1_342*jt1_404 - jt1_343*jt1_402 - jt1_343*jt1_74 - jt1_345*jt1_74 - jt1_347*jt1_387 - jt1_347*jt1_390 - jt1_348*jt1_387 - jt1_348*jt1_390 - jt1_35*jt1_377 - jt1_35*jt1_378 - jt1_35*jt1_386*jt1_395*jt1_62 - jt1_35*jt1_388 - 2*jt1_35*jt1_390*jt1_62 - jt1_35*jt1_393 - jt1_35*jt1_394 - jt1_35*jt1_396 - jt1_35*jt1_397 - jt1_35*jt1_414 - jt1_376*jt1_65 - jt1_376*jt1_69 - jt1_377*jt1_62 - jt1_378*jt1_62 - jt1_381*jt1_52 - jt1_381*jt1_62*sin_theta - jt1_382 - jt1_387 - jt1_388*jt1_62 - jt1_389*jt1_79 - jt1_390 + jt1_391 + jt1_392 - jt1_393*jt1_62 - jt1_394*jt1_62 - jt1_396*jt1_62 - jt1_397*jt1_62 - jt1_398*jt1_400 - jt1_398*jt1_77 - jt1_399 - jt1_403*jt1_52 - jt1_403*jt1_62*sin_theta - jt1_406*jt1_52*theta_dot - 4*jt1_410 - 4*jt1_411 - jt1_414*jt1_62 - jt1_417
-        dQ3_4 += E1*b*cos_theta*delta_y*jt1_159*jt1_8*sin_phi + E1*b*delta_x*jt1_159*jt1_8*sin_phi*sin_theta + E1*cos_phi*jt1_159*jt1_28*jt1_8*sin_phi + b*c1*cos_phi*delta_x*delta_x_dot*delta_z*jt1_15*jt1_160 + b*c1*cos_phi*delta_y*delta_y_dot*delta_z*jt1_15*jt1_160 + b*c1*cos_phi*delta_z_dot*jt1_15*jt1_160*jt1_281 + c1*cos_phi*cos_theta*delta_x*delta_y_dot*jt1_15*jt1_160*jt1_28*sin_phi*sin_theta + c1*cos_phi*cos_theta*delta_x_dot*delta_y*jt1_15*jt1_160*jt1_28*sin_phi*sin_theta + 2*c1*cos_phi*cos_theta*delta_y*delta_z*jt1_15*jt1_160*jt1_28*phi_dot*sin_phi + 2*c1*cos_phi*cos_theta*delta_y*jt1_133*jt1_15*jt1_160*jt1_35*jt1_53*phi_dot + c1*cos_phi*cos_theta*jt1_15*jt1_160*jt1_18*jt1_28*sin_phi*sin_theta*theta_dot + 2*c1*cos_phi*delta_x*delta_x_dot*jt1_15*jt1_160*jt1_28*jt1_35*sin_phi + c1*cos_phi*delta_x*delta_x_dot*jt1_15*jt1_160*jt1_28*jt1_62*sin_phi + c1*cos_phi*delta_x*delta_y*jt1_15*jt1_160*jt1_28*jt1_62*sin_phi*theta_dot + c1*cos_phi*delta_x*delta_y_dot*jt1_10*jt1_28*jt1_62*sin_phi + 2*c1*cos_phi*delta_x*delta_z*jt1_15*jt1_160*jt1_28*phi_dot*sin_phi*sin_theta + 2*c1*cos_phi*delta_x*jt1_133*jt1_15*jt1_160*jt1_52*jt1_53*phi_dot + 2*c1*cos_phi*delta_x*jt1_133*jt1_15*jt1_160*jt1_53*jt1_62*phi_dot*sin_theta + c1*cos_phi*delta_x_dot*delta_y*jt1_10*jt1_28*jt1_62*sin_phi + c1*cos_phi*delta_y*delta_y_dot*jt1_15*jt1_160*jt1_28*jt1_35*sin_phi + 2*c1*cos_phi*delta_y*delta_y_dot*jt1_15*jt1_160*jt1_28*jt1_62*sin_phi + 2*c1*cos_phi*delta_y*jt1_133*jt1_15*jt1_160*jt1_184*jt1_53*phi_dot + c1*cos_phi*delta_z*delta_z_dot*jt1_15*jt1_160*jt1_28*jt1_35*sin_phi + c1*cos_phi*delta_z*delta_z_dot*jt1_15*jt1_160*jt1_28*jt1_62*sin_phi + c1*cos_phi*delta_z_dot*jt1_133*jt1_15*jt1_160*jt1_53 + c1*cos_phi*jt1_10*jt1_18*jt1_28*jt1_62*sin_phi*theta_dot + c1*cos_phi*jt1_10*jt1_205*jt1_28*jt1_35*sin_phi*theta_dot + c1*cos_theta*delta_x*jt1_15*jt1_160*jt1_29*jt1_53*sin_phi*theta_dot + c1*cos_theta*delta_x_dot*jt1_10*jt1_29*jt1_53*sin_phi + c1*cos_theta*delta_y*delta_z*jt1_10*jt1_28*jt1_29*theta_dot + c1*cos_theta*delta_y*delta_z_dot*jt1_133*jt1_15*jt1_160*jt1_28 + c1*cos_theta*delta_y*jt1_10*jt1_29*jt1_35*jt1_53*sin_phi*theta_dot + c1*cos_theta*delta_y_dot*jt1_15*jt1_160*jt1_29*jt1_53*sin_phi + 2*c1*cos_theta*jt1_10*jt1_133*jt1_205*jt1_28*phi_dot*sin_theta + 2*c1*delta_x*delta_y*jt1_10*jt1_133*jt1_28*jt1_35*phi_dot + c1*delta_x*delta_z*jt1_10*jt1_28*jt1_29*sin_theta*theta_dot + c1*delta_x*delta_z_dot*jt1_133*jt1_15*jt1_160*jt1_28*sin_theta + c1*delta_x*jt1_10*jt1_29*jt1_52*jt1_53*sin_phi*theta_dot + c1*delta_x*jt1_10*jt1_29*jt1_53*jt1_62*sin_phi*sin_theta*theta_dot + c1*delta_x_dot*jt1_15*jt1_160*jt1_29*jt1_53*sin_phi*sin_theta + c1*delta_y*delta_z*jt1_15*jt1_160*jt1_28*jt1_29*sin_theta*theta_dot + c1*delta_y*jt1_10*jt1_184*jt1_29*jt1_53*sin_phi*theta_dot + c1*delta_y*jt1_15*jt1_160*jt1_29*jt1_52*jt1_53*sin_phi*theta_dot + c1*delta_y*jt1_15*jt1_160*jt1_29*jt1_53*jt1_62*sin_phi*sin_theta*theta_dot + c1*delta_y_dot*delta_z*jt1_10*jt1_28*jt1_29*sin_theta + c1*delta_y_dot*jt1_10*jt1_29*jt1_52*jt1_53*sin_phi + c1*delta_y_dot*jt1_10*jt1_29*jt1_53*jt1_62*sin_phi*sin_theta + 2*c1*delta_z*jt1_15*jt1_160*jt1_29*jt1_53*phi_dot*sin_phi + 2*c1*jt1_133*jt1_15*jt1_160*jt1_29*jt1_331*jt1_35*phi_dot + 2*c1*jt1_133*jt1_15*jt1_160*jt1_29*jt1_331*jt1_62*phi_dot - cos_theta*jt1_308*jt1_55 - cos_theta*jt1_35*jt1_419 - cos_theta*jt1_35*jt1_424 - jt1_0*jt1_159*jt1_327 - jt1_134*jt1_154*jt1_321*phi_dot - jt1_147*jt1_62*jt1_9 - jt1_161*jt1_38 - jt1_162*jt1_283*jt1_358 - jt1_162*jt1_290 - jt1_162*jt1_351 - jt1_163*jt1_38 - jt1_164*jt1_38 - jt1_167*jt1_210*jt1_368 - jt1_167*jt1_339 - jt1_167*jt1_349 - jt1_167*jt1_361 - jt1_172*jt1_330 - jt1_172*jt1_344 - jt1_172*jt1_346 - jt1_176*jt1_279 - jt1_184*jt1_419 - jt1_184*jt1_424 - jt1_198*jt1_358 - jt1_242*jt1_42*jt1_62*theta_dot - jt1_262*jt1_59 - jt1_263*jt1_59 - jt1_264*jt1_59 - jt1_266*jt1_321*jt1_356 - jt1_267*jt1_355 - jt1_276*jt1_337 - jt1_283*jt1_423*sin_theta - jt1_289*jt1_35*jt1_423 - jt1_319*jt1_356 - jt1_342*jt1_423 - jt1_347*jt1_420 - jt1_348*jt1_420 - jt1_35*jt1_418 - 2*jt1_35*jt1_420*jt1_62 - jt1_35*jt1_421 - jt1_35*jt1_425 - jt1_358*jt1_400 - jt1_358*jt1_77 - jt1_418*jt1_62 - jt1_420 - jt1_421*jt1_62 - jt1_422*jt1_52 - jt1_422*jt1_62*sin_theta - jt1_425*jt1_62 - jt1_426 - jt1_55*jt1_68*sin_theta - jt1_55*jt1_79*sin_theta
-        dQ3_5 += 0
-        dQ3_6 += 0
-        dQ3_7 += 0
-        dQ3_8 += jt1_195
-        dQ3_9 += jt1_274
-        dQ3_10 += jt1_325
-        dQ3_11 += 2*c1*cos_phi*cos_theta*delta_y*delta_z*jt1_10*jt1_28*sin_phi + 2*c1*cos_phi*cos_theta*delta_y*jt1_10*jt1_133*jt1_35*jt1_53 + 2*c1*cos_phi*delta_x*delta_z*jt1_10*jt1_28*sin_phi*sin_theta + 2*c1*cos_phi*delta_x*jt1_10*jt1_133*jt1_52*jt1_53 + 2*c1*cos_phi*delta_x*jt1_10*jt1_133*jt1_53*jt1_62*sin_theta + 2*c1*cos_phi*delta_y*jt1_10*jt1_133*jt1_184*jt1_53 + 2*c1*delta_z*jt1_10*jt1_29*jt1_53*sin_phi + 2*c1*jt1_10*jt1_133*jt1_29*jt1_331*jt1_35 + 2*c1*jt1_10*jt1_133*jt1_29*jt1_331*jt1_62 - cos_theta*jt1_406 - jt1_134*jt1_345 - jt1_242*jt1_343 - jt1_30*jt1_305 - jt1_322*jt1_356 - jt1_347*jt1_427 - jt1_348*jt1_427 - 2*jt1_35*jt1_427*jt1_62 - jt1_35*jt1_428 - jt1_405*sin_theta - jt1_427 - jt1_428*jt1_62
-        dQ3_12 += jt1_430
-        dQ3_13 += 0
-        dQ3_14 += 0
-        dQ3_15 += 0
-        dQ4_0 += E1*b*cos_phi*delta_y*jt1_2*jt1_8*sin_theta + b*c1*cos_phi*cos_theta*delta_x*delta_y*delta_y_dot*jt1_14*jt1_15 + b*c1*cos_phi*cos_theta*delta_x*delta_z*delta_z_dot*jt1_14*jt1_15 + b*c1*cos_phi*cos_theta*delta_x_dot*jt1_14*jt1_15*jt1_18 + c1*cos_phi*cos_theta*jt1_14*jt1_15*jt1_18*jt1_28*phi_dot*sin_phi*sin_theta + c1*cos_phi*delta_x*delta_y*jt1_14*jt1_15*jt1_28*jt1_62*phi_dot*sin_phi + c1*cos_phi*delta_y*delta_z_dot*jt1_14*jt1_15*jt1_28*sin_phi*sin_theta + 2*c1*cos_theta*delta_x*delta_y*jt1_14*jt1_15*jt1_28*jt1_29*sin_theta*theta_dot + c1*cos_theta*delta_x*jt1_14*jt1_15*jt1_29*jt1_53*phi_dot*sin_phi + c1*cos_theta*delta_y*delta_y_dot*jt1_14*jt1_15*jt1_28*jt1_29*sin_theta + c1*delta_x_dot*delta_y*jt1_14*jt1_15*jt1_28*jt1_29*jt1_35 + c1*delta_y*delta_z*jt1_14*jt1_15*jt1_28*jt1_29*phi_dot*sin_theta + c1*delta_y*jt1_14*jt1_15*jt1_29*jt1_52*jt1_53*phi_dot*sin_phi + c1*delta_y*jt1_14*jt1_15*jt1_29*jt1_53*jt1_62*phi_dot*sin_phi*sin_theta - delta_y*jt1_63 - jt1_1*jt1_198 - jt1_1*jt1_202 - jt1_1*jt1_204 - jt1_1*jt1_207 - jt1_17*jt1_432 - jt1_17*jt1_433 - jt1_170 - jt1_186 - jt1_2*jt1_431*jt1_5 - jt1_200*jt1_9 - jt1_205*jt1_42*jt1_46*jt1_80 - jt1_212*jt1_23 - jt1_214*jt1_23 - jt1_216*jt1_434 - jt1_217*jt1_23 - jt1_35*jt1_434*jt1_55 - jt1_43*jt1_435 - jt1_436*jt1_44
-        dQ4_1 += delta_y*jt1_100 - delta_y*jt1_101 + delta_y*jt1_102 + delta_y*jt1_21*jt1_82 + delta_y*jt1_61*jt1_9*jt1_93 + delta_y*jt1_62*jt1_95 + delta_y*jt1_97 + delta_y*jt1_98 + delta_z*jt1_104 + jt1_1*jt1_179 - jt1_1*jt1_221 - jt1_1*jt1_223 - jt1_1*jt1_225 + jt1_128*jt1_42 + jt1_168*jt1_35 + jt1_18*jt1_439 + jt1_185*jt1_52 - jt1_187*jt1_83*theta_dot + jt1_201*jt1_36*jt1_93 - jt1_205*jt1_439 - jt1_212*jt1_87 - jt1_214*jt1_87 - jt1_216*jt1_437 - jt1_217*jt1_87 + jt1_24*jt1_48*jt1_93 - jt1_253 - jt1_254 - jt1_255 - jt1_256 + jt1_257*jt1_62 - jt1_257 + jt1_258*jt1_62 - jt1_259 - jt1_260 + jt1_314*sin_theta + jt1_34*jt1_9 - jt1_35*jt1_438 - jt1_431*jt1_5*jt1_6 - jt1_432*jt1_93 - jt1_433*jt1_93 - jt1_435*jt1_92 - jt1_436*jt1_95 + jt1_438 + jt1_5*jt1_77 + jt1_5*jt1_88 + jt1_5*jt1_89 + jt1_5*jt1_91
-        dQ4_2 += E1*b*cos_phi*delta_y*jt1_4*jt1_8*sin_theta + b*c1*cos_phi*cos_theta*delta_x*delta_y*delta_y_dot*jt1_107*jt1_15 + b*c1*cos_phi*cos_theta*delta_x*delta_z*delta_z_dot*jt1_107*jt1_15 + b*c1*cos_phi*cos_theta*delta_x*delta_z_dot*jt1_10 + b*c1*cos_phi*cos_theta*delta_x_dot*jt1_107*jt1_15*jt1_18 + c1*cos_phi*cos_theta*jt1_107*jt1_15*jt1_18*jt1_28*phi_dot*sin_phi*sin_theta + c1*cos_phi*delta_x*delta_y*jt1_107*jt1_15*jt1_28*jt1_62*phi_dot*sin_phi + c1*cos_phi*delta_y*delta_z_dot*jt1_107*jt1_15*jt1_28*sin_phi*sin_theta + 2*c1*cos_theta*delta_x*delta_y*jt1_107*jt1_15*jt1_28*jt1_29*sin_theta*theta_dot + c1*cos_theta*delta_x*jt1_107*jt1_15*jt1_29*jt1_53*phi_dot*sin_phi + c1*cos_theta*delta_y*delta_y_dot*jt1_107*jt1_15*jt1_28*jt1_29*sin_theta + c1*delta_x_dot*delta_y*jt1_107*jt1_15*jt1_28*jt1_29*jt1_35 + c1*delta_y*delta_z*jt1_107*jt1_15*jt1_28*jt1_29*phi_dot*sin_theta + c1*delta_y*jt1_10*jt1_28*jt1_29*phi_dot*sin_theta + c1*delta_y*jt1_107*jt1_15*jt1_29*jt1_52*jt1_53*phi_dot*sin_phi + c1*delta_y*jt1_107*jt1_15*jt1_29*jt1_53*jt1_62*phi_dot*sin_phi*sin_theta - cos_theta*jt1_127 - delta_y*jt1_117 - jt1_1*jt1_231 - jt1_1*jt1_232 - jt1_1*jt1_233 - jt1_1*jt1_234 - jt1_108*jt1_212 - jt1_108*jt1_214 - jt1_108*jt1_217 - jt1_112*jt1_435 - jt1_113*jt1_432 - jt1_113*jt1_433 - jt1_115*jt1_436 - jt1_205*jt1_237*jt1_416 - jt1_216*jt1_440 - jt1_35*jt1_440*jt1_55 - jt1_4*jt1_431*jt1_5
-        dQ4_3 += E1*b*cos_phi*delta_y*jt1_120*jt1_8*sin_theta + b*c1*cos_phi*cos_theta*delta_x*delta_y*delta_y_dot*jt1_121*jt1_15 + b*c1*cos_phi*cos_theta*delta_x*delta_z*delta_z_dot*jt1_121*jt1_15 + b*c1*cos_phi*cos_theta*delta_x_dot*jt1_121*jt1_15*jt1_18 + c1*cos_phi*cos_theta*jt1_121*jt1_15*jt1_18*jt1_28*phi_dot*sin_phi*sin_theta + c1*cos_phi*delta_x*delta_y*jt1_121*jt1_15*jt1_28*jt1_62*phi_dot*sin_phi + 2*c1*cos_phi*delta_x*delta_y_dot*jt1_10*jt1_28*jt1_62*sin_phi + c1*cos_phi*delta_y*delta_z_dot*jt1_121*jt1_15*jt1_28*sin_phi*sin_theta + 2*c1*cos_phi*jt1_10*jt1_18*jt1_28*jt1_62*sin_phi*theta_dot + 2*c1*cos_phi*jt1_10*jt1_205*jt1_28*jt1_35*sin_phi*theta_dot + 2*c1*cos_theta*delta_x*delta_y*jt1_121*jt1_15*jt1_28*jt1_29*sin_theta*theta_dot + c1*cos_theta*delta_x*jt1_10*jt1_129*jt1_53*phi_dot + c1*cos_theta*delta_x*jt1_121*jt1_15*jt1_29*jt1_53*phi_dot*sin_phi + c1*cos_theta*delta_y*delta_y_dot*jt1_121*jt1_15*jt1_28*jt1_29*sin_theta + c1*cos_theta*jt1_10*jt1_133*jt1_205*jt1_28*phi_dot*sin_theta + c1*cos_theta*jt1_10*jt1_18*jt1_28*jt1_29*phi_dot*sin_theta + c1*delta_x*delta_y*jt1_10*jt1_133*jt1_28*jt1_35*phi_dot + c1*delta_x*delta_y*jt1_10*jt1_28*jt1_29*jt1_62*phi_dot + c1*delta_x_dot*delta_y*jt1_121*jt1_15*jt1_28*jt1_29*jt1_35 + c1*delta_y*delta_z*jt1_121*jt1_15*jt1_28*jt1_29*phi_dot*sin_theta + c1*delta_y*delta_z_dot*jt1_10*jt1_28*jt1_29*sin_theta + c1*delta_y*jt1_10*jt1_129*jt1_52*jt1_53*phi_dot + c1*delta_y*jt1_10*jt1_129*jt1_53*jt1_62*phi_dot*sin_theta + c1*delta_y*jt1_121*jt1_15*jt1_29*jt1_52*jt1_53*phi_dot*sin_phi + c1*delta_y*jt1_121*jt1_15*jt1_29*jt1_53*jt1_62*phi_dot*sin_phi*sin_theta - cos_theta*jt1_126*jt1_35*jt1_380 - delta_y*jt1_151 - jt1_1*jt1_238 - jt1_1*jt1_239 - jt1_1*jt1_240 - jt1_103*jt1_337 - jt1_120*jt1_431*jt1_5 - jt1_123*jt1_212 - jt1_123*jt1_214 - jt1_123*jt1_217 - jt1_126*jt1_389 - jt1_134*jt1_398*phi_dot - jt1_141*jt1_432 - jt1_141*jt1_433 - jt1_145*jt1_435 - jt1_146*jt1_436 - jt1_150*jt1_318 - jt1_205*jt1_247*jt1_416 - jt1_216*jt1_442 - jt1_242*jt1_50*jt1_80 - jt1_343*jt1_441 - jt1_35*jt1_442*jt1_55 - jt1_36*jt1_441 - jt1_380*jt1_71*sin_theta - jt1_426
-        dQ4_4 += E1*b*cos_phi*delta_y*jt1_159*jt1_8*sin_theta + b*c1*cos_phi*cos_theta*delta_x*delta_y*delta_y_dot*jt1_15*jt1_160 + b*c1*cos_phi*cos_theta*delta_x*delta_z*delta_z_dot*jt1_15*jt1_160 + b*c1*cos_phi*cos_theta*delta_x_dot*jt1_15*jt1_160*jt1_18 + c1*cos_phi*cos_theta*delta_y*delta_z_dot*jt1_10*jt1_28*sin_phi + c1*cos_phi*cos_theta*jt1_15*jt1_160*jt1_18*jt1_28*phi_dot*sin_phi*sin_theta + c1*cos_phi*delta_x*delta_y*jt1_15*jt1_160*jt1_28*jt1_62*phi_dot*sin_phi + c1*cos_phi*delta_x*delta_z_dot*jt1_10*jt1_28*sin_phi*sin_theta + c1*cos_phi*delta_y*delta_z_dot*jt1_15*jt1_160*jt1_28*sin_phi*sin_theta + c1*cos_phi*jt1_10*jt1_18*jt1_28*jt1_62*phi_dot*sin_phi + c1*cos_phi*jt1_10*jt1_205*jt1_28*jt1_35*phi_dot*sin_phi + 2*c1*cos_theta*delta_x*delta_y*jt1_15*jt1_160*jt1_28*jt1_29*sin_theta*theta_dot + 2*c1*cos_theta*delta_x*delta_y_dot*jt1_10*jt1_28*jt1_29*sin_theta + c1*cos_theta*delta_x*jt1_15*jt1_160*jt1_29*jt1_53*phi_dot*sin_phi + 2*c1*cos_theta*delta_x_dot*delta_y*jt1_10*jt1_28*jt1_29*sin_theta + c1*cos_theta*delta_y*delta_y_dot*jt1_15*jt1_160*jt1_28*jt1_29*sin_theta + c1*cos_theta*delta_y*delta_z*jt1_10*jt1_28*jt1_29*phi_dot + c1*cos_theta*delta_y*jt1_10*jt1_29*jt1_35*jt1_53*phi_dot*sin_phi + 2*c1*cos_theta*jt1_10*jt1_18*jt1_28*jt1_29*sin_theta*theta_dot + c1*delta_x*delta_x_dot*jt1_10*jt1_28*jt1_29*jt1_35 + 2*c1*delta_x*delta_y*jt1_10*jt1_28*jt1_29*jt1_62*theta_dot + c1*delta_x*delta_z*jt1_10*jt1_28*jt1_29*phi_dot*sin_theta + c1*delta_x*jt1_10*jt1_29*jt1_52*jt1_53*phi_dot*sin_phi + c1*delta_x*jt1_10*jt1_29*jt1_53*jt1_62*phi_dot*sin_phi*sin_theta + c1*delta_x_dot*delta_y*jt1_15*jt1_160*jt1_28*jt1_29*jt1_35 + c1*delta_y*delta_y_dot*jt1_10*jt1_28*jt1_29*jt1_62 + c1*delta_y*delta_z*jt1_15*jt1_160*jt1_28*jt1_29*phi_dot*sin_theta + c1*delta_y*jt1_10*jt1_184*jt1_29*jt1_53*phi_dot*sin_phi + c1*delta_y*jt1_15*jt1_160*jt1_29*jt1_52*jt1_53*phi_dot*sin_phi + c1*delta_y*jt1_15*jt1_160*jt1_29*jt1_53*jt1_62*phi_dot*sin_phi*sin_theta - delta_y*jt1_178 - jt1_1*jt1_262 - jt1_1*jt1_263 - jt1_1*jt1_264 - jt1_134*jt1_35*jt1_407 - jt1_159*jt1_431*jt1_5 - jt1_162*jt1_212 - jt1_162*jt1_214 - jt1_162*jt1_217 - jt1_167*jt1_432 - jt1_167*jt1_433 - jt1_173*jt1_435 - jt1_174*jt1_436 - jt1_205*jt1_267*jt1_416 - jt1_216*jt1_443 - jt1_242*jt1_407*jt1_62 - jt1_261*jt1_9 - jt1_35*jt1_443*jt1_55 - jt1_391 - jt1_392 - 2*jt1_399 - jt1_410 - jt1_411 - jt1_417
-        dQ4_5 += 0
-        dQ4_6 += 0
-        dQ4_7 += 0
-        dQ4_8 += jt1_197
-        dQ4_9 += jt1_275
-        dQ4_10 += jt1_326
-        dQ4_11 += jt1_430
-        dQ4_12 += 2*c1*cos_theta*delta_x*delta_y*jt1_10*jt1_28*jt1_29*sin_theta - jt1_134*jt1_165 - jt1_242*jt1_36
-        dQ4_13 += 0
-        dQ4_14 += 0
-        dQ4_15 += 0
-        dQ5_0 += 0
-        dQ5_1 += 0
-        dQ5_2 += 0
-        dQ5_3 += 0
-        dQ5_4 += 0
-        dQ5_5 += 0
-        dQ5_6 += 0
-        dQ5_7 += 0
-        dQ5_8 += 0
-        dQ5_9 += 0
-        dQ5_10 += 0
-        dQ5_11 += 0
-        dQ5_12 += 0
-        dQ5_13 += 0
-        dQ5_14 += 0
-        dQ5_15 += 0
-        dQ6_0 += 0
-        dQ6_1 += 0
-        dQ6_2 += 0
-        dQ6_3 += 0
-        dQ6_4 += 0
-        dQ6_5 += 0
-        dQ6_6 += 0
-        dQ6_7 += 0
-        dQ6_8 += 0
-        dQ6_9 += 0
-        dQ6_10 += 0
-        dQ6_11 += 0
-        dQ6_12 += 0
-        dQ6_13 += 0
-        dQ6_14 += 0
-        dQ6_15 += 0
-        dQ7_0 += 0
-        dQ7_1 += 0
-        dQ7_2 += 0
-        dQ7_3 += 0
-        dQ7_4 += 0
-        dQ7_5 += 0
-        dQ7_6 += 0
-        dQ7_7 += 0
-        dQ7_8 += 0
-        dQ7_9 += 0
-        dQ7_10 += 0
-        dQ7_11 += 0
-        dQ7_12 += 0
-        dQ7_13 += 0
-        dQ7_14 += 0
-        dQ7_15 += 0
-    lambda2 = math.sqrt((-a*sin_phi - delta_z)**2 + (-a*cos_phi*cos_theta - delta_y)**2 + (-a*cos_phi*sin_theta - delta_x)**2)
-    if lambda2 > l20:  # tether 2 taut: spring2, damper2
-        jt2_0 = a*cos_phi
-        jt2_1 = jt2_0*sin_theta
-        jt2_2 = -delta_x - jt2_1
-        jt2_3 = a*sin_phi
-        jt2_4 = -delta_z - jt2_3
-        jt2_5 = cos_theta*jt2_0
-        jt2_6 = -delta_y - jt2_5
-        jt2_7 = jt2_2**2 + jt2_4**2 + jt2_6**2
-        jt2_8 = jt2_7**(-3/2)
-        jt2_9 = 2*delta_x
-        jt2_10 = 1/jt2_7
-        jt2_11 = c2*jt2_10
-        jt2_12 = delta_x_dot*jt2_11
-        jt2_13 = jt2_12*jt2_9
-        jt2_14 = 2*jt2_1
-        jt2_15 = -jt2_14 - jt2_9
-        jt2_16 = jt2_7**(-2)
-        jt2_17 = c2*jt2_16
-        jt2_18 = jt2_15*jt2_17
-        jt2_19 = delta_x**2
-        jt2_20 = delta_x_dot*jt2_19
-        jt2_21 = jt2_18*jt2_20
-        jt2_22 = delta_x*jt2_18
-        jt2_23 = delta_y*delta_y_dot
-        jt2_24 = jt2_22*jt2_23
-        jt2_25 = delta_z*delta_z_dot
-        jt2_26 = jt2_22*jt2_25
-        jt2_27 = delta_z_dot*jt2_3
-        jt2_28 = a**2
-        jt2_29 = cos_phi**2
-        jt2_30 = jt2_28*jt2_29
-        jt2_31 = jt2_11*jt2_30
-        jt2_32 = jt2_31*sin_theta
-        jt2_33 = cos_theta*jt2_32
-        jt2_34 = jt2_33*theta_dot
-        jt2_35 = sin_theta**2
-        jt2_36 = jt2_30*jt2_35
-        jt2_37 = delta_x_dot*jt2_36
-        jt2_38 = jt2_11*jt2_9
-        jt2_39 = jt2_5*theta_dot
-        jt2_40 = delta_y_dot*jt2_5
-        jt2_41 = jt2_19*jt2_39
-        jt2_42 = delta_z*jt2_0
-        jt2_43 = jt2_22*phi_dot
-        jt2_44 = jt2_1*jt2_18
-        jt2_45 = cos_phi*jt2_28*sin_phi
-        jt2_46 = jt2_43*jt2_45
-        jt2_47 = delta_z_dot*jt2_45
-        jt2_48 = jt2_18*sin_theta
-        jt2_49 = cos_theta*sin_theta
-        jt2_50 = jt2_30*jt2_49
-        jt2_51 = delta_y_dot*jt2_50
-        jt2_52 = jt2_18*phi_dot
-        jt2_53 = jt2_30*sin_theta
-        jt2_54 = delta_z*jt2_53
-        jt2_55 = a**3
-        jt2_56 = jt2_29*sin_phi
-        jt2_57 = jt2_55*jt2_56
-        jt2_58 = jt2_52*jt2_57
-        jt2_59 = jt2_58*sin_theta
-        jt2_60 = sin_theta**3
-        jt2_61 = delta_x_dot*jt2_1
-        jt2_62 = jt2_61*jt2_9
-        jt2_63 = jt2_50*theta_dot
-        jt2_64 = cos_theta**2
-        jt2_65 = E2/l20
-        jt2_66 = 1/math.sqrt(jt2_7)
-        jt2_67 = -E2*jt2_66
-        jt2_68 = delta_y_dot*jt2_11
-        jt2_69 = delta_y*jt2_68
-        jt2_70 = -a*c2*cos_phi*delta_y*jt2_10*sin_theta*theta_dot - a*c2*cos_theta*delta_y*jt2_10*phi_dot*sin_phi - c2*cos_phi*jt2_10*jt2_28*jt2_64*phi_dot*sin_phi + jt2_5*jt2_68 + jt2_65 + jt2_67 + jt2_69
-        jt2_71 = delta_z_dot*jt2_11
-        jt2_72 = delta_z*jt2_71
-        jt2_73 = jt2_11*phi_dot
-        jt2_74 = jt2_45*jt2_73
-        jt2_75 = jt2_3*jt2_71 + jt2_42*jt2_73 + jt2_72 + jt2_74
-        jt2_76 = delta_x*jt2_68
-        jt2_77 = -c2*cos_phi*cos_theta*jt2_10*jt2_28*phi_dot*sin_phi*sin_theta
-        jt2_78 = 2*delta_y
-        jt2_79 = 2*jt2_5
-        jt2_80 = -jt2_78 - jt2_79
-        jt2_81 = delta_x*jt2_17
-        jt2_82 = jt2_80*jt2_81
-        jt2_83 = jt2_23*jt2_82
-        jt2_84 = jt2_25*jt2_82
-        jt2_85 = jt2_17*jt2_20
-        jt2_86 = jt2_80*jt2_85
-        jt2_87 = jt2_82*phi_dot
-        jt2_88 = jt2_17*jt2_80
-        jt2_89 = jt2_1*jt2_88
-        jt2_90 = jt2_45*jt2_87
-        jt2_91 = jt2_47*sin_theta
-        jt2_92 = jt2_88*jt2_91
-        jt2_93 = jt2_88*phi_dot
-        jt2_94 = jt2_54*jt2_93
-        jt2_95 = jt2_57*jt2_93
-        jt2_96 = jt2_95*sin_theta
-        jt2_97 = delta_x*jt2_71
-        jt2_98 = delta_x*jt2_11
-        jt2_99 = jt2_98*phi_dot
-        jt2_100 = jt2_32*phi_dot
-        jt2_101 = 2*delta_z
-        jt2_102 = 2*jt2_3
-        jt2_103 = -jt2_101 - jt2_102
-        jt2_104 = jt2_103*jt2_81
-        jt2_105 = jt2_104*jt2_23
-        jt2_106 = jt2_104*jt2_25
-        jt2_107 = jt2_103*jt2_85
-        jt2_108 = jt2_104*phi_dot
-        jt2_109 = jt2_103*jt2_17
-        jt2_110 = jt2_1*jt2_109
-        jt2_111 = jt2_108*jt2_45
-        jt2_112 = jt2_109*phi_dot
-        jt2_113 = jt2_112*jt2_57
-        jt2_114 = jt2_113*sin_theta
-        jt2_115 = cos_theta*jt2_6
-        jt2_116 = jt2_115*jt2_3
-        jt2_117 = jt2_3*sin_theta
-        jt2_118 = a*cos_phi*jt2_4 - jt2_116 - jt2_117*jt2_2
-        jt2_119 = E2*jt2_8
-        jt2_120 = delta_x*jt2_119
-        jt2_121 = jt2_118*jt2_120
-        jt2_122 = 2*a*cos_phi*jt2_4 - jt2_102*jt2_115 - jt2_102*jt2_2*sin_theta
-        jt2_123 = jt2_122*jt2_85
-        jt2_124 = sin_phi**2
-        jt2_125 = jt2_124*jt2_28
-        jt2_126 = jt2_125*jt2_99
-        jt2_127 = cos_phi**3
-        jt2_128 = jt2_11*jt2_55
-        jt2_129 = jt2_128*phi_dot
-        jt2_130 = jt2_127*jt2_129
-        jt2_131 = jt2_122*jt2_81
-        jt2_132 = jt2_131*jt2_23
-        jt2_133 = jt2_131*jt2_25
-        jt2_134 = jt2_30*jt2_99
-        jt2_135 = jt2_71*sin_theta
-        jt2_136 = jt2_130*sin_theta
-        jt2_137 = jt2_11*jt2_19
-        jt2_138 = jt2_137*phi_dot
-        jt2_139 = cos_theta*jt2_3
-        jt2_140 = jt2_137*jt2_139
-        jt2_141 = delta_z*jt2_98
-        jt2_142 = jt2_3*phi_dot
-        jt2_143 = jt2_122*jt2_17
-        jt2_144 = jt2_31*jt2_35
-        jt2_145 = delta_y*jt2_98
-        jt2_146 = jt2_145*jt2_5
-        jt2_147 = jt2_143*phi_dot
-        jt2_148 = delta_y*jt2_11
-        jt2_149 = jt2_148*jt2_30
-        jt2_150 = jt2_149*phi_dot
-        jt2_151 = jt2_36*theta_dot
-        jt2_152 = jt2_147*jt2_57
-        jt2_153 = jt2_152*jt2_60
-        jt2_154 = jt2_131*phi_dot
-        jt2_155 = jt2_1*jt2_143
-        jt2_156 = jt2_117*jt2_145
-        jt2_157 = jt2_154*jt2_45
-        jt2_158 = jt2_143*jt2_91
-        jt2_159 = jt2_148*phi_dot
-        jt2_160 = jt2_125*jt2_159
-        jt2_161 = delta_z*phi_dot
-        jt2_162 = jt2_161*jt2_53
-        jt2_163 = jt2_143*jt2_162
-        jt2_164 = jt2_152*sin_theta
-        jt2_165 = jt2_11*jt2_45
-        jt2_166 = jt2_165*theta_dot
-        jt2_167 = jt2_35*jt2_78
-        jt2_168 = jt2_45*jt2_68
-        jt2_169 = 2*jt2_168
-        jt2_170 = jt2_1*theta_dot
-        jt2_171 = delta_y*jt2_170
-        jt2_172 = delta_y*jt2_139
-        jt2_173 = jt2_157*jt2_64
-        jt2_174 = jt2_164*jt2_64
-        jt2_175 = jt2_35*jt2_9
-        jt2_176 = cos_theta*phi_dot
-        jt2_177 = jt2_143*jt2_176
-        jt2_178 = jt2_45*sin_theta
-        jt2_179 = jt2_117*jt2_65
-        jt2_180 = E2*jt2_66
-        jt2_181 = jt2_117*jt2_180
-        jt2_182 = jt2_117*jt2_72
-        jt2_183 = 2*jt2_60
-        jt2_184 = cos_phi*jt2_124
-        jt2_185 = jt2_129*jt2_184
-        jt2_186 = jt2_11*jt2_125
-        jt2_187 = jt2_186*phi_dot
-        jt2_188 = jt2_12*jt2_45
-        jt2_189 = 2*jt2_35
-        jt2_190 = 2*jt2_185
-        jt2_191 = jt2_190*sin_theta
-        jt2_192 = jt2_101*jt2_74
-        jt2_193 = jt2_165*sin_theta
-        jt2_194 = jt2_193*theta_dot
-        jt2_195 = cos_theta*jt2_9
-        jt2_196 = jt2_117*jt2_13 + jt2_117*jt2_69 + jt2_125*jt2_135 - jt2_175*jt2_187 + jt2_179 - jt2_181 + jt2_182 - jt2_183*jt2_185 + jt2_188*jt2_189 - jt2_191*jt2_64 + jt2_191 + jt2_192*sin_theta + jt2_194*jt2_195
-        jt2_197 = jt2_1*jt2_6
-        jt2_198 = -jt2_197 + jt2_2*jt2_5
-        jt2_199 = -jt2_14*jt2_6 + jt2_2*jt2_79
-        jt2_200 = jt2_199*jt2_85
-        jt2_201 = jt2_199*jt2_81
-        jt2_202 = jt2_201*jt2_23
-        jt2_203 = jt2_201*jt2_25
-        jt2_204 = jt2_30*jt2_64
-        jt2_205 = jt2_204*jt2_98
-        jt2_206 = jt2_17*jt2_199
-        jt2_207 = jt2_12*jt2_30
-        jt2_208 = jt2_207*sin_theta
-        jt2_209 = cos_theta*jt2_208
-        jt2_210 = jt2_201*phi_dot
-        jt2_211 = jt2_1*jt2_206
-        jt2_212 = jt2_210*jt2_45
-        jt2_213 = jt2_206*jt2_91
-        jt2_214 = jt2_162*jt2_206
-        jt2_215 = jt2_206*phi_dot
-        jt2_216 = jt2_215*jt2_57
-        jt2_217 = jt2_216*sin_theta
-        jt2_218 = jt2_5*jt2_65
-        jt2_219 = jt2_30*jt2_68
-        jt2_220 = jt2_5*jt2_72
-        jt2_221 = cos_theta*jt2_71
-        jt2_222 = jt2_221*jt2_45
-        jt2_223 = cos_theta*jt2_31
-        jt2_224 = jt2_223*phi_dot
-        jt2_225 = delta_z*jt2_224
-        jt2_226 = jt2_129*jt2_56
-        jt2_227 = cos_theta**3
-        jt2_228 = -E2*a*cos_phi*cos_theta*jt2_66 - 2*c2*cos_phi*cos_theta*delta_x*jt2_10*jt2_28*phi_dot*sin_phi*sin_theta - c2*cos_phi*delta_y*jt2_10*jt2_28*jt2_64*phi_dot*sin_phi - 2*c2*cos_theta*delta_y*jt2_10*jt2_28*jt2_29*sin_theta*theta_dot - c2*cos_theta*jt2_10*jt2_29*jt2_35*jt2_55*phi_dot*sin_phi - c2*jt2_10*jt2_227*jt2_29*jt2_55*phi_dot*sin_phi + cos_theta*jt2_226 + jt2_13*jt2_5 + jt2_159*jt2_35*jt2_45 + jt2_218 + jt2_219*jt2_64 + jt2_220 + jt2_222 + jt2_225 + jt2_5*jt2_69
-        jt2_229 = jt2_5*jt2_98
-        jt2_230 = -jt2_1*jt2_148 - jt2_145 - jt2_229 - jt2_33
-        jt2_231 = delta_z*jt2_11
-        jt2_232 = -jt2_1*jt2_231 - jt2_141 - jt2_193 - jt2_3*jt2_98
-        jt2_233 = jt2_139*jt2_145
-        jt2_234 = jt2_45*jt2_98
-        jt2_235 = jt2_148*jt2_45
-        jt2_236 = delta_z*jt2_32
-        jt2_237 = jt2_128*jt2_56
-        jt2_238 = jt2_237*sin_theta
-        jt2_239 = jt2_234*jt2_64
-        jt2_240 = jt2_237*jt2_60
-        jt2_241 = jt2_238*jt2_64
-        jt2_242 = -jt2_0*jt2_141 + jt2_117*jt2_137 + jt2_165*jt2_175 + jt2_233 - jt2_234 + jt2_235*jt2_49 - jt2_236 - jt2_238 + jt2_239 + jt2_240 + jt2_241
-        jt2_243 = a*c2*cos_phi*delta_x*delta_y*jt2_10*sin_theta + c2*delta_y*jt2_10*jt2_28*jt2_29*jt2_35 - jt2_137*jt2_5 - jt2_50*jt2_98
-        jt2_244 = delta_x_dot*jt2_148
-        jt2_245 = jt2_31*jt2_64
-        jt2_246 = jt2_245*theta_dot
-        jt2_247 = delta_x_dot*delta_y
-        jt2_248 = jt2_22*jt2_247
-        jt2_249 = delta_y*jt2_25
-        jt2_250 = jt2_18*jt2_249
-        jt2_251 = delta_y**2
-        jt2_252 = delta_y_dot*jt2_251
-        jt2_253 = jt2_18*jt2_252
-        jt2_254 = delta_y*jt2_27
-        jt2_255 = delta_x_dot*jt2_5
-        jt2_256 = jt2_25*jt2_5
-        jt2_257 = delta_y*jt2_52
-        jt2_258 = jt2_40*jt2_78
-        jt2_259 = delta_y*jt2_39
-        jt2_260 = cos_theta*jt2_47
-        jt2_261 = delta_x_dot*jt2_50
-        jt2_262 = jt2_176*jt2_18
-        jt2_263 = delta_z*jt2_30
-        jt2_264 = delta_y_dot*jt2_204
-        jt2_265 = jt2_204*theta_dot
-        jt2_266 = jt2_68*jt2_78
-        jt2_267 = jt2_17*jt2_252
-        jt2_268 = jt2_267*jt2_80
-        jt2_269 = jt2_247*jt2_82
-        jt2_270 = jt2_17*jt2_249
-        jt2_271 = jt2_270*jt2_80
-        jt2_272 = delta_y*jt2_93
-        jt2_273 = jt2_176*jt2_88
-        jt2_274 = delta_x_dot*jt2_98
-        jt2_275 = -a*c2*delta_x*jt2_10*phi_dot*sin_phi*sin_theta - c2*cos_phi*jt2_10*jt2_28*jt2_35*phi_dot*sin_phi + jt2_1*jt2_12 + jt2_229*theta_dot + jt2_274
-        jt2_276 = delta_y*jt2_71
-        jt2_277 = jt2_104*jt2_247
-        jt2_278 = jt2_103*jt2_270
-        jt2_279 = jt2_103*jt2_267
-        jt2_280 = delta_y*jt2_112
-        jt2_281 = jt2_109*jt2_176
-        jt2_282 = delta_y*jt2_119
-        jt2_283 = jt2_118*jt2_282
-        jt2_284 = jt2_122*jt2_267
-        jt2_285 = jt2_119*jt2_5
-        jt2_286 = cos_theta*jt2_130
-        jt2_287 = jt2_131*jt2_247
-        jt2_288 = jt2_122*jt2_270
-        jt2_289 = jt2_11*jt2_251
-        jt2_290 = jt2_289*phi_dot
-        jt2_291 = delta_z*jt2_148
-        jt2_292 = jt2_149*jt2_35
-        jt2_293 = jt2_117*jt2_289
-        jt2_294 = jt2_160*jt2_35
-        jt2_295 = jt2_170*jt2_251
-        jt2_296 = jt2_139*jt2_251
-        jt2_297 = delta_y*jt2_147
-        jt2_298 = jt2_297*jt2_45
-        jt2_299 = jt2_177*jt2_57
-        jt2_300 = jt2_188*jt2_49
-        jt2_301 = jt2_64*jt2_9
-        jt2_302 = delta_y*jt2_117
-        jt2_303 = delta_y*jt2_63
-        jt2_304 = jt2_143*jt2_303
-        jt2_305 = jt2_64*jt2_78
-        jt2_306 = jt2_305*jt2_45
-        jt2_307 = jt2_131*jt2_176
-        jt2_308 = jt2_139*jt2_65
-        jt2_309 = jt2_139*jt2_180
-        jt2_310 = jt2_139*jt2_72
-        jt2_311 = cos_theta*jt2_189
-        jt2_312 = cos_theta*jt2_78
-        jt2_313 = cos_theta*jt2_190 + cos_theta*jt2_192 + jt2_125*jt2_221 + jt2_139*jt2_266 + jt2_139*jt2_274 + jt2_169*jt2_64 - jt2_185*jt2_311 - jt2_187*jt2_305 - jt2_190*jt2_227 - jt2_194*jt2_312 + jt2_308 - jt2_309 + jt2_310
-        jt2_314 = jt2_198*jt2_282
-        jt2_315 = jt2_199*jt2_267
-        jt2_316 = jt2_201*jt2_247
-        jt2_317 = jt2_199*jt2_270
-        jt2_318 = jt2_149*theta_dot
-        jt2_319 = jt2_318*jt2_64
-        jt2_320 = jt2_292*theta_dot
-        jt2_321 = cos_theta*jt2_219
-        jt2_322 = jt2_321*sin_theta
-        jt2_323 = delta_y*jt2_215
-        jt2_324 = jt2_323*jt2_45
-        jt2_325 = jt2_176*jt2_206
-        jt2_326 = jt2_325*jt2_57
-        jt2_327 = jt2_206*jt2_303
-        jt2_328 = jt2_176*jt2_201
-        jt2_329 = jt2_1*jt2_65
-        jt2_330 = jt2_1*jt2_180
-        jt2_331 = jt2_1*jt2_72
-        jt2_332 = jt2_135*jt2_45
-        jt2_333 = delta_z*jt2_100
-        jt2_334 = jt2_226*sin_theta
-        jt2_335 = jt2_45*jt2_99
-        jt2_336 = jt2_1*jt2_266 + jt2_1*jt2_274 + jt2_207*jt2_35 - jt2_226*jt2_60 + jt2_329 - jt2_330 + jt2_331 + jt2_332 + jt2_333 - jt2_334*jt2_64 + jt2_334 - jt2_335*jt2_35 + jt2_335*jt2_64 + jt2_34*jt2_9 - jt2_49*jt2_74*jt2_78
-        jt2_337 = jt2_231*jt2_5
-        jt2_338 = cos_theta*jt2_165
-        jt2_339 = -jt2_148*jt2_3 - jt2_291 - jt2_337 - jt2_338
-        jt2_340 = delta_z*jt2_223
-        jt2_341 = cos_theta*jt2_237
-        jt2_342 = jt2_235*jt2_35
-        jt2_343 = jt2_227*jt2_237
-        jt2_344 = jt2_341*jt2_35
-        jt2_345 = -jt2_0*jt2_291 + jt2_139*jt2_289 + jt2_156 + jt2_165*jt2_305 + jt2_234*jt2_49 - jt2_235 - jt2_340 - jt2_341 + jt2_342 + jt2_343 + jt2_344
-        jt2_346 = a*c2*cos_phi*jt2_10*jt2_251*sin_theta + c2*cos_theta*delta_y*jt2_10*jt2_28*jt2_29*sin_theta - jt2_146 - jt2_205
-        jt2_347 = delta_z*jt2_12
-        jt2_348 = delta_x_dot*delta_z
-        jt2_349 = delta_z*jt2_23
-        jt2_350 = delta_z**2
-        jt2_351 = delta_z_dot*jt2_350
-        jt2_352 = jt2_18*jt2_351
-        jt2_353 = delta_x_dot*jt2_3
-        jt2_354 = jt2_23*jt2_3
-        jt2_355 = jt2_101*jt2_3
-        jt2_356 = delta_z_dot*jt2_355
-        jt2_357 = delta_z*jt2_40
-        jt2_358 = jt2_0*jt2_350
-        jt2_359 = delta_z*jt2_39
-        jt2_360 = delta_z_dot*jt2_125
-        jt2_361 = jt2_18*jt2_360
-        jt2_362 = delta_y_dot*jt2_18
-        jt2_363 = cos_theta*jt2_45
-        jt2_364 = delta_x_dot*jt2_45
-        jt2_365 = jt2_184*jt2_55
-        jt2_366 = jt2_365*jt2_52
-        jt2_367 = jt2_101*jt2_45
-        jt2_368 = jt2_363*theta_dot
-        jt2_369 = delta_z*jt2_68
-        jt2_370 = jt2_17*jt2_351
-        jt2_371 = jt2_370*jt2_80
-        jt2_372 = jt2_360*jt2_88
-        jt2_373 = delta_y_dot*jt2_363
-        jt2_374 = jt2_364*sin_theta
-        jt2_375 = jt2_365*jt2_93
-        jt2_376 = jt2_101*jt2_71
-        jt2_377 = jt2_103*jt2_370
-        jt2_378 = jt2_109*jt2_360
-        jt2_379 = jt2_112*jt2_365
-        jt2_380 = jt2_0*jt2_65
-        jt2_381 = jt2_0*jt2_274
-        jt2_382 = jt2_0*jt2_69
-        jt2_383 = jt2_0*jt2_376
-        jt2_384 = jt2_291*theta_dot
-        jt2_385 = jt2_45*jt2_71
-        jt2_386 = 2*jt2_385
-        jt2_387 = sin_phi**3
-        jt2_388 = jt2_101*phi_dot
-        jt2_389 = jt2_31*jt2_388
-        jt2_390 = 2*jt2_226
-        jt2_391 = jt2_98*theta_dot
-        jt2_392 = cos_theta*jt2_391
-        jt2_393 = jt2_30*jt2_392
-        jt2_394 = jt2_125*sin_theta
-        jt2_395 = jt2_148*theta_dot
-        jt2_396 = jt2_129*jt2_387
-        jt2_397 = jt2_396*jt2_64
-        jt2_398 = jt2_35*jt2_396
-        jt2_399 = delta_z*jt2_187
-        jt2_400 = jt2_122*jt2_370
-        jt2_401 = jt2_143*jt2_360
-        jt2_402 = jt2_147*jt2_365
-        jt2_403 = jt2_388*jt2_45
-        jt2_404 = jt2_141*phi_dot
-        jt2_405 = jt2_235*theta_dot
-        jt2_406 = jt2_234*theta_dot
-        jt2_407 = delta_z*jt2_119
-        jt2_408 = jt2_198*jt2_407
-        jt2_409 = jt2_199*jt2_370
-        jt2_410 = jt2_161*jt2_206
-        jt2_411 = jt2_206*jt2_360
-        jt2_412 = jt2_215*jt2_365
-        jt2_413 = cos_theta*jt2_125
-        jt2_414 = jt2_323*jt2_413
-        jt2_415 = jt2_45*jt2_64
-        jt2_416 = jt2_35*jt2_45
-        jt2_417 = jt2_412*jt2_64
-        jt2_418 = jt2_11*jt2_350
-        jt2_419 = jt2_128*jt2_184
-        jt2_420 = jt2_148*jt2_413
-        jt2_421 = jt2_231*jt2_45
-        jt2_422 = jt2_419*jt2_64
-        jt2_423 = jt2_35*jt2_419
-        jt2_424 = -jt2_0*jt2_418 - jt2_101*jt2_165 + jt2_117*jt2_141 + jt2_139*jt2_291 + jt2_35*jt2_421 + jt2_394*jt2_98 - jt2_419 + jt2_420 + jt2_421*jt2_64 + jt2_422 + jt2_423
-        jt2_425 = a*c2*cos_phi*delta_y*delta_z*jt2_10*sin_theta + c2*cos_phi*delta_y*jt2_10*jt2_28*sin_phi*sin_theta - cos_theta*jt2_234 - jt2_141*jt2_5
-        jt2_426 = jt2_119*jt2_45
-        jt2_427 = jt2_2*jt2_426
-        jt2_428 = jt2_2*jt2_282
-        jt2_429 = delta_z_dot*jt2_365
-        jt2_430 = jt2_18*jt2_429
-        jt2_431 = jt2_30*jt2_350
-        jt2_432 = a**4
-        jt2_433 = jt2_124*jt2_29
-        jt2_434 = jt2_432*jt2_433
-        jt2_435 = jt2_434*jt2_52
-        jt2_436 = cos_theta*delta_y
-        jt2_437 = jt2_360*sin_theta
-        jt2_438 = delta_x_dot*jt2_57
-        jt2_439 = jt2_438*jt2_60
-        jt2_440 = jt2_362*jt2_57
-        jt2_441 = delta_x_dot*jt2_42
-        jt2_442 = jt2_18*jt2_23
-        jt2_443 = jt2_22*jt2_364
-        jt2_444 = jt2_442*jt2_45
-        jt2_445 = cos_theta*jt2_30
-        jt2_446 = delta_z*jt2_445
-        jt2_447 = cos_theta*jt2_440
-        jt2_448 = jt2_348*jt2_53
-        jt2_449 = jt2_438*jt2_48
-        jt2_450 = jt2_125*jt2_64
-        jt2_451 = jt2_251*jt2_450
-        jt2_452 = jt2_125*jt2_35
-        jt2_453 = jt2_19*jt2_452
-        jt2_454 = cos_theta**4
-        jt2_455 = sin_theta**4
-        jt2_456 = jt2_101*jt2_47
-        jt2_457 = jt2_187*sin_theta
-        jt2_458 = jt2_101*jt2_58
-        jt2_459 = 2*jt2_64
-        jt2_460 = jt2_189*jt2_435
-        jt2_461 = jt2_18*jt2_25
-        jt2_462 = jt2_227*jt2_57
-        jt2_463 = jt2_22*theta_dot
-        jt2_464 = delta_y*jt2_18*theta_dot
-        jt2_465 = jt2_464*jt2_57
-        jt2_466 = jt2_465*sin_theta
-        jt2_467 = cos_theta*jt2_57
-        jt2_468 = jt2_463*jt2_467
-        jt2_469 = jt2_60*jt2_9
-        jt2_470 = jt2_227*jt2_78
-        jt2_471 = jt2_365*jt2_78
-        jt2_472 = jt2_175*jt2_364
-        jt2_473 = jt2_9*sin_theta
-        jt2_474 = jt2_45*jt2_49
-        jt2_475 = delta_y_dot*jt2_474
-        jt2_476 = jt2_18*jt2_474
-        jt2_477 = jt2_476*theta_dot
-        jt2_478 = delta_y*jt2_463
-        jt2_479 = jt2_167*jt2_365
-        jt2_480 = delta_z*jt2_78
-        jt2_481 = jt2_45*jt2_480
-        jt2_482 = jt2_178*jt2_9
-        jt2_483 = jt2_426*jt2_6
-        jt2_484 = jt2_120*jt2_6
-        jt2_485 = jt2_429*jt2_88
-        jt2_486 = jt2_434*jt2_93
-        jt2_487 = delta_y_dot*jt2_88
-        jt2_488 = jt2_23*jt2_88
-        jt2_489 = jt2_364*jt2_82
-        jt2_490 = jt2_45*jt2_488
-        jt2_491 = jt2_467*jt2_487
-        jt2_492 = jt2_438*sin_theta
-        jt2_493 = jt2_492*jt2_88
-        jt2_494 = jt2_457*jt2_9
-        jt2_495 = jt2_101*jt2_95
-        jt2_496 = jt2_189*jt2_486
-        jt2_497 = jt2_25*jt2_88
-        jt2_498 = jt2_82*theta_dot
-        jt2_499 = delta_y*theta_dot
-        jt2_500 = jt2_499*jt2_88
-        jt2_501 = jt2_500*jt2_57
-        jt2_502 = jt2_501*sin_theta
-        jt2_503 = jt2_467*jt2_498
-        jt2_504 = jt2_474*jt2_88
-        jt2_505 = jt2_504*theta_dot
-        jt2_506 = delta_y*jt2_498
-        jt2_507 = jt2_4*jt2_426
-        jt2_508 = jt2_282*jt2_4
-        jt2_509 = jt2_109*jt2_23
-        jt2_510 = jt2_104*jt2_364
-        jt2_511 = jt2_45*jt2_509
-        jt2_512 = jt2_109*jt2_429
-        jt2_513 = jt2_109*jt2_474
-        jt2_514 = delta_y_dot*jt2_109
-        jt2_515 = jt2_467*jt2_514
-        jt2_516 = jt2_109*jt2_492
-        jt2_517 = jt2_101*jt2_113
-        jt2_518 = jt2_109*jt2_25
-        jt2_519 = jt2_109*jt2_499
-        jt2_520 = jt2_519*jt2_57
-        jt2_521 = jt2_520*sin_theta
-        jt2_522 = jt2_112*jt2_434
-        jt2_523 = jt2_104*theta_dot
-        jt2_524 = jt2_467*jt2_523
-        jt2_525 = jt2_513*theta_dot
-        jt2_526 = jt2_104*jt2_499
-        jt2_527 = jt2_189*jt2_522
-        jt2_528 = jt2_180*jt2_30
-        jt2_529 = jt2_125*jt2_65
-        jt2_530 = jt2_30*jt2_65
-        jt2_531 = jt2_125*jt2_180
-        jt2_532 = delta_z*jt2_3
-        jt2_533 = jt2_55*jt2_71
-        jt2_534 = jt2_387*jt2_533
-        jt2_535 = jt2_118*jt2_426
-        jt2_536 = jt2_125*jt2_274
-        jt2_537 = jt2_127*jt2_55
-        jt2_538 = jt2_12*jt2_537
-        jt2_539 = jt2_125*jt2_69
-        jt2_540 = jt2_537*jt2_68
-        jt2_541 = cos_theta*jt2_540
-        jt2_542 = jt2_274*jt2_30
-        jt2_543 = jt2_538*sin_theta
-        jt2_544 = jt2_30*jt2_69
-        jt2_545 = jt2_101*jt2_130
-        jt2_546 = 2*jt2_533*jt2_56
-        jt2_547 = jt2_11*jt2_432
-        jt2_548 = jt2_547*phi_dot
-        jt2_549 = 2*jt2_548
-        jt2_550 = jt2_127*sin_phi
-        jt2_551 = jt2_549*jt2_550
-        jt2_552 = cos_phi*jt2_387
-        jt2_553 = jt2_549*jt2_552
-        jt2_554 = jt2_204*jt2_274
-        jt2_555 = jt2_227*jt2_537
-        jt2_556 = jt2_35*jt2_544
-        jt2_557 = jt2_395*jt2_537
-        jt2_558 = jt2_557*sin_theta
-        jt2_559 = jt2_143*jt2_429
-        jt2_560 = jt2_392*jt2_537
-        jt2_561 = jt2_147*jt2_434
-        jt2_562 = 4*jt2_548
-        jt2_563 = jt2_552*jt2_562
-        jt2_564 = jt2_563*jt2_64
-        jt2_565 = jt2_12*jt2_365
-        jt2_566 = jt2_365*jt2_68
-        jt2_567 = 2*jt2_566
-        jt2_568 = jt2_396*jt2_78
-        jt2_569 = jt2_396*jt2_9
-        jt2_570 = 2*sin_theta
-        jt2_571 = jt2_565*jt2_570
-        jt2_572 = 2*jt2_45
-        jt2_573 = 4*delta_z*jt2_185
-        jt2_574 = jt2_550*jt2_562
-        jt2_575 = jt2_574*jt2_64
-        jt2_576 = jt2_137*jt2_63
-        jt2_577 = jt2_413*sin_theta
-        jt2_578 = jt2_289*theta_dot
-        jt2_579 = jt2_145*theta_dot
-        jt2_580 = delta_y_dot*jt2_143
-        jt2_581 = jt2_143*jt2_23
-        jt2_582 = jt2_131*jt2_364
-        jt2_583 = jt2_45*jt2_581
-        jt2_584 = jt2_467*jt2_580
-        jt2_585 = jt2_289*jt2_63
-        jt2_586 = jt2_137*theta_dot
-        jt2_587 = jt2_143*jt2_492
-        jt2_588 = jt2_57*jt2_99
-        jt2_589 = jt2_588*jt2_60
-        jt2_590 = jt2_159*jt2_462
-        jt2_591 = jt2_419*jt2_9
-        jt2_592 = jt2_591*theta_dot
-        jt2_593 = jt2_419*jt2_78
-        jt2_594 = jt2_593*theta_dot
-        jt2_595 = jt2_572*jt2_64
-        jt2_596 = jt2_189*jt2_45
-        jt2_597 = jt2_143*jt2_57
-        jt2_598 = jt2_388*jt2_597
-        jt2_599 = jt2_189*jt2_561
-        jt2_600 = jt2_159*jt2_467
-        jt2_601 = 4*jt2_600
-        jt2_602 = jt2_588*sin_theta
-        jt2_603 = 4*jt2_602
-        jt2_604 = jt2_143*jt2_25
-        jt2_605 = jt2_131*theta_dot
-        jt2_606 = jt2_499*jt2_54
-        jt2_607 = jt2_499*jt2_597
-        jt2_608 = jt2_607*sin_theta
-        jt2_609 = jt2_467*jt2_605
-        jt2_610 = jt2_195*theta_dot
-        jt2_611 = jt2_78*sin_theta*theta_dot
-        jt2_612 = jt2_143*jt2_474
-        jt2_613 = jt2_612*theta_dot
-        jt2_614 = jt2_131*jt2_499
-        jt2_615 = delta_x*jt2_69
-        jt2_616 = delta_x*jt2_329 - delta_x*jt2_330 + delta_x*jt2_331 + delta_x_dot*jt2_146 - delta_y*jt2_180*jt2_5 + delta_y*jt2_218 + delta_y*jt2_220 + jt2_1*jt2_615 + jt2_137*jt2_61 - 4*jt2_145*jt2_176*jt2_178 + jt2_289*jt2_40
-        jt2_617 = jt2_198*jt2_426
-        jt2_618 = jt2_12*jt2_57
-        jt2_619 = jt2_57*jt2_68
-        jt2_620 = jt2_619*sin_theta
-        jt2_621 = jt2_120*jt2_198
-        jt2_622 = jt2_206*jt2_429
-        jt2_623 = cos_theta*jt2_618
-        jt2_624 = jt2_215*jt2_434
-        jt2_625 = jt2_395*jt2_467
-        jt2_626 = jt2_391*jt2_57
-        jt2_627 = jt2_626*sin_theta
-        jt2_628 = delta_y_dot*jt2_206
-        jt2_629 = jt2_206*jt2_23
-        jt2_630 = jt2_201*jt2_364
-        jt2_631 = jt2_467*jt2_628
-        jt2_632 = jt2_206*jt2_492
-        jt2_633 = jt2_413*jt2_570
-        jt2_634 = jt2_206*jt2_57
-        jt2_635 = jt2_388*jt2_634
-        jt2_636 = jt2_189*jt2_624
-        jt2_637 = jt2_206*jt2_25
-        jt2_638 = jt2_201*theta_dot
-        jt2_639 = jt2_499*jt2_634
-        jt2_640 = jt2_639*sin_theta
-        jt2_641 = jt2_467*jt2_638
-        jt2_642 = jt2_206*jt2_474
-        jt2_643 = jt2_642*theta_dot
-        jt2_644 = jt2_201*jt2_499
-        jt2_645 = jt2_185*jt2_9
-        jt2_646 = jt2_185*jt2_78
-        jt2_647 = -cos_theta*jt2_175*jt2_185 + cos_theta*jt2_645 + delta_x*jt2_308 - delta_x*jt2_309 + delta_x*jt2_310 + delta_x_dot*jt2_140 - delta_x_dot*jt2_156 - delta_y*jt2_179 + delta_y*jt2_181 - delta_y*jt2_182 - delta_y_dot*jt2_293 + delta_z*jt2_195*jt2_74 + jt2_13*jt2_474 + jt2_139*jt2_615 + jt2_185*jt2_305*sin_theta - jt2_227*jt2_645 - jt2_266*jt2_474 - jt2_276*jt2_394 + jt2_413*jt2_97 - 4*jt2_474*jt2_579 - jt2_480*jt2_74*sin_theta + jt2_60*jt2_646 - jt2_646*sin_theta
-        jt2_648 = jt2_433*jt2_547
-        jt2_649 = jt2_148*jt2_57
-        jt2_650 = jt2_649*sin_theta
-        jt2_651 = jt2_57*jt2_98
-        jt2_652 = cos_theta*jt2_651
-        jt2_653 = jt2_137*jt2_474 - jt2_141*jt2_445 + jt2_145*jt2_415 - jt2_145*jt2_416 + jt2_227*jt2_651 - jt2_289*jt2_474 + jt2_291*jt2_53 + jt2_35*jt2_652 - jt2_60*jt2_649 - jt2_64*jt2_650 + jt2_650 - jt2_652
-        jt2_654 = jt2_19*jt2_265
-        jt2_655 = jt2_151*jt2_251
-        jt2_656 = jt2_176*jt2_22
-        jt2_657 = delta_y*jt2_35
-        jt2_658 = jt2_247*jt2_36
-        jt2_659 = jt2_176*jt2_82
-        jt2_660 = jt2_57*jt2_659
-        jt2_661 = jt2_178*jt2_273
-        jt2_662 = jt2_104*jt2_176
-        jt2_663 = jt2_159*jt2_537
-        jt2_664 = jt2_663*sin_theta
-        jt2_665 = cos_theta*jt2_537*jt2_99
-        jt2_666 = jt2_176*jt2_53
-        jt2_667 = jt2_145*phi_dot
-        jt2_668 = jt2_307*jt2_57
-        jt2_669 = jt2_177*jt2_178
-        jt2_670 = jt2_328*jt2_57
-        jt2_671 = jt2_178*jt2_325
-        dQ0_0 += E2*a*cos_phi*jt2_2*jt2_8*sin_theta + E2*delta_x*jt2_2*jt2_8 + a*c2*cos_phi*delta_x*delta_y*jt2_15*jt2_16*sin_theta*theta_dot + a*c2*cos_theta*delta_x*delta_y*jt2_15*jt2_16*phi_dot*sin_phi + 2*a*c2*delta_x*jt2_10*phi_dot*sin_phi*sin_theta + a*c2*jt2_15*jt2_16*jt2_19*phi_dot*sin_phi*sin_theta + c2*cos_phi*cos_theta*delta_y*jt2_15*jt2_16*jt2_28*phi_dot*sin_phi*sin_theta + 2*c2*cos_phi*delta_x*jt2_15*jt2_16*jt2_28*jt2_35*phi_dot*sin_phi + c2*cos_phi*delta_x*jt2_15*jt2_16*jt2_28*jt2_64*phi_dot*sin_phi + 2*c2*cos_phi*jt2_10*jt2_28*jt2_35*phi_dot*sin_phi + c2*delta_y*jt2_15*jt2_16*jt2_28*jt2_29*jt2_35*theta_dot + c2*jt2_15*jt2_16*jt2_29*jt2_55*jt2_60*phi_dot*sin_phi + c2*jt2_15*jt2_16*jt2_29*jt2_55*jt2_64*phi_dot*sin_phi*sin_theta - jt2_12*jt2_14 - jt2_13 - jt2_18*jt2_37 - jt2_18*jt2_41 - jt2_18*jt2_51 - jt2_18*jt2_62 - jt2_21 - jt2_22*jt2_27 - jt2_22*jt2_40 - jt2_22*jt2_63 - jt2_23*jt2_44 - jt2_24 - jt2_25*jt2_44 - jt2_26 - jt2_34 - jt2_38*jt2_39 - jt2_42*jt2_43 - jt2_46 - jt2_47*jt2_48 - jt2_52*jt2_54 - jt2_59 - jt2_70 - jt2_75
-        dQ0_1 += E2*a*cos_phi*jt2_6*jt2_8*sin_theta + E2*delta_x*jt2_6*jt2_8 + a*c2*cos_phi*delta_x*delta_y*jt2_16*jt2_80*sin_theta*theta_dot + a*c2*cos_phi*delta_x*jt2_10*sin_theta*theta_dot + a*c2*cos_theta*delta_x*delta_y*jt2_16*jt2_80*phi_dot*sin_phi + a*c2*cos_theta*delta_x*jt2_10*phi_dot*sin_phi + a*c2*jt2_16*jt2_19*jt2_80*phi_dot*sin_phi*sin_theta + c2*cos_phi*cos_theta*delta_y*jt2_16*jt2_28*jt2_80*phi_dot*sin_phi*sin_theta + 2*c2*cos_phi*delta_x*jt2_16*jt2_28*jt2_35*jt2_80*phi_dot*sin_phi + c2*cos_phi*delta_x*jt2_16*jt2_28*jt2_64*jt2_80*phi_dot*sin_phi + c2*delta_y*jt2_16*jt2_28*jt2_29*jt2_35*jt2_80*theta_dot + c2*jt2_10*jt2_28*jt2_29*jt2_35*theta_dot + c2*jt2_16*jt2_29*jt2_55*jt2_60*jt2_80*phi_dot*sin_phi + c2*jt2_16*jt2_29*jt2_55*jt2_64*jt2_80*phi_dot*sin_phi*sin_theta - jt2_1*jt2_68 - jt2_23*jt2_89 - jt2_25*jt2_89 - jt2_27*jt2_82 - jt2_37*jt2_88 - jt2_40*jt2_82 - jt2_41*jt2_88 - jt2_42*jt2_87 - jt2_51*jt2_88 - jt2_62*jt2_88 - jt2_63*jt2_82 - jt2_76 - jt2_77 - jt2_83 - jt2_84 - jt2_86 - jt2_90 - jt2_92 - jt2_94 - jt2_96
-        dQ0_2 += E2*a*cos_phi*jt2_4*jt2_8*sin_theta + E2*delta_x*jt2_4*jt2_8 + a*c2*cos_phi*delta_x*delta_y*jt2_103*jt2_16*sin_theta*theta_dot + a*c2*cos_theta*delta_x*delta_y*jt2_103*jt2_16*phi_dot*sin_phi + a*c2*jt2_103*jt2_16*jt2_19*phi_dot*sin_phi*sin_theta + c2*cos_phi*cos_theta*delta_y*jt2_103*jt2_16*jt2_28*phi_dot*sin_phi*sin_theta + 2*c2*cos_phi*delta_x*jt2_103*jt2_16*jt2_28*jt2_35*phi_dot*sin_phi + c2*cos_phi*delta_x*jt2_103*jt2_16*jt2_28*jt2_64*phi_dot*sin_phi + c2*delta_y*jt2_103*jt2_16*jt2_28*jt2_29*jt2_35*theta_dot + c2*jt2_103*jt2_16*jt2_29*jt2_55*jt2_60*phi_dot*sin_phi + c2*jt2_103*jt2_16*jt2_29*jt2_55*jt2_64*phi_dot*sin_phi*sin_theta - jt2_0*jt2_99 - jt2_1*jt2_71 - jt2_100 - jt2_104*jt2_27 - jt2_104*jt2_40 - jt2_104*jt2_63 - jt2_105 - jt2_106 - jt2_107 - jt2_108*jt2_42 - jt2_109*jt2_37 - jt2_109*jt2_41 - jt2_109*jt2_51 - jt2_109*jt2_62 - jt2_109*jt2_91 - jt2_110*jt2_23 - jt2_110*jt2_25 - jt2_111 - jt2_112*jt2_54 - jt2_114 - jt2_97
-        dQ0_3 += delta_y*jt2_143*jt2_151 + delta_y*jt2_177*jt2_178 - jt2_0*jt2_97 + jt2_1*jt2_118*jt2_119 + jt2_1*jt2_138 + jt2_117*jt2_147*jt2_19 + jt2_121 - jt2_123 - jt2_126*jt2_64 + jt2_126 + jt2_130*jt2_60 + jt2_131*jt2_171 - jt2_131*jt2_27 - jt2_131*jt2_40 - jt2_131*jt2_63 - jt2_132 - jt2_133 + jt2_134*jt2_64 - jt2_134 - jt2_135*jt2_30 + jt2_136*jt2_64 - jt2_136 + jt2_139*jt2_76 + jt2_140*theta_dot + jt2_141*jt2_142 - jt2_143*jt2_37 - jt2_143*jt2_41 - jt2_143*jt2_51 - jt2_143*jt2_62 + jt2_144*jt2_9*phi_dot + jt2_146*phi_dot + jt2_147*jt2_175*jt2_45 + jt2_150*jt2_49 + jt2_153 + jt2_154*jt2_172 - jt2_154*jt2_42 - jt2_155*jt2_23 - jt2_155*jt2_25 - jt2_156*theta_dot - jt2_157 - jt2_158 - jt2_160*jt2_49 - jt2_163 - jt2_164 - jt2_166*jt2_167 + jt2_169*jt2_49 + jt2_173 + jt2_174 + jt2_196
-        dQ0_4 += E2*a*cos_phi*jt2_198*jt2_8*sin_theta + E2*delta_x*jt2_198*jt2_8 + a*c2*cos_phi*cos_theta*delta_x*delta_y*jt2_10*theta_dot + a*c2*cos_phi*delta_x*delta_y*jt2_16*jt2_199*sin_theta*theta_dot + a*c2*cos_phi*delta_x*delta_y_dot*jt2_10*sin_theta + a*c2*cos_phi*jt2_10*jt2_19*sin_theta*theta_dot + a*c2*cos_theta*delta_x*delta_y*jt2_16*jt2_199*phi_dot*sin_phi + a*c2*cos_theta*jt2_10*jt2_19*phi_dot*sin_phi + a*c2*jt2_16*jt2_19*jt2_199*phi_dot*sin_phi*sin_theta + c2*cos_phi*cos_theta*delta_y*jt2_16*jt2_199*jt2_28*phi_dot*sin_phi*sin_theta + 2*c2*cos_phi*delta_x*jt2_16*jt2_199*jt2_28*jt2_35*phi_dot*sin_phi + c2*cos_phi*delta_x*jt2_16*jt2_199*jt2_28*jt2_64*phi_dot*sin_phi + c2*delta_x*jt2_10*jt2_28*jt2_29*jt2_35*theta_dot + c2*delta_y*jt2_16*jt2_199*jt2_28*jt2_29*jt2_35*theta_dot + c2*delta_y_dot*jt2_10*jt2_28*jt2_29*jt2_35 + c2*jt2_16*jt2_199*jt2_29*jt2_55*jt2_60*phi_dot*sin_phi + c2*jt2_16*jt2_199*jt2_29*jt2_55*jt2_64*phi_dot*sin_phi*sin_theta - jt2_156*phi_dot - jt2_200 - jt2_201*jt2_27 - jt2_201*jt2_40 - jt2_201*jt2_63 - jt2_202 - jt2_203 - jt2_205*theta_dot - jt2_206*jt2_37 - jt2_206*jt2_41 - jt2_206*jt2_51 - jt2_206*jt2_62 - 2*jt2_209 - jt2_210*jt2_42 - jt2_211*jt2_23 - jt2_211*jt2_25 - jt2_212 - jt2_213 - jt2_214 - jt2_217 - jt2_228
-        dQ0_5 += 0
-        dQ0_6 += 0
-        dQ0_7 += 0
-        dQ0_8 += -jt2_1*jt2_38 - jt2_137 - jt2_144
-        dQ0_9 += jt2_230
-        dQ0_10 += jt2_232
-        dQ0_11 += jt2_242
-        dQ0_12 += jt2_243
-        dQ0_13 += 0
-        dQ0_14 += 0
-        dQ0_15 += 0
-        dQ1_0 += E2*a*cos_phi*cos_theta*jt2_2*jt2_8 + E2*delta_y*jt2_2*jt2_8 + a*c2*cos_phi*jt2_15*jt2_16*jt2_251*sin_theta*theta_dot + a*c2*cos_theta*jt2_15*jt2_16*jt2_251*phi_dot*sin_phi + a*c2*delta_x*delta_y*jt2_15*jt2_16*phi_dot*sin_phi*sin_theta + a*c2*delta_y*jt2_10*phi_dot*sin_phi*sin_theta + c2*cos_phi*cos_theta*delta_x*jt2_15*jt2_16*jt2_28*phi_dot*sin_phi*sin_theta + c2*cos_phi*delta_y*jt2_15*jt2_16*jt2_28*jt2_35*phi_dot*sin_phi + 2*c2*cos_phi*delta_y*jt2_15*jt2_16*jt2_28*jt2_64*phi_dot*sin_phi + c2*cos_theta*delta_y*jt2_15*jt2_16*jt2_28*jt2_29*sin_theta*theta_dot + c2*cos_theta*jt2_15*jt2_16*jt2_29*jt2_35*jt2_55*phi_dot*sin_phi + c2*jt2_15*jt2_16*jt2_227*jt2_29*jt2_55*phi_dot*sin_phi - jt2_12*jt2_5 - jt2_148*jt2_39 - jt2_18*jt2_254 - jt2_18*jt2_256 - jt2_18*jt2_258 - jt2_18*jt2_260 - jt2_18*jt2_261 - jt2_18*jt2_264 - jt2_22*jt2_255 - jt2_22*jt2_259 - jt2_22*jt2_265 - jt2_244 - jt2_246 - jt2_247*jt2_44 - jt2_248 - jt2_250 - jt2_253 - jt2_257*jt2_42 - jt2_257*jt2_45 - jt2_262*jt2_263 - jt2_262*jt2_57 - jt2_77
-        dQ1_1 += E2*a*cos_phi*cos_theta*jt2_6*jt2_8 + E2*delta_y*jt2_6*jt2_8 + 2*a*c2*cos_phi*delta_y*jt2_10*sin_theta*theta_dot + a*c2*cos_phi*jt2_16*jt2_251*jt2_80*sin_theta*theta_dot + 2*a*c2*cos_theta*delta_y*jt2_10*phi_dot*sin_phi + a*c2*cos_theta*jt2_16*jt2_251*jt2_80*phi_dot*sin_phi + a*c2*delta_x*delta_y*jt2_16*jt2_80*phi_dot*sin_phi*sin_theta + c2*cos_phi*cos_theta*delta_x*jt2_16*jt2_28*jt2_80*phi_dot*sin_phi*sin_theta + c2*cos_phi*delta_y*jt2_16*jt2_28*jt2_35*jt2_80*phi_dot*sin_phi + 2*c2*cos_phi*delta_y*jt2_16*jt2_28*jt2_64*jt2_80*phi_dot*sin_phi + 2*c2*cos_phi*jt2_10*jt2_28*jt2_64*phi_dot*sin_phi + c2*cos_theta*delta_y*jt2_16*jt2_28*jt2_29*jt2_80*sin_theta*theta_dot + c2*cos_theta*jt2_16*jt2_29*jt2_35*jt2_55*jt2_80*phi_dot*sin_phi + c2*jt2_16*jt2_227*jt2_29*jt2_55*jt2_80*phi_dot*sin_phi - jt2_247*jt2_89 - jt2_254*jt2_88 - jt2_255*jt2_82 - jt2_256*jt2_88 - jt2_258*jt2_88 - jt2_259*jt2_82 - jt2_260*jt2_88 - jt2_261*jt2_88 - jt2_263*jt2_273 - jt2_264*jt2_88 - jt2_265*jt2_82 - jt2_266 - jt2_268 - jt2_269 - jt2_271 - jt2_272*jt2_42 - jt2_272*jt2_45 - jt2_273*jt2_57 - jt2_275 + jt2_34 - jt2_65 - jt2_67 - jt2_68*jt2_79 - jt2_75
-        dQ1_2 += E2*a*cos_phi*cos_theta*jt2_4*jt2_8 + E2*delta_y*jt2_4*jt2_8 + a*c2*cos_phi*jt2_103*jt2_16*jt2_251*sin_theta*theta_dot + a*c2*cos_theta*jt2_103*jt2_16*jt2_251*phi_dot*sin_phi + a*c2*delta_x*delta_y*jt2_103*jt2_16*phi_dot*sin_phi*sin_theta + c2*cos_phi*cos_theta*delta_x*jt2_103*jt2_16*jt2_28*phi_dot*sin_phi*sin_theta + c2*cos_phi*delta_y*jt2_103*jt2_16*jt2_28*jt2_35*phi_dot*sin_phi + 2*c2*cos_phi*delta_y*jt2_103*jt2_16*jt2_28*jt2_64*phi_dot*sin_phi + c2*cos_theta*delta_y*jt2_103*jt2_16*jt2_28*jt2_29*sin_theta*theta_dot + c2*cos_theta*jt2_103*jt2_16*jt2_29*jt2_35*jt2_55*phi_dot*sin_phi + c2*jt2_103*jt2_16*jt2_227*jt2_29*jt2_55*phi_dot*sin_phi - jt2_0*jt2_159 - jt2_104*jt2_255 - jt2_104*jt2_259 - jt2_104*jt2_265 - jt2_109*jt2_254 - jt2_109*jt2_256 - jt2_109*jt2_258 - jt2_109*jt2_260 - jt2_109*jt2_261 - jt2_109*jt2_264 - jt2_110*jt2_247 - jt2_224 - jt2_263*jt2_281 - jt2_276 - jt2_277 - jt2_278 - jt2_279 - jt2_280*jt2_42 - jt2_280*jt2_45 - jt2_281*jt2_57 - jt2_5*jt2_71
-        dQ1_3 += -jt2_0*jt2_276 + jt2_1*jt2_145*phi_dot + jt2_117*jt2_244 + jt2_118*jt2_285 - jt2_126*jt2_49 + jt2_130*jt2_227 - jt2_131*jt2_255 - jt2_131*jt2_259 - jt2_131*jt2_265 + jt2_134*jt2_49 + jt2_142*jt2_291 - jt2_143*jt2_254 - jt2_143*jt2_256 - jt2_143*jt2_258 - jt2_143*jt2_260 - jt2_143*jt2_261 - jt2_143*jt2_264 + jt2_143*jt2_295 + jt2_147*jt2_296 + jt2_147*jt2_306 - jt2_150 + jt2_152*jt2_227 + jt2_154*jt2_302 - jt2_155*jt2_247 + jt2_160 + jt2_166*jt2_301 - jt2_177*jt2_263 + jt2_178*jt2_307 - jt2_221*jt2_30 + jt2_233*theta_dot + jt2_245*jt2_78*phi_dot + jt2_283 - jt2_284 + jt2_286*jt2_35 - jt2_286 - jt2_287 - jt2_288 + jt2_290*jt2_5 + jt2_292*phi_dot - jt2_293*theta_dot - jt2_294 - jt2_297*jt2_42 + jt2_298*jt2_35 - jt2_298 + jt2_299*jt2_35 - jt2_299 + 2*jt2_300 + jt2_304 + jt2_313
-        dQ1_4 += -jt2_117*jt2_290 + jt2_145*jt2_170 + jt2_178*jt2_328 + jt2_198*jt2_285 - jt2_201*jt2_255 - jt2_201*jt2_259 - jt2_201*jt2_265 - jt2_206*jt2_254 - jt2_206*jt2_256 - jt2_206*jt2_258 - jt2_206*jt2_260 - jt2_206*jt2_261 - jt2_206*jt2_264 + jt2_206*jt2_295 - jt2_207*jt2_64 + jt2_210*jt2_302 - jt2_211*jt2_247 + jt2_215*jt2_296 + jt2_215*jt2_306 + jt2_216*jt2_227 + jt2_233*phi_dot - jt2_244*jt2_5 - jt2_263*jt2_325 + jt2_289*jt2_39 + jt2_314 - jt2_315 - jt2_316 - jt2_317 + jt2_319 - jt2_320 + 2*jt2_322 - jt2_323*jt2_42 + jt2_324*jt2_35 - jt2_324 + jt2_326*jt2_35 - jt2_326 + jt2_327 + jt2_336
-        dQ1_5 += 0
-        dQ1_6 += 0
-        dQ1_7 += 0
-        dQ1_8 += jt2_230
-        dQ1_9 += -jt2_11*jt2_5*jt2_78 - jt2_245 - jt2_289
-        dQ1_10 += jt2_339
-        dQ1_11 += jt2_345
-        dQ1_12 += jt2_346
-        dQ1_13 += 0
-        dQ1_14 += 0
-        dQ1_15 += 0
-        dQ2_0 += E2*a*jt2_2*jt2_8*sin_phi + E2*delta_z*jt2_2*jt2_8 + a*c2*cos_phi*delta_y*delta_z*jt2_15*jt2_16*sin_theta*theta_dot + a*c2*cos_theta*delta_y*delta_z*jt2_15*jt2_16*phi_dot*sin_phi + a*c2*delta_x*delta_z*jt2_15*jt2_16*phi_dot*sin_phi*sin_theta + a*c2*delta_z*jt2_10*phi_dot*sin_phi*sin_theta + c2*cos_phi*delta_y*jt2_15*jt2_16*jt2_28*sin_phi*sin_theta*theta_dot + c2*cos_phi*delta_z*jt2_15*jt2_16*jt2_28*jt2_35*phi_dot*sin_phi + c2*cos_phi*delta_z*jt2_15*jt2_16*jt2_28*jt2_64*phi_dot*sin_phi + c2*cos_phi*jt2_124*jt2_15*jt2_16*jt2_35*jt2_55*phi_dot + c2*cos_phi*jt2_124*jt2_15*jt2_16*jt2_55*jt2_64*phi_dot + c2*cos_theta*delta_y*jt2_124*jt2_15*jt2_16*jt2_28*phi_dot + c2*delta_x*jt2_124*jt2_15*jt2_16*jt2_28*phi_dot*sin_theta + c2*jt2_10*jt2_124*jt2_28*phi_dot*sin_theta - jt2_12*jt2_3 - jt2_18*jt2_349 - jt2_18*jt2_354 - jt2_18*jt2_356 - jt2_18*jt2_357 - jt2_22*jt2_348 - jt2_22*jt2_353 - jt2_22*jt2_359 - jt2_22*jt2_368 - jt2_337*theta_dot - jt2_338*theta_dot - jt2_347 - jt2_348*jt2_44 - jt2_352 - jt2_358*jt2_52 - jt2_361 - jt2_362*jt2_363 - jt2_364*jt2_48 - jt2_366 - jt2_367*jt2_52
-        dQ2_1 += E2*a*jt2_6*jt2_8*sin_phi + E2*delta_z*jt2_6*jt2_8 + a*c2*cos_phi*delta_y*delta_z*jt2_16*jt2_80*sin_theta*theta_dot + a*c2*cos_phi*delta_z*jt2_10*sin_theta*theta_dot + a*c2*cos_theta*delta_y*delta_z*jt2_16*jt2_80*phi_dot*sin_phi + a*c2*cos_theta*delta_z*jt2_10*phi_dot*sin_phi + a*c2*delta_x*delta_z*jt2_16*jt2_80*phi_dot*sin_phi*sin_theta + c2*cos_phi*delta_y*jt2_16*jt2_28*jt2_80*sin_phi*sin_theta*theta_dot + c2*cos_phi*delta_z*jt2_16*jt2_28*jt2_35*jt2_80*phi_dot*sin_phi + c2*cos_phi*delta_z*jt2_16*jt2_28*jt2_64*jt2_80*phi_dot*sin_phi + c2*cos_phi*jt2_10*jt2_28*sin_phi*sin_theta*theta_dot + c2*cos_phi*jt2_124*jt2_16*jt2_35*jt2_55*jt2_80*phi_dot + c2*cos_phi*jt2_124*jt2_16*jt2_55*jt2_64*jt2_80*phi_dot + c2*cos_theta*delta_y*jt2_124*jt2_16*jt2_28*jt2_80*phi_dot + c2*cos_theta*jt2_10*jt2_124*jt2_28*phi_dot + c2*delta_x*jt2_124*jt2_16*jt2_28*jt2_80*phi_dot*sin_theta - jt2_3*jt2_68 - jt2_348*jt2_82 - jt2_348*jt2_89 - jt2_349*jt2_88 - jt2_353*jt2_82 - jt2_354*jt2_88 - jt2_356*jt2_88 - jt2_357*jt2_88 - jt2_358*jt2_93 - jt2_359*jt2_82 - jt2_367*jt2_93 - jt2_368*jt2_82 - jt2_369 - jt2_371 - jt2_372 - jt2_373*jt2_88 - jt2_374*jt2_88 - jt2_375
-        dQ2_2 += E2*a*jt2_4*jt2_8*sin_phi + E2*delta_z*jt2_4*jt2_8 + a*c2*cos_phi*delta_y*delta_z*jt2_103*jt2_16*sin_theta*theta_dot + a*c2*cos_theta*delta_y*delta_z*jt2_103*jt2_16*phi_dot*sin_phi + a*c2*delta_x*delta_z*jt2_103*jt2_16*phi_dot*sin_phi*sin_theta + c2*cos_phi*delta_y*jt2_103*jt2_16*jt2_28*sin_phi*sin_theta*theta_dot + c2*cos_phi*delta_z*jt2_103*jt2_16*jt2_28*jt2_35*phi_dot*sin_phi + c2*cos_phi*delta_z*jt2_103*jt2_16*jt2_28*jt2_64*phi_dot*sin_phi + c2*cos_phi*jt2_103*jt2_124*jt2_16*jt2_35*jt2_55*phi_dot + c2*cos_phi*jt2_103*jt2_124*jt2_16*jt2_55*jt2_64*phi_dot + c2*cos_theta*delta_y*jt2_103*jt2_124*jt2_16*jt2_28*phi_dot + c2*delta_x*jt2_103*jt2_124*jt2_16*jt2_28*phi_dot*sin_theta - jt2_0*jt2_101*jt2_73 - jt2_102*jt2_71 - jt2_104*jt2_348 - jt2_104*jt2_353 - jt2_104*jt2_359 - jt2_104*jt2_368 - jt2_109*jt2_349 - jt2_109*jt2_354 - jt2_109*jt2_356 - jt2_109*jt2_357 - jt2_109*jt2_373 - jt2_109*jt2_374 - jt2_110*jt2_348 - jt2_112*jt2_358 - jt2_112*jt2_367 - jt2_275 - jt2_376 - jt2_377 - jt2_378 - jt2_379 - jt2_70 - 2*jt2_74
-        dQ2_3 += E2*a*cos_phi*jt2_66 + E2*a*jt2_118*jt2_8*sin_phi + E2*delta_z*jt2_118*jt2_8 + a*c2*cos_phi*cos_theta*delta_y*delta_z*jt2_10*phi_dot + a*c2*cos_phi*delta_x*delta_z*jt2_10*phi_dot*sin_theta + a*c2*cos_phi*delta_y*delta_z*jt2_122*jt2_16*sin_theta*theta_dot + a*c2*cos_theta*delta_x*delta_z*jt2_10*sin_phi*theta_dot + a*c2*cos_theta*delta_y*delta_z*jt2_122*jt2_16*phi_dot*sin_phi + a*c2*cos_theta*delta_y_dot*delta_z*jt2_10*sin_phi + a*c2*delta_x*delta_z*jt2_122*jt2_16*phi_dot*sin_phi*sin_theta + a*c2*delta_x_dot*delta_z*jt2_10*sin_phi*sin_theta + a*c2*jt2_10*jt2_350*phi_dot*sin_phi + 2*c2*cos_phi*cos_theta*delta_y*jt2_10*jt2_28*phi_dot*sin_phi + 2*c2*cos_phi*delta_x*jt2_10*jt2_28*phi_dot*sin_phi*sin_theta + c2*cos_phi*delta_y*jt2_122*jt2_16*jt2_28*sin_phi*sin_theta*theta_dot + c2*cos_phi*delta_z*jt2_122*jt2_16*jt2_28*jt2_35*phi_dot*sin_phi + c2*cos_phi*delta_z*jt2_122*jt2_16*jt2_28*jt2_64*phi_dot*sin_phi + c2*cos_phi*jt2_122*jt2_124*jt2_16*jt2_35*jt2_55*phi_dot + c2*cos_phi*jt2_122*jt2_124*jt2_16*jt2_55*jt2_64*phi_dot + c2*cos_theta*delta_x*jt2_10*jt2_124*jt2_28*theta_dot + c2*cos_theta*delta_y*jt2_122*jt2_124*jt2_16*jt2_28*phi_dot + c2*cos_theta*delta_y_dot*jt2_10*jt2_124*jt2_28 + c2*delta_x*jt2_122*jt2_124*jt2_16*jt2_28*phi_dot*sin_theta + c2*delta_x_dot*jt2_10*jt2_124*jt2_28*sin_theta + c2*delta_y*jt2_10*jt2_28*jt2_29*sin_theta*theta_dot + 2*c2*delta_z*jt2_10*jt2_124*jt2_28*phi_dot + c2*delta_z*jt2_10*jt2_28*jt2_29*jt2_35*phi_dot + c2*delta_z*jt2_10*jt2_28*jt2_29*jt2_64*phi_dot + 2*c2*jt2_10*jt2_29*jt2_35*jt2_55*phi_dot*sin_phi + 2*c2*jt2_10*jt2_29*jt2_55*jt2_64*phi_dot*sin_phi + c2*jt2_10*jt2_387*jt2_55*phi_dot - jt2_117*jt2_384 - jt2_131*jt2_348 - jt2_131*jt2_353 - jt2_131*jt2_359 - jt2_131*jt2_368 - jt2_143*jt2_349 - jt2_143*jt2_354 - jt2_143*jt2_356 - jt2_143*jt2_357 - jt2_143*jt2_373 - jt2_143*jt2_374 - jt2_143*jt2_403 - jt2_147*jt2_358 - jt2_155*jt2_348 - jt2_208 - jt2_321 - jt2_35*jt2_399 - jt2_380 - jt2_381 - jt2_382 - jt2_383 - jt2_386 - jt2_389 - jt2_390 - jt2_393 - jt2_394*jt2_395 - jt2_397 - jt2_398 - jt2_399*jt2_64 - jt2_400 - jt2_401 - jt2_402
-        dQ2_4 += cos_theta*jt2_126 - cos_theta*jt2_188 + cos_theta*jt2_405 + delta_y*jt2_178*jt2_206*theta_dot + delta_z*jt2_171*jt2_206 + jt2_1*jt2_369 + jt2_117*jt2_161*jt2_201 - jt2_117*jt2_291*phi_dot + jt2_119*jt2_198*jt2_3 + jt2_139*jt2_404 + jt2_141*jt2_170 - jt2_160*sin_theta + jt2_168*sin_theta + jt2_172*jt2_410 - jt2_201*jt2_348 - jt2_201*jt2_353 - jt2_201*jt2_359 - jt2_201*jt2_368 - jt2_206*jt2_349 - jt2_206*jt2_354 - jt2_206*jt2_356 - jt2_206*jt2_357 - jt2_206*jt2_373 - jt2_206*jt2_374 - jt2_206*jt2_403 + jt2_210*jt2_394 - jt2_211*jt2_348 - jt2_215*jt2_358 + jt2_291*jt2_39 - jt2_347*jt2_5 + jt2_35*jt2_412 + jt2_406*sin_theta + jt2_408 - jt2_409 + jt2_410*jt2_415 + jt2_410*jt2_416 - jt2_411 - jt2_412 + jt2_414 + jt2_417
-        dQ2_5 += 0
-        dQ2_6 += 0
-        dQ2_7 += 0
-        dQ2_8 += jt2_232
-        dQ2_9 += jt2_339
-        dQ2_10 += -jt2_11*jt2_355 - jt2_186 - jt2_418
-        dQ2_11 += jt2_424
-        dQ2_12 += jt2_425
-        dQ2_13 += 0
-        dQ2_14 += 0
-        dQ2_15 += 0
-        dQ3_0 += delta_z*jt2_482*jt2_52 + jt2_0*jt2_2*jt2_407 - jt2_0*jt2_347 - jt2_0*jt2_352 - jt2_117*jt2_120*jt2_2 + jt2_117*jt2_21 + jt2_117*jt2_24 + jt2_117*jt2_26 + jt2_139*jt2_244 + jt2_139*jt2_248 + jt2_139*jt2_250 + jt2_139*jt2_253 - jt2_139*jt2_428 + jt2_168*jt2_49 + jt2_18*jt2_439 - jt2_18*jt2_448 - jt2_18*jt2_456 + jt2_18*jt2_472 + jt2_188*jt2_64 - jt2_188 + jt2_19*jt2_477 + jt2_196 + jt2_22*jt2_437 - jt2_22*jt2_441 + jt2_22*jt2_475 + jt2_227*jt2_440 + jt2_247*jt2_476 - jt2_251*jt2_477 - jt2_257*jt2_413*jt2_473 + jt2_262*jt2_471 - jt2_262*jt2_479 + jt2_262*jt2_481 + jt2_306*jt2_362 - jt2_312*jt2_457 - jt2_340*theta_dot - jt2_341*theta_dot - jt2_342*theta_dot + jt2_343*theta_dot + jt2_344*theta_dot - jt2_35*jt2_427 + jt2_35*jt2_430 + jt2_35*jt2_444 + jt2_35*jt2_447 + jt2_35*jt2_458 + jt2_35*jt2_468 + jt2_361*jt2_436 - jt2_362*jt2_446 - jt2_366*jt2_469 - jt2_366*jt2_470 - jt2_366*jt2_473*jt2_64 + jt2_366*jt2_473 + jt2_405*jt2_64 + jt2_415*jt2_461 + jt2_415*jt2_478 + jt2_416*jt2_461 - jt2_416*jt2_478 - jt2_42*jt2_442 - jt2_427*jt2_64 + jt2_427 + jt2_430*jt2_64 - jt2_430 - jt2_431*jt2_52 - jt2_435*jt2_454 - jt2_435*jt2_455 + jt2_435*jt2_459 - jt2_435 + jt2_443*jt2_64 - jt2_443 - jt2_444 - jt2_446*jt2_463 - jt2_447 + jt2_449*jt2_64 - jt2_449 - jt2_451*jt2_52 - jt2_453*jt2_52 + jt2_458*jt2_64 - jt2_458 - jt2_460*jt2_64 + jt2_460 + jt2_462*jt2_463 + jt2_464*jt2_54 - jt2_465*jt2_60 - jt2_466*jt2_64 + jt2_466 - jt2_468
-        dQ3_1 += -cos_theta*jt2_494 + delta_z*jt2_482*jt2_93 - jt2_0*jt2_369 - jt2_0*jt2_371 + jt2_0*jt2_407*jt2_6 - jt2_116*jt2_282 - jt2_117*jt2_484 + jt2_117*jt2_76 + jt2_117*jt2_83 + jt2_117*jt2_84 + jt2_117*jt2_86 + jt2_139*jt2_268 + jt2_139*jt2_269 + jt2_139*jt2_271 + jt2_168*jt2_35 - jt2_168 + jt2_19*jt2_505 + jt2_236*theta_dot + jt2_238*theta_dot + jt2_239*theta_dot - jt2_240*theta_dot - jt2_241*theta_dot + jt2_247*jt2_504 - jt2_251*jt2_505 - jt2_272*jt2_413*jt2_473 + jt2_273*jt2_471 - jt2_273*jt2_479 + jt2_273*jt2_481 + jt2_300 + jt2_306*jt2_487 + jt2_313 - jt2_35*jt2_406 - jt2_35*jt2_483 + jt2_35*jt2_485 + jt2_35*jt2_490 + jt2_35*jt2_491 + jt2_35*jt2_495 + jt2_35*jt2_503 + jt2_372*jt2_436 - jt2_375*jt2_469 - jt2_375*jt2_470 - jt2_375*jt2_473*jt2_64 + jt2_375*jt2_473 + jt2_415*jt2_497 + jt2_415*jt2_506 + jt2_416*jt2_497 - jt2_416*jt2_506 - jt2_42*jt2_488 - jt2_431*jt2_93 + jt2_437*jt2_82 + jt2_439*jt2_88 - jt2_441*jt2_82 - jt2_446*jt2_487 - jt2_446*jt2_498 - jt2_448*jt2_88 - jt2_451*jt2_93 - jt2_453*jt2_93 - jt2_454*jt2_486 - jt2_455*jt2_486 - jt2_456*jt2_88 + jt2_459*jt2_486 + jt2_462*jt2_487 + jt2_462*jt2_498 + jt2_472*jt2_88 + jt2_475*jt2_82 - jt2_483*jt2_64 + jt2_483 + jt2_485*jt2_64 - jt2_485 - jt2_486 + jt2_489*jt2_64 - jt2_489 - jt2_490 - jt2_491 + jt2_493*jt2_64 - jt2_493 + jt2_495*jt2_64 - jt2_495 - jt2_496*jt2_64 + jt2_496 + jt2_500*jt2_54 - jt2_501*jt2_60 - jt2_502*jt2_64 + jt2_502 - jt2_503
-        dQ3_2 += delta_z*jt2_112*jt2_482 + jt2_0*jt2_180 - jt2_0*jt2_377 + jt2_0*jt2_4*jt2_407 + jt2_104*jt2_437 - jt2_104*jt2_441 + jt2_104*jt2_475 + jt2_105*jt2_117 + jt2_106*jt2_117 + jt2_107*jt2_117 + jt2_109*jt2_439 - jt2_109*jt2_448 - jt2_109*jt2_456 + jt2_109*jt2_472 - jt2_112*jt2_431 - jt2_112*jt2_451 - jt2_112*jt2_453 - jt2_117*jt2_120*jt2_4 + jt2_117*jt2_97 + jt2_139*jt2_276 + jt2_139*jt2_277 + jt2_139*jt2_278 + jt2_139*jt2_279 - jt2_139*jt2_508 + jt2_19*jt2_525 - jt2_208 + jt2_247*jt2_513 - jt2_251*jt2_525 - jt2_280*jt2_413*jt2_473 + jt2_281*jt2_471 - jt2_281*jt2_479 + jt2_281*jt2_481 + jt2_306*jt2_514 + jt2_312*jt2_74 + jt2_318*sin_theta - jt2_321 + jt2_35*jt2_385 + jt2_35*jt2_390 - jt2_35*jt2_507 + jt2_35*jt2_511 + jt2_35*jt2_512 + jt2_35*jt2_515 + jt2_35*jt2_517 + jt2_35*jt2_524 + jt2_378*jt2_436 - jt2_379*jt2_469 - jt2_379*jt2_470 - jt2_379*jt2_473*jt2_64 + jt2_379*jt2_473 - jt2_380 - jt2_381 - jt2_382 - jt2_383 + jt2_385*jt2_64 - jt2_386 - jt2_389 + jt2_390*jt2_64 - jt2_390 - jt2_393 + jt2_415*jt2_518 + jt2_415*jt2_526 + jt2_416*jt2_518 - jt2_416*jt2_526 - jt2_42*jt2_509 - jt2_446*jt2_514 - jt2_446*jt2_523 - jt2_454*jt2_522 - jt2_455*jt2_522 + jt2_459*jt2_522 + jt2_462*jt2_514 + jt2_462*jt2_523 + jt2_473*jt2_74 - jt2_507*jt2_64 + jt2_507 + jt2_510*jt2_64 - jt2_510 - jt2_511 + jt2_512*jt2_64 - jt2_512 - jt2_515 + jt2_516*jt2_64 - jt2_516 + jt2_517*jt2_64 - jt2_517 + jt2_519*jt2_54 - jt2_520*jt2_60 - jt2_521*jt2_64 + jt2_521 - jt2_522 - jt2_524 - jt2_527*jt2_64 + jt2_527
-        dQ3_3 += cos_theta*jt2_101*jt2_168 - cos_theta*jt2_187*jt2_480 + cos_theta*jt2_567 - cos_theta*jt2_568 + cos_theta*jt2_592 - delta_z*jt2_494 + delta_z_dot*jt2_3*jt2_418 + jt2_0*jt2_118*jt2_407 - jt2_0*jt2_400 + jt2_101*jt2_188*sin_theta - jt2_117*jt2_121 + jt2_117*jt2_123 + jt2_117*jt2_132 + jt2_117*jt2_133 + jt2_125*jt2_376 + jt2_13*jt2_36 - jt2_13*jt2_452 + jt2_131*jt2_437 - jt2_131*jt2_441 + jt2_131*jt2_475 - jt2_138*jt2_596 - jt2_139*jt2_283 + jt2_139*jt2_284 + jt2_139*jt2_287 + jt2_139*jt2_288 + jt2_141*jt2_353 + jt2_143*jt2_161*jt2_482 + jt2_143*jt2_439 - jt2_143*jt2_448 - jt2_143*jt2_456 + jt2_143*jt2_472 + jt2_143*jt2_606 - jt2_145*jt2_151 + jt2_145*jt2_265 - jt2_147*jt2_431 - jt2_147*jt2_451 - jt2_147*jt2_453 + jt2_177*jt2_471 - jt2_177*jt2_479 + jt2_177*jt2_481 - jt2_180*jt2_532 - jt2_183*jt2_565 + jt2_19*jt2_613 + jt2_204*jt2_266 + jt2_204*jt2_72 + jt2_222*jt2_78 + jt2_225*jt2_78 + jt2_227*jt2_540 - jt2_227*jt2_567 + jt2_227*jt2_568 - jt2_227*jt2_592 + jt2_244*jt2_50 - jt2_244*jt2_577 + jt2_247*jt2_612 - jt2_251*jt2_613 - jt2_266*jt2_450 - jt2_290*jt2_595 - jt2_297*jt2_413*jt2_473 - jt2_30*jt2_376 + jt2_306*jt2_580 - jt2_311*jt2_566 + jt2_312*jt2_398 + jt2_332*jt2_9 + jt2_333*jt2_9 - jt2_35*jt2_528 - jt2_35*jt2_529 + jt2_35*jt2_530 + jt2_35*jt2_531 - jt2_35*jt2_534 - jt2_35*jt2_535 - jt2_35*jt2_539 + jt2_35*jt2_541 + jt2_35*jt2_545 + jt2_35*jt2_546 + jt2_35*jt2_559 + jt2_35*jt2_560 - jt2_35*jt2_563 + jt2_35*jt2_564 - jt2_35*jt2_573 + jt2_35*jt2_574 - jt2_35*jt2_575 + jt2_35*jt2_583 + jt2_35*jt2_584 + jt2_35*jt2_598 - jt2_35*jt2_601 + jt2_35*jt2_609 + jt2_36*jt2_72 + jt2_391*jt2_555 + jt2_397*jt2_473 + jt2_401*jt2_436 - jt2_402*jt2_469 - jt2_402*jt2_470 - jt2_402*jt2_473*jt2_64 + jt2_402*jt2_473 + jt2_415*jt2_604 + jt2_415*jt2_614 + jt2_416*jt2_604 - jt2_416*jt2_614 + jt2_418*jt2_572*phi_dot - jt2_42*jt2_581 + jt2_421*jt2_610 - jt2_421*jt2_611 + jt2_422*jt2_611 - jt2_423*jt2_610 - jt2_446*jt2_580 - jt2_446*jt2_605 - jt2_450*jt2_579 - jt2_450*jt2_72 + jt2_452*jt2_579 - jt2_452*jt2_72 - jt2_454*jt2_551 + jt2_454*jt2_553 - jt2_454*jt2_561 - jt2_455*jt2_551 + jt2_455*jt2_553 - jt2_455*jt2_561 + jt2_459*jt2_561 + jt2_462*jt2_580 + jt2_462*jt2_605 + jt2_50*jt2_76 - jt2_528*jt2_64 + jt2_528 - jt2_529*jt2_64 + jt2_529 + jt2_530*jt2_64 - jt2_530 + jt2_531*jt2_64 - jt2_531 + jt2_532*jt2_65 + jt2_532*jt2_69 - jt2_534*jt2_64 + jt2_534 - jt2_535*jt2_64 + jt2_535 - jt2_536*jt2_64 + jt2_536 + jt2_538*jt2_60 + jt2_539 - jt2_541 - jt2_542 + jt2_543*jt2_64 - jt2_543 - jt2_544 + jt2_545*jt2_64 - jt2_545 + jt2_546*jt2_64 - jt2_546 - jt2_551 + jt2_553 + jt2_554 + jt2_556 - jt2_557*jt2_60 - jt2_558*jt2_64 + jt2_558 + jt2_559*jt2_64 - jt2_559 - jt2_560 - jt2_561 - jt2_564 + jt2_569*jt2_60 - jt2_569*sin_theta - jt2_571*jt2_64 + jt2_571 - jt2_573*jt2_64 + jt2_573 + jt2_575 + jt2_576 + jt2_577*jt2_578 - jt2_577*jt2_586 - jt2_577*jt2_76 + jt2_582*jt2_64 - jt2_582 - jt2_583 - jt2_584 - jt2_585 + jt2_587*jt2_64 - jt2_587 - 4*jt2_589 - 4*jt2_590 + jt2_594*jt2_60 - jt2_594*sin_theta + jt2_598*jt2_64 - jt2_598 - jt2_599*jt2_64 + jt2_599 - jt2_60*jt2_607 + jt2_601 - jt2_603*jt2_64 + jt2_603 - jt2_608*jt2_64 + jt2_608 - jt2_609 + jt2_616
-        dQ3_4 += jt2_0*jt2_408 - jt2_0*jt2_409 + jt2_117*jt2_200 + jt2_117*jt2_202 + jt2_117*jt2_203 - jt2_117*jt2_621 - jt2_138*jt2_633 - jt2_139*jt2_314 + jt2_139*jt2_315 + jt2_139*jt2_316 + jt2_139*jt2_317 + jt2_141*jt2_53*theta_dot - jt2_160*jt2_301 + jt2_19*jt2_643 + jt2_201*jt2_437 - jt2_201*jt2_441 + jt2_201*jt2_475 + jt2_206*jt2_439 - jt2_206*jt2_448 - jt2_206*jt2_456 + jt2_206*jt2_472 + jt2_206*jt2_606 - jt2_215*jt2_431 - jt2_215*jt2_451 - jt2_215*jt2_453 + jt2_227*jt2_618 + jt2_244*jt2_415 - jt2_244*jt2_416 + jt2_247*jt2_642 - jt2_251*jt2_643 + jt2_290*jt2_633 + jt2_294*jt2_9 + jt2_306*jt2_628 + jt2_325*jt2_471 - jt2_325*jt2_479 + jt2_325*jt2_481 - jt2_347*jt2_445 - jt2_35*jt2_617 + jt2_35*jt2_622 + jt2_35*jt2_623 - jt2_35*jt2_625 + jt2_35*jt2_631 + jt2_35*jt2_635 + jt2_35*jt2_641 + jt2_369*jt2_53 + jt2_384*jt2_445 - jt2_395*jt2_462 + jt2_410*jt2_482 + jt2_411*jt2_436 - jt2_412*jt2_469 - jt2_412*jt2_470 + jt2_412*jt2_473 - jt2_414*jt2_473 - jt2_415*jt2_578 + jt2_415*jt2_586 + jt2_415*jt2_637 + jt2_415*jt2_644 + jt2_415*jt2_76 + jt2_416*jt2_578 - jt2_416*jt2_586 + jt2_416*jt2_629 + jt2_416*jt2_637 - jt2_416*jt2_644 - jt2_416*jt2_76 - jt2_417*jt2_473 - jt2_42*jt2_629 - jt2_446*jt2_628 - jt2_446*jt2_638 - jt2_45*jt2_629 - jt2_454*jt2_624 - jt2_455*jt2_624 + jt2_459*jt2_624 + jt2_462*jt2_628 + jt2_462*jt2_638 - jt2_60*jt2_619 - jt2_60*jt2_626 - jt2_60*jt2_639 - jt2_617*jt2_64 + jt2_617 - jt2_620*jt2_64 + jt2_620 + jt2_622*jt2_64 - jt2_622 - jt2_623 - jt2_624 + jt2_625 - jt2_627*jt2_64 + jt2_627 + jt2_630*jt2_64 - jt2_630 - jt2_631 + jt2_632*jt2_64 - jt2_632 + jt2_635*jt2_64 - jt2_635 - jt2_636*jt2_64 + jt2_636 - jt2_64*jt2_640 + jt2_640 - jt2_641 + jt2_647
-        dQ3_5 += 0
-        dQ3_6 += 0
-        dQ3_7 += 0
-        dQ3_8 += jt2_242
-        dQ3_9 += jt2_345
-        dQ3_10 += jt2_424
-        dQ3_11 += 2*c2*cos_phi*cos_theta*delta_y*delta_z*jt2_10*jt2_28*sin_phi + 2*c2*cos_phi*cos_theta*delta_y*jt2_10*jt2_124*jt2_55 + 2*c2*cos_phi*delta_x*delta_z*jt2_10*jt2_28*sin_phi*sin_theta + 2*c2*cos_phi*delta_x*jt2_10*jt2_124*jt2_55*sin_theta + 2*c2*delta_z*jt2_10*jt2_29*jt2_35*jt2_55*sin_phi + 2*c2*delta_z*jt2_10*jt2_29*jt2_55*jt2_64*sin_phi + 2*c2*jt2_10*jt2_124*jt2_29*jt2_35*jt2_432 + 2*c2*jt2_10*jt2_124*jt2_29*jt2_432*jt2_64 - jt2_101*jt2_237 - jt2_137*jt2_452 - jt2_227*jt2_593 - jt2_289*jt2_450 - jt2_30*jt2_418 - jt2_312*jt2_423 - 2*jt2_35*jt2_64*jt2_648 - jt2_420*jt2_473 - jt2_422*jt2_473 - jt2_454*jt2_648 - jt2_455*jt2_648 - jt2_591*jt2_60 - jt2_648
-        dQ3_12 += jt2_653
-        dQ3_13 += 0
-        dQ3_14 += 0
-        dQ3_15 += 0
-        dQ4_0 += E2*a*cos_phi*cos_theta*delta_x*jt2_2*jt2_8 + a*c2*cos_phi*delta_x*delta_x_dot*delta_y*jt2_15*jt2_16*sin_theta + a*c2*cos_phi*delta_x_dot*delta_y*jt2_10*sin_theta + a*c2*cos_phi*delta_y*delta_z*delta_z_dot*jt2_15*jt2_16*sin_theta + a*c2*cos_phi*delta_y_dot*jt2_15*jt2_16*jt2_251*sin_theta + c2*cos_phi*cos_theta*jt2_15*jt2_16*jt2_19*jt2_28*phi_dot*sin_phi*sin_theta + c2*cos_phi*delta_x*delta_y*jt2_15*jt2_16*jt2_28*jt2_64*phi_dot*sin_phi + c2*cos_phi*delta_y*delta_z_dot*jt2_15*jt2_16*jt2_28*sin_phi*sin_theta + 2*c2*cos_theta*delta_x*delta_y*jt2_15*jt2_16*jt2_28*jt2_29*sin_theta*theta_dot + c2*cos_theta*delta_x*jt2_15*jt2_16*jt2_29*jt2_35*jt2_55*phi_dot*sin_phi + c2*cos_theta*delta_y*delta_y_dot*jt2_15*jt2_16*jt2_28*jt2_29*sin_theta + c2*delta_x*jt2_15*jt2_16*jt2_227*jt2_29*jt2_55*phi_dot*sin_phi + c2*delta_x_dot*delta_y*jt2_15*jt2_16*jt2_28*jt2_29*jt2_35 + c2*delta_y*delta_z*jt2_15*jt2_16*jt2_28*jt2_29*phi_dot*sin_theta + c2*delta_y*jt2_15*jt2_16*jt2_29*jt2_55*phi_dot*sin_phi*sin_theta - delta_y*jt2_58*jt2_60 - delta_y*jt2_59*jt2_64 - jt2_1*jt2_428 - jt2_176*jt2_251*jt2_45*jt2_48 - jt2_18*jt2_654 - jt2_18*jt2_655 - jt2_209 - jt2_21*jt2_5 - jt2_22*jt2_260 - jt2_22*jt2_261 - jt2_22*jt2_264 - jt2_228 - jt2_24*jt2_5 - jt2_246*jt2_9 - jt2_26*jt2_5 - jt2_263*jt2_656 - jt2_46*jt2_657 - jt2_57*jt2_656
-        dQ4_1 += -delta_y*jt2_60*jt2_95 + delta_y*jt2_64*jt2_90 - delta_y*jt2_64*jt2_96 + delta_y*jt2_92 + delta_y*jt2_94 + delta_y*jt2_96 + jt2_1*jt2_268 + jt2_1*jt2_269 + jt2_1*jt2_271 - jt2_144*jt2_78*theta_dot + jt2_19*jt2_661 - jt2_197*jt2_282 - jt2_251*jt2_661 - jt2_260*jt2_82 - jt2_261*jt2_82 - jt2_263*jt2_659 - jt2_264*jt2_82 + jt2_303*jt2_88*jt2_9 + jt2_322 + jt2_336 + jt2_35*jt2_660 + jt2_462*jt2_87 + jt2_484*jt2_5 + jt2_488*jt2_50 - jt2_5*jt2_76 - jt2_5*jt2_83 - jt2_5*jt2_84 - jt2_5*jt2_86 - jt2_654*jt2_88 - jt2_655*jt2_88 - jt2_657*jt2_90 + jt2_658*jt2_88 - jt2_660
-        dQ4_2 += E2*a*cos_phi*cos_theta*delta_x*jt2_4*jt2_8 + a*c2*cos_phi*delta_x*delta_x_dot*delta_y*jt2_103*jt2_16*sin_theta + a*c2*cos_phi*delta_y*delta_z*delta_z_dot*jt2_103*jt2_16*sin_theta + a*c2*cos_phi*delta_y*delta_z_dot*jt2_10*sin_theta + a*c2*cos_phi*delta_y_dot*jt2_103*jt2_16*jt2_251*sin_theta + c2*cos_phi*cos_theta*jt2_103*jt2_16*jt2_19*jt2_28*phi_dot*sin_phi*sin_theta + c2*cos_phi*delta_x*delta_y*jt2_103*jt2_16*jt2_28*jt2_64*phi_dot*sin_phi + c2*cos_phi*delta_y*delta_z_dot*jt2_103*jt2_16*jt2_28*sin_phi*sin_theta + 2*c2*cos_theta*delta_x*delta_y*jt2_103*jt2_16*jt2_28*jt2_29*sin_theta*theta_dot + c2*cos_theta*delta_x*jt2_103*jt2_16*jt2_29*jt2_35*jt2_55*phi_dot*sin_phi + c2*cos_theta*delta_y*delta_y_dot*jt2_103*jt2_16*jt2_28*jt2_29*sin_theta + c2*delta_x*jt2_103*jt2_16*jt2_227*jt2_29*jt2_55*phi_dot*sin_phi + c2*delta_x_dot*delta_y*jt2_103*jt2_16*jt2_28*jt2_29*jt2_35 + c2*delta_y*delta_z*jt2_103*jt2_16*jt2_28*jt2_29*phi_dot*sin_theta + c2*delta_y*jt2_10*jt2_28*jt2_29*phi_dot*sin_theta + c2*delta_y*jt2_103*jt2_16*jt2_29*jt2_55*phi_dot*sin_phi*sin_theta - cos_theta*jt2_134 - delta_y*jt2_113*jt2_60 - delta_y*jt2_114*jt2_64 - jt2_1*jt2_508 - jt2_104*jt2_260 - jt2_104*jt2_261 - jt2_104*jt2_264 - jt2_105*jt2_5 - jt2_106*jt2_5 - jt2_107*jt2_5 - jt2_109*jt2_654 - jt2_109*jt2_655 - jt2_111*jt2_657 - jt2_178*jt2_251*jt2_281 - jt2_263*jt2_662 - jt2_5*jt2_97 - jt2_57*jt2_662
-        dQ4_3 += -delta_y*jt2_153 + delta_y*jt2_158 + delta_y*jt2_163 + delta_y*jt2_164 + delta_y*jt2_173 - delta_y*jt2_174 - jt2_1*jt2_283 + jt2_1*jt2_284 + jt2_1*jt2_287 + jt2_1*jt2_288 + jt2_121*jt2_5 - jt2_123*jt2_5 - jt2_131*jt2_260 - jt2_131*jt2_261 - jt2_131*jt2_264 - jt2_132*jt2_5 - jt2_133*jt2_5 + jt2_137*jt2_666 - jt2_138*jt2_577 - jt2_143*jt2_654 - jt2_143*jt2_655 + jt2_143*jt2_658 + jt2_154*jt2_462 - jt2_157*jt2_657 - jt2_167*jt2_188 + jt2_168*jt2_301 + jt2_19*jt2_669 + jt2_204*jt2_667 - jt2_251*jt2_669 - jt2_263*jt2_307 + jt2_276*jt2_53 - jt2_289*jt2_666 + jt2_290*jt2_577 + jt2_304*jt2_9 + jt2_35*jt2_665 + jt2_35*jt2_668 - jt2_36*jt2_667 - jt2_445*jt2_97 - jt2_450*jt2_667 + jt2_452*jt2_667 + jt2_50*jt2_581 + jt2_555*jt2_99 + jt2_578*jt2_596 + jt2_586*jt2_595 - jt2_60*jt2_663 - jt2_64*jt2_664 + jt2_647 + jt2_664 - jt2_665 - jt2_668
-        dQ4_4 += delta_y*jt2_212*jt2_64 + delta_y*jt2_213 + delta_y*jt2_214 - delta_y*jt2_216*jt2_60 - delta_y*jt2_217*jt2_64 + delta_y*jt2_217 - jt2_1*jt2_314 + jt2_1*jt2_315 + jt2_1*jt2_316 + jt2_1*jt2_317 + jt2_138*jt2_415 - jt2_138*jt2_416 + jt2_176*jt2_291*jt2_30 + jt2_178*jt2_97 + jt2_19*jt2_671 - jt2_200*jt2_5 - jt2_201*jt2_260 - jt2_201*jt2_261 - jt2_201*jt2_264 - jt2_202*jt2_5 - jt2_203*jt2_5 + jt2_204*jt2_69 - jt2_206*jt2_654 - jt2_206*jt2_655 + jt2_206*jt2_658 + jt2_209*jt2_78 + jt2_210*jt2_462 - jt2_212*jt2_657 - jt2_251*jt2_671 - jt2_263*jt2_328 + jt2_276*jt2_363 - jt2_290*jt2_415 + jt2_290*jt2_416 + jt2_319*jt2_9 - jt2_320*jt2_9 + jt2_322*jt2_9 + jt2_327*jt2_9 + jt2_35*jt2_542 - jt2_35*jt2_600 + jt2_35*jt2_670 + jt2_404*jt2_53 + jt2_5*jt2_621 + jt2_50*jt2_629 - jt2_554 - jt2_556 + 2*jt2_576 - 2*jt2_585 - jt2_589 - jt2_590 + jt2_600 - jt2_602*jt2_64 + jt2_602 + jt2_616 - jt2_670
-        dQ4_5 += 0
-        dQ4_6 += 0
-        dQ4_7 += 0
-        dQ4_8 += jt2_243
-        dQ4_9 += jt2_346
-        dQ4_10 += jt2_425
-        dQ4_11 += jt2_653
-        dQ4_12 += 2*c2*cos_theta*delta_x*delta_y*jt2_10*jt2_28*jt2_29*sin_theta - jt2_137*jt2_204 - jt2_289*jt2_36
-        dQ4_13 += 0
-        dQ4_14 += 0
-        dQ4_15 += 0
-        dQ5_0 += 0
-        dQ5_1 += 0
-        dQ5_2 += 0
-        dQ5_3 += 0
-        dQ5_4 += 0
-        dQ5_5 += 0
-        dQ5_6 += 0
-        dQ5_7 += 0
-        dQ5_8 += 0
-        dQ5_9 += 0
-        dQ5_10 += 0
-        dQ5_11 += 0
-        dQ5_12 += 0
-        dQ5_13 += 0
-        dQ5_14 += 0
-        dQ5_15 += 0
-        dQ6_0 += 0
-        dQ6_1 += 0
-        dQ6_2 += 0
-        dQ6_3 += 0
-        dQ6_4 += 0
-        dQ6_5 += 0
-        dQ6_6 += 0
-        dQ6_7 += 0
-        dQ6_8 += 0
-        dQ6_9 += 0
-        dQ6_10 += 0
-        dQ6_11 += 0
-        dQ6_12 += 0
-        dQ6_13 += 0
-        dQ6_14 += 0
-        dQ6_15 += 0
-        dQ7_0 += 0
-        dQ7_1 += 0
-        dQ7_2 += 0
-        dQ7_3 += 0
-        dQ7_4 += 0
-        dQ7_5 += 0
-        dQ7_6 += 0
-        dQ7_7 += 0
-        dQ7_8 += 0
-        dQ7_9 += 0
-        dQ7_10 += 0
-        dQ7_11 += 0
-        dQ7_12 += 0
-        dQ7_13 += 0
-        dQ7_14 += 0
-        dQ7_15 += 0
-    jr0 = nu_dot**2
-    jr1 = jr0*m3
-    jr2 = R_E**2
-    jr3 = r**(-5)
-    jr4 = r**(-6)
-    jr5 = m3*mu
-    jr6 = jr4*jr5
-    jr7 = J2*jr2
-    jr8 = jr6*jr7
-    jr9 = (15/2)*jr8
-    jr10 = r**(-3)
-    jr11 = r**(-4)
-    jr12 = delta_y*jr11
-    jr13 = 3*jr5
-    jr14 = -jr10*m3*mu + jr12*jr13
-    jr15 = X7*m3
-    jr16 = jr11*jr13
-    jr17 = delta_x*jr16
-    jr18 = delta_x*jr9
-    jr19 = jr17 + jr18
-    jr20 = jr15 + jr19
-    jr21 = r**(-7)
-    jr22 = 2*m3
-    jr23 = jr22*nu_dot
-    jr24 = delta_x*jr23
-    jr25 = jr10*mu
-    jr26 = 2*jr25*m3
-    jr27 = 6*mu
-    jr28 = jr27*jr3
-    jr29 = jr28*m3
-    jr30 = jr29*jr7
-    jr31 = -30*J2*delta_y*jr2*jr4*m3*mu + jr1 + jr26 + jr30
-    jr32 = (45/2)*jr8
-    jr33 = delta_z*jr16 + delta_z*jr32
-    jr34 = delta_x**2
-    jr35 = delta_z**2
-    jr36 = delta_y**2
-    jr37 = jr3*jr5
-    jr38 = jr36*jr37
-    jr39 = jr5*jr7
-    jr40 = jr21*jr39
-    jr41 = 90*jr36*jr40
-    jr42 = 30*jr6
-    jr43 = delta_y*jr42
-    jr44 = -jr1 + jr12*jr27*m3 - jr26 + jr29*jr34 + jr29*jr35 - jr30 + (45/2)*jr34*jr40 + (135/2)*jr35*jr40 + 18*jr38 - jr41 + jr43*jr7
-    jr45 = -jr23
-    jr46 = delta_y*jr23 + jr23*r
-    jr47 = -2*delta_x_dot*m3 + jr46
-    jr48 = -135*J2*delta_y*delta_z*jr2*jr21*m3*mu - 12*delta_y*delta_z*jr3*m3*mu + jr33
-    jr49 = 2*psi
-    jr50 = math.cos(jr49 + phi)
-    jr51 = math.cos(jr49 - phi)
-    jr52 = (1/4)*jr51
-    jr53 = (1/4)*jr50
-    jr54 = cos_phi*sin_theta
-    jr55 = a*m2
-    jr56 = jr55*r
-    jr57 = -b*cos_phi*m1*r*sin_theta + jr54*jr56
-    jr58 = (1/4)*I1_pitch*jr50 - I1_pitch*jr52 + (1/4)*I1_roll*jr51 - I1_roll*jr53 + (1/4)*I2_pitch*jr50 - I2_pitch*jr52 + (1/4)*I2_roll*jr51 - I2_roll*jr53 - jr57
-    jr59 = cos_phi**2
-    jr60 = I1_yaw*jr59
-    jr61 = theta_dot**2
-    jr62 = I2_yaw*jr59
-    jr63 = sin_phi**2
-    jr64 = cos_psi**2
-    jr65 = I1_pitch*jr64
-    jr66 = jr63*jr65
-    jr67 = sin_psi**2
-    jr68 = I1_roll*jr67
-    jr69 = jr63*jr68
-    jr70 = psi_dot*sin_phi
-    jr71 = jr70*theta_dot
-    jr72 = I2_pitch*jr64
-    jr73 = jr63*jr72
-    jr74 = I2_roll*jr67
-    jr75 = jr63*jr74
-    jr76 = b**2
-    jr77 = jr76*m1
-    jr78 = phi_dot**2
-    jr79 = jr59*jr78
-    jr80 = a**2
-    jr81 = jr80*m2
-    jr82 = b*m1
-    jr83 = jr55 - jr82
-    jr84 = I1_yaw*jr63
-    jr85 = 2*nu_dot
-    jr86 = jr85*theta_dot
-    jr87 = I2_yaw*jr63
-    jr88 = jr70*nu_dot
-    jr89 = I1_pitch*jr67
-    jr90 = I1_roll*jr64
-    jr91 = I2_pitch*jr67
-    jr92 = I2_roll*jr64
-    jr93 = -I1_pitch + I1_roll - I2_pitch + I2_roll
-    jr94 = cos_psi*sin_psi
-    jr95 = jr94*sin_phi
-    jr96 = jr93*jr95
-    jr97 = jr63*jr77
-    jr98 = cos_theta**2
-    jr99 = jr0*m1
-    jr100 = jr63*jr76*jr99
-    jr101 = jr63*jr78
-    jr102 = jr101*jr77
-    jr103 = jr61*jr97
-    jr104 = sin_theta**2
-    jr105 = jr63*jr81
-    jr106 = jr0*m2
-    jr107 = jr106*jr63*jr80
-    jr108 = jr101*jr81
-    jr109 = jr105*jr61
-    jr110 = 3*jr25
-    jr111 = jr60*jr98
-    jr112 = jr110*jr111
-    jr113 = jr110*jr98
-    jr114 = jr113*jr62
-    jr115 = cos_phi*cos_theta
-    jr116 = jr115*jr55
-    jr117 = jr0*r
-    jr118 = jr116*jr117
-    jr119 = jr115*jr82
-    jr120 = r**(-2)
-    jr121 = jr120*mu
-    jr122 = jr119*jr121
-    jr123 = jr25*jr59
-    jr124 = jr123*jr77
-    jr125 = jr104*jr124
-    jr126 = jr123*jr81
-    jr127 = jr104*jr126
-    jr128 = cos_phi**3
-    jr129 = a**3
-    jr130 = 2*jr25
-    jr131 = jr130*jr98
-    jr132 = jr59*jr98
-    jr133 = jr77*jr86
-    jr134 = jr104*jr59
-    jr135 = jr81*jr86
-    jr136 = b**3
-    jr137 = jr136*m1
-    jr138 = cos_theta*jr137
-    jr139 = jr11*jr128
-    jr140 = jr139*mu
-    jr141 = a*cos_theta
-    jr142 = I2_yaw*jr141
-    jr143 = jr139*jr27
-    jr144 = cos_theta**3
-    jr145 = jr11*mu
-    jr146 = (3/2)*jr145
-    jr147 = b*jr115
-    jr148 = I1_pitch*jr147
-    jr149 = jr146*jr148
-    jr150 = I1_roll*jr146*jr147
-    jr151 = I1_yaw*b
-    jr152 = jr115*jr146
-    jr153 = jr151*jr152
-    jr154 = jr129*m2
-    jr155 = jr140*jr144
-    jr156 = I2_yaw*a
-    jr157 = b*cos_theta
-    jr158 = jr143*jr157
-    jr159 = 9*jr155
-    jr160 = b*jr65
-    jr161 = b*jr68
-    jr162 = cos_theta*jr151
-    jr163 = jr104*jr140
-    jr164 = jr137*jr63
-    jr165 = 9*jr145
-    jr166 = cos_phi*jr144
-    jr167 = jr165*jr166
-    jr168 = jr145*jr84
-    jr169 = b*jr166
-    jr170 = cos_theta*jr154
-    jr171 = jr3*mu
-    jr172 = (9/2)*jr171
-    jr173 = jr154*jr63
-    jr174 = jr115*jr145
-    jr175 = I1_pitch*jr94
-    jr176 = sin_phi*sin_theta
-    jr177 = cos_theta*jr110*jr176
-    jr178 = I2_pitch*jr94
-    jr179 = jr141*jr143
-    jr180 = jr28*jr7
-    jr181 = jr180*jr98
-    jr182 = jr104*jr165
-    jr183 = jr128*jr137
-    jr184 = jr4*mu
-    jr185 = jr144*jr184
-    jr186 = jr185*jr7
-    jr187 = a*jr87
-    jr188 = 21*jr174
-    jr189 = a*jr73
-    jr190 = a*jr75
-    jr191 = jr146*jr7
-    jr192 = jr119*jr191
-    jr193 = (3/2)*jr171
-    jr194 = jr7*jr77
-    jr195 = jr134*jr194
-    jr196 = jr7*jr81
-    jr197 = jr134*jr196
-    jr198 = a*jr91
-    jr199 = (15/2)*jr104*jr174
-    jr200 = a*jr92
-    jr201 = jr184*jr7
-    jr202 = (45/2)*jr201
-    jr203 = jr145*jr166
-    jr204 = (63/2)*jr203
-    jr205 = jr145*jr147
-    jr206 = 21*jr205
-    jr207 = 30*jr185
-    jr208 = jr104*jr128
-    jr209 = (45/4)*jr201
-    jr210 = jr115*jr173
-    jr211 = jr104*jr115
-    jr212 = cos_phi*nu_dot
-    jr213 = jr212*jr82
-    jr214 = 2*r_dot
-    jr215 = jr214*sin_theta
-    jr216 = jr213*jr215
-    jr217 = jr212*jr55
-    jr218 = jr215*jr217
-    jr219 = -jr216 + jr218
-    jr220 = jr59*jr86
-    jr221 = jr113*jr66
-    jr222 = jr113*jr69
-    jr223 = jr113*jr73
-    jr224 = jr113*jr75
-    jr225 = sin_theta**3
-    jr226 = I1_pitch*b*jr95
-    jr227 = 12*jr145
-    jr228 = cos_phi*jr227
-    jr229 = jr225*jr228
-    jr230 = b*jr176
-    jr231 = I1_roll*jr94
-    jr232 = cos_phi*jr231
-    jr233 = jr230*jr232
-    jr234 = I2_pitch*a
-    jr235 = jr234*jr94
-    jr236 = I2_roll*a
-    jr237 = jr145*jr230
-    jr238 = cos_phi*jr98
-    jr239 = 48*jr238
-    jr240 = jr145*jr176
-    jr241 = -48*I1_pitch*b*cos_phi*cos_psi*jr11*jr98*mu*sin_phi*sin_psi*sin_theta - 12*I1_pitch*b*cos_phi*cos_psi*jr11*mu*sin_phi*sin_psi*sin_theta - I1_pitch*jr0*jr59*jr64 - I1_pitch*jr59*jr61*jr64 - 12*I1_roll*b*cos_phi*cos_psi*jr11*jr225*mu*sin_phi*sin_psi - I1_roll*jr0*jr59*jr67 - I1_roll*jr59*jr61*jr67 - 12*I2_pitch*a*cos_phi*cos_psi*jr11*jr225*mu*sin_phi*sin_psi - I2_pitch*jr0*jr59*jr64 - I2_pitch*jr59*jr61*jr64 - 48*I2_roll*a*cos_phi*cos_psi*jr11*jr98*mu*sin_phi*sin_psi*sin_theta - 12*I2_roll*a*cos_phi*cos_psi*jr11*mu*sin_phi*sin_psi*sin_theta - I2_roll*jr0*jr59*jr67 - I2_roll*jr59*jr61*jr67 + jr176*jr228*jr235 + jr220*jr65 + jr220*jr68 + jr220*jr72 + jr220*jr74 + jr221 + jr222 + jr223 + jr224 + jr226*jr229 + jr227*jr233 + jr229*jr236*jr95 + jr231*jr237*jr239 + jr235*jr239*jr240
-    jr242 = cos_theta*sin_phi
-    jr243 = jr242*jr56
-    jr244 = b*cos_theta*m1*r*sin_phi - jr243
-    jr245 = jr85*r_dot
-    jr246 = jr242*jr82
-    jr247 = jr242*jr55
-    jr248 = -jr245*jr246 + jr245*jr247
-    jr249 = X6*jr83
-    jr250 = jr176*jr55
-    jr251 = jr176*jr82
-    jr252 = sin_phi**3
-    jr253 = jr252*sin_theta
-    jr254 = 3*jr145
-    jr255 = jr253*jr254
-    jr256 = jr146*jr176
-    jr257 = jr104*jr110
-    jr258 = cos_phi*jr257
-    jr259 = cos_phi*jr113
-    jr260 = jr252*jr254
-    jr261 = a*jr225
-    jr262 = jr261*jr72
-    jr263 = jr261*jr74
-    jr264 = I2_roll*jr94
-    jr265 = jr154*jr59
-    jr266 = jr176*jr254
-    jr267 = jr11*jr27
-    jr268 = jr137*jr59
-    jr269 = jr225*jr268
-    jr270 = jr145*sin_phi
-    jr271 = b*jr225
-    jr272 = jr271*jr89
-    jr273 = (15/2)*jr270
-    jr274 = jr271*jr90
-    jr275 = jr254*jr59
-    jr276 = jr157*jr175
-    jr277 = jr254*jr63
-    jr278 = jr157*jr231
-    jr279 = jr141*jr178
-    jr280 = jr141*jr264
-    jr281 = jr225*jr59
-    jr282 = jr267*jr281*sin_phi
-    jr283 = 6*jr25
-    jr284 = jr115*jr176
-    jr285 = jr283*jr284
-    jr286 = a*jr72
-    jr287 = jr176*jr267*jr59
-    jr288 = a*jr74
-    jr289 = jr144*jr227
-    jr290 = b*jr175
-    jr291 = jr289*jr63
-    jr292 = b*jr231
-    jr293 = jr236*jr94
-    jr294 = 15*jr198
-    jr295 = jr145*jr98
-    jr296 = jr176*jr295
-    jr297 = 15*jr200
-    jr298 = jr132*jr240
-    jr299 = (39/2)*jr253*jr295
-    jr300 = jr104*jr63
-    jr301 = 33*jr145
-    jr302 = jr134*jr301
-    jr303 = 39*jr298
-    jr304 = 15*jr171*jr284
-    jr305 = -33*I1_pitch*b*cos_psi*cos_theta*jr104*jr11*jr59*mu*sin_psi - 3*I1_pitch*b*cos_psi*cos_theta*jr11*jr63*mu*sin_psi - 12*I1_pitch*b*cos_psi*jr11*jr144*jr63*mu*sin_psi - 3*I1_pitch*b*jr11*jr225*jr252*jr64*mu - 39*I1_pitch*b*jr11*jr59*jr64*jr98*mu*sin_phi*sin_theta - 6*I1_pitch*b*jr11*jr59*jr64*mu*sin_phi*sin_theta - 15*I1_pitch*b*jr11*jr67*jr98*mu*sin_phi*sin_theta - 3/2*I1_pitch*b*jr11*mu*sin_phi*sin_theta - 3*I1_pitch*cos_phi*cos_psi*jr10*jr98*mu*sin_psi - 33*I1_roll*b*cos_psi*cos_theta*jr104*jr11*jr63*mu*sin_psi - 3*I1_roll*b*cos_psi*cos_theta*jr11*jr59*mu*sin_psi - 12*I1_roll*b*cos_psi*jr11*jr144*jr59*mu*sin_psi - 3*I1_roll*b*jr11*jr225*jr252*jr67*mu - 39*I1_roll*b*jr11*jr59*jr67*jr98*mu*sin_phi*sin_theta - 6*I1_roll*b*jr11*jr59*jr67*mu*sin_phi*sin_theta - 15*I1_roll*b*jr11*jr64*jr98*mu*sin_phi*sin_theta - 3/2*I1_roll*b*jr11*mu*sin_phi*sin_theta - 3*I1_roll*cos_phi*cos_psi*jr10*jr104*mu*sin_psi - 9*I1_yaw*b*jr11*jr225*jr59*mu*sin_phi - 3*I1_yaw*b*jr11*jr252*mu*sin_theta - 3/2*I1_yaw*b*jr11*mu*sin_phi*sin_theta - 6*I1_yaw*cos_phi*cos_theta*jr10*mu*sin_phi*sin_theta - 33*I2_pitch*a*cos_psi*cos_theta*jr104*jr11*jr63*mu*sin_psi - 3*I2_pitch*a*cos_psi*cos_theta*jr11*jr59*mu*sin_psi - 12*I2_pitch*a*cos_psi*jr11*jr144*jr59*mu*sin_psi - 6*I2_pitch*a*jr11*jr225*jr59*jr64*mu*sin_phi - 15/2*I2_pitch*a*jr11*jr225*jr67*mu*sin_phi - 39/2*I2_pitch*a*jr11*jr252*jr64*jr98*mu*sin_theta - 3*I2_pitch*a*jr11*jr252*jr64*mu*sin_theta - 3*I2_pitch*cos_phi*cos_psi*jr10*jr98*mu*sin_psi - 33*I2_roll*a*cos_psi*cos_theta*jr104*jr11*jr59*mu*sin_psi - 3*I2_roll*a*cos_psi*cos_theta*jr11*jr63*mu*sin_psi - 12*I2_roll*a*cos_psi*jr11*jr144*jr63*mu*sin_psi - 6*I2_roll*a*jr11*jr225*jr59*jr67*mu*sin_phi - 15/2*I2_roll*a*jr11*jr225*jr64*mu*sin_phi - 39/2*I2_roll*a*jr11*jr252*jr67*jr98*mu*sin_theta - 3*I2_roll*a*jr11*jr252*jr67*mu*sin_theta - 3*I2_roll*cos_phi*cos_psi*jr10*jr104*mu*sin_psi - 117/2*I2_yaw*a*jr11*jr59*jr98*mu*sin_phi*sin_theta - 6*I2_yaw*a*jr11*jr59*mu*sin_phi*sin_theta - 6*I2_yaw*cos_phi*cos_theta*jr10*mu*sin_phi*sin_theta - 3/2*J2*b*jr11*jr2*m1*mu*sin_phi*sin_theta - 45/4*J2*jr129*jr2*jr225*jr4*jr59*m2*mu*sin_phi - 45/4*J2*jr129*jr2*jr252*jr4*m2*mu*sin_theta - 135/2*J2*jr136*jr2*jr4*jr59*jr98*m1*mu*sin_phi*sin_theta - 45/2*J2*jr136*jr2*jr4*jr59*m1*mu*sin_phi*sin_theta - a*jr0*m2*r*sin_phi*sin_theta - b*jr120*m1*mu*sin_phi*sin_theta - 9/2*jr11*jr129*jr225*jr59*m2*mu*sin_phi - 3/2*jr11*jr129*jr252*m2*mu*sin_theta - 9/2*jr11*jr129*jr59*jr98*m2*mu*sin_phi*sin_theta - 3*jr11*jr136*jr59*m1*mu*sin_phi*sin_theta + (117/2)*jr111*jr237 + jr117*jr251 + jr121*jr250 + (135/2)*jr132*jr154*jr176*jr201 + jr137*jr146*jr253 + jr137*jr209*jr253 + (9/2)*jr137*jr298 + jr156*jr255 + jr156*jr256 + jr160*jr255 + jr160*jr282 + jr160*jr299 + jr161*jr255 + jr161*jr282 + jr161*jr299 + jr165*jr261*jr62*sin_phi + jr175*jr258 + jr176*jr202*jr265 + jr176*jr249 + jr178*jr258 + jr191*jr250 + jr194*jr304 + jr196*jr304 + jr209*jr269*sin_phi + jr230*jr267*jr60 + jr231*jr259 + jr234*jr256 + jr235*jr291 + jr236*jr256 + jr259*jr264 + jr260*jr262 + jr260*jr263 + jr265*jr266 + (9/2)*jr269*jr270 + jr272*jr273 + jr273*jr274 + jr275*jr276 + jr275*jr280 + jr276*jr300*jr301 + jr277*jr278 + jr277*jr279 + jr278*jr302 + jr279*jr302 + jr280*jr300*jr301 + jr285*jr65 + jr285*jr68 + jr285*jr72 + jr285*jr74 + jr285*jr77 + jr285*jr81 + jr286*jr287 + jr286*jr303 + jr287*jr288 + jr288*jr303 + jr289*jr290*jr59 + jr289*jr293*jr59 + jr291*jr292 + jr294*jr296 + jr296*jr297
-    jr306 = phi_dot*psi_dot
-    jr307 = 2*jr306
-    jr308 = 2*I1_roll
-    jr309 = jr308*jr64
-    jr310 = cos_phi*psi_dot
-    jr311 = 4*jr310
-    jr312 = jr311*nu_dot
-    jr313 = jr311*theta_dot
-    jr314 = cos_phi*theta_dot
-    jr315 = 4*jr314*nu_dot
-    jr316 = jr315*jr95
-    jr317 = I1_roll*jr95
-    jr318 = jr315*jr317
-    jr319 = I2_roll*jr316
-    jr320 = 2*jr94
-    jr321 = I1_pitch*jr320
-    jr322 = cos_phi*sin_phi
-    jr323 = jr321*jr322
-    jr324 = jr0*jr323
-    jr325 = jr323*jr61
-    jr326 = jr308*jr94
-    jr327 = jr322*jr326
-    jr328 = I2_pitch*jr320
-    jr329 = jr322*jr328
-    jr330 = jr0*jr329
-    jr331 = jr329*jr61
-    jr332 = I2_roll*jr320
-    jr333 = jr322*jr332
-    jr334 = jr110*jr115
-    jr335 = jr334*sin_theta
-    jr336 = jr89*sin_theta
-    jr337 = jr334*jr336
-    jr338 = jr90*sin_theta
-    jr339 = jr334*jr338
-    jr340 = jr335*jr91
-    jr341 = jr335*jr92
-    jr342 = jr252*jr267
-    jr343 = jr276*jr342
-    jr344 = jr238*jr283
-    jr345 = jr344*jr95
-    jr346 = I1_pitch*jr345
-    jr347 = jr278*jr342
-    jr348 = jr279*jr342
-    jr349 = I2_pitch*jr345
-    jr350 = jr280*jr342
-    jr351 = cos_phi*jr93
-    jr352 = X4*jr351
-    jr353 = jr160*sin_theta
-    jr354 = jr275*jr353
-    jr355 = b*jr336
-    jr356 = jr254*sin_theta
-    jr357 = b*jr356
-    jr358 = jr277*jr355
-    jr359 = jr275*sin_theta
-    jr360 = b*jr90
-    jr361 = jr161*jr359
-    jr362 = b*jr338
-    jr363 = jr277*jr362
-    jr364 = a*jr359
-    jr365 = jr364*jr91
-    jr366 = jr189*jr356
-    jr367 = jr277*sin_theta
-    jr368 = jr364*jr92
-    jr369 = jr190*jr356
-    jr370 = cos_theta*jr226
-    jr371 = jr227*jr370
-    jr372 = 15*jr145
-    jr373 = jr104*jr372
-    jr374 = jr317*jr59
-    jr375 = jr157*jr227*jr374
-    jr376 = jr157*jr317
-    jr377 = jr373*jr376
-    jr378 = I2_pitch*jr141
-    jr379 = jr59*jr95
-    jr380 = jr227*jr379
-    jr381 = jr378*jr380
-    jr382 = jr373*jr95
-    jr383 = jr378*jr382
-    jr384 = I2_roll*jr141
-    jr385 = jr144*jr252
-    jr386 = jr165*jr385
-    jr387 = jr290*jr386
-    jr388 = jr293*jr386
-    jr389 = jr225*jr275
-    jr390 = jr272*jr275
-    jr391 = jr254*jr271
-    jr392 = jr391*jr66
-    jr393 = jr274*jr275
-    jr394 = jr391*jr69
-    jr395 = jr262*jr275
-    jr396 = jr261*jr275
-    jr397 = jr254*jr261
-    jr398 = jr261*jr277
-    jr399 = jr398*jr91
-    jr400 = jr263*jr275
-    jr401 = jr398*jr92
-    jr402 = 18*jr144*jr145
-    jr403 = b*jr374*jr402
-    jr404 = jr104*jr347
-    jr405 = jr379*jr402
-    jr406 = jr234*jr405
-    jr407 = jr104*jr348
-    jr408 = jr132*jr227
-    jr409 = jr353*jr408
-    jr410 = jr98*sin_theta
-    jr411 = jr227*jr410
-    jr412 = b*jr411
-    jr413 = jr295*jr63
-    jr414 = 12*jr413
-    jr415 = jr355*jr414
-    jr416 = jr408*sin_theta
-    jr417 = jr161*jr416
-    jr418 = jr362*jr414
-    jr419 = jr198*jr416
-    jr420 = jr189*jr411
-    jr421 = jr411*jr63
-    jr422 = jr200*jr416
-    jr423 = jr190*jr411
-    jr424 = jr134*jr371
-    jr425 = jr134*jr227
-    jr426 = jr425*jr95
-    jr427 = jr384*jr426
-    jr428 = (1/2)*I1_pitch
-    jr429 = (1/2)*I1_roll
-    jr430 = (1/2)*I2_pitch
-    jr431 = (1/2)*I2_roll
-    jr432 = jr428*jr50 + jr428*jr51 - jr429*jr50 - jr429*jr51 + jr430*jr50 + jr430*jr51 - jr431*jr50 - jr431*jr51
-    jr433 = -b*m1*sin_phi*sin_theta + jr250
-    jr434 = -jr433
-    jr435 = jr254*jr322
-    jr436 = I2_pitch*jr28
-    jr437 = a*jr242
-    jr438 = I2_roll*jr28
-    jr439 = I2_yaw*sin_phi
-    jr440 = 12*jr171
-    jr441 = jr252*jr440
-    jr442 = jr77*jr98
-    jr443 = jr267*jr322
-    jr444 = jr81*jr98
-    jr445 = jr165*jr98
-    jr446 = jr322*jr445
-    jr447 = jr157*jr441
-    jr448 = 18*jr171
-    jr449 = jr385*jr448
-    jr450 = jr144*sin_phi
-    jr451 = jr171*jr60
-    jr452 = b*jr242
-    jr453 = 24*jr452
-    jr454 = jr115*jr165*sin_theta
-    jr455 = jr440*sin_theta
-    jr456 = jr290*jr63
-    jr457 = jr271*jr440
-    jr458 = jr455*jr59
-    jr459 = jr235*jr63
-    jr460 = jr225*jr440
-    jr461 = jr141*jr441
-    jr462 = jr134*jr242
-    jr463 = jr171*jr437
-    jr464 = 24*jr463*jr59
-    jr465 = jr104*jr89
-    jr466 = 30*jr171
-    jr467 = jr452*jr466
-    jr468 = jr104*jr90
-    jr469 = 36*jr171*jr450*jr59
-    jr470 = jr202*jr322
-    jr471 = jr21*mu
-    jr472 = (135/2)*jr471*jr7
-    jr473 = jr134*jr171*jr453
-    jr474 = 30*jr184
-    jr475 = jr474*jr7
-    jr476 = jr322*jr475
-    jr477 = jr171*jr410
-    jr478 = 48*jr477
-    jr479 = 48*jr171
-    jr480 = jr132*jr479*sin_theta
-    jr481 = jr293*jr63
-    jr482 = jr265*jr7
-    jr483 = 90*jr471
-    jr484 = 135*jr471
-    jr485 = -12*I1_pitch*b*cos_psi*jr225*jr3*jr63*mu*sin_psi - 48*I1_pitch*b*cos_psi*jr3*jr59*jr98*mu*sin_psi*sin_theta - 12*I1_pitch*b*cos_psi*jr3*jr59*mu*sin_psi*sin_theta - 12*I1_pitch*b*cos_theta*jr104*jr252*jr3*jr64*mu - 24*I1_pitch*b*cos_theta*jr3*jr59*jr64*mu*sin_phi - 6*I1_pitch*b*cos_theta*jr3*mu*sin_phi - 36*I1_pitch*b*jr144*jr3*jr59*jr64*mu*sin_phi - 12*I1_roll*b*cos_psi*jr225*jr3*jr59*mu*sin_psi - 48*I1_roll*b*cos_psi*jr3*jr63*jr98*mu*sin_psi*sin_theta - 12*I1_roll*b*cos_psi*jr3*jr63*mu*sin_psi*sin_theta - 12*I1_roll*b*cos_theta*jr104*jr252*jr3*jr67*mu - 24*I1_roll*b*cos_theta*jr3*jr59*jr67*mu*sin_phi - 6*I1_roll*b*cos_theta*jr3*mu*sin_phi - 36*I1_roll*b*jr144*jr3*jr59*jr67*mu*sin_phi - 9*I1_roll*cos_phi*cos_psi*cos_theta*jr11*mu*sin_psi*sin_theta - 36*I1_yaw*b*cos_theta*jr104*jr3*jr59*mu*sin_phi - 12*I1_yaw*b*cos_theta*jr252*jr3*mu - 6*I1_yaw*b*cos_theta*jr3*mu*sin_phi - 9*I1_yaw*cos_phi*jr11*jr98*mu*sin_phi - 12*I2_pitch*a*cos_psi*jr225*jr3*jr59*mu*sin_psi - 48*I2_pitch*a*cos_psi*jr3*jr63*jr98*mu*sin_psi*sin_theta - 12*I2_pitch*a*cos_psi*jr3*jr63*mu*sin_psi*sin_theta - 24*I2_pitch*a*cos_theta*jr104*jr3*jr59*jr64*mu*sin_phi - 30*I2_pitch*a*cos_theta*jr104*jr3*jr67*mu*sin_phi - 12*I2_pitch*a*cos_theta*jr252*jr3*jr64*mu - 18*I2_pitch*a*jr144*jr252*jr3*jr64*mu - 12*I2_roll*a*cos_psi*jr225*jr3*jr63*mu*sin_psi - 48*I2_roll*a*cos_psi*jr3*jr59*jr98*mu*sin_psi*sin_theta - 12*I2_roll*a*cos_psi*jr3*jr59*mu*sin_psi*sin_theta - 24*I2_roll*a*cos_theta*jr104*jr3*jr59*jr67*mu*sin_phi - 30*I2_roll*a*cos_theta*jr104*jr3*jr64*mu*sin_phi - 12*I2_roll*a*cos_theta*jr252*jr3*jr67*mu - 18*I2_roll*a*jr144*jr252*jr3*jr67*mu - 9*I2_roll*cos_phi*cos_psi*cos_theta*jr11*mu*sin_psi*sin_theta - 24*I2_yaw*a*cos_theta*jr3*jr59*mu*sin_phi - 54*I2_yaw*a*jr144*jr3*jr59*mu*sin_phi - 9*I2_yaw*cos_phi*jr11*jr98*mu*sin_phi - 6*J2*b*cos_theta*jr2*jr3*m1*mu*sin_phi - 15/2*J2*cos_phi*jr104*jr2*jr4*jr76*m1*mu*sin_phi - 15/2*J2*cos_phi*jr104*jr2*jr4*jr80*m2*mu*sin_phi - 135/2*J2*cos_theta*jr104*jr129*jr2*jr21*jr59*m2*mu*sin_phi - 135/2*J2*cos_theta*jr129*jr2*jr21*jr252*m2*mu - 135*J2*cos_theta*jr136*jr2*jr21*jr59*m1*mu*sin_phi - 90*J2*jr136*jr144*jr2*jr21*jr59*m1*mu*sin_phi - b*cos_theta*jr0*m1*sin_phi - 2*b*cos_theta*jr10*m1*mu*sin_phi + 54*b*jr450*jr451 - 3*cos_phi*jr104*jr11*jr76*m1*mu*sin_phi - 3*cos_phi*jr104*jr11*jr80*m2*mu*sin_phi - 18*cos_theta*jr104*jr129*jr3*jr59*m2*mu*sin_phi - 6*cos_theta*jr129*jr252*jr3*m2*mu - 12*cos_theta*jr136*jr3*jr59*m1*mu*sin_phi + jr0*jr242*jr55 + jr104*jr461*jr72 + jr104*jr461*jr74 + 36*jr104*jr463*jr62 - 18*jr129*jr144*jr3*jr59*m2*mu*sin_phi + jr130*jr247 + jr137*jr448*jr462 + jr137*jr462*jr472 + jr138*jr252*jr28 + jr138*jr252*jr472 + jr141*jr28*jr439 + jr142*jr441 + jr160*jr449 + jr161*jr449 + jr175*jr454 + jr175*jr457*jr59 + jr178*jr454 + jr180*jr247 + jr231*jr457*jr63 + jr235*jr458 + jr235*jr480 + jr242*jr265*jr440 + jr242*jr482*jr484 + jr268*jr448*jr450 + jr281*jr293*jr440 + jr286*jr469 + jr288*jr469 + jr292*jr458 + jr292*jr480 + jr293*jr455*jr63 + jr435*jr77 + jr435*jr81 + jr436*jr437 + jr437*jr438 + jr442*jr443 + jr442*jr476 + jr443*jr444 + jr444*jr476 + jr446*jr65 + jr446*jr68 + jr446*jr72 + jr446*jr74 + jr447*jr65 + jr447*jr68 + jr450*jr482*jr483 + jr451*jr453 + jr455*jr456 + jr456*jr478 + jr459*jr460 + jr464*jr72 + jr464*jr74 + jr465*jr467 + jr467*jr468 + jr470*jr77 + jr470*jr81 + jr473*jr65 + jr473*jr68 + jr478*jr481
-    jr486 = jr326*psi_dot
-    jr487 = jr332*psi_dot
-    jr488 = jr321*psi_dot
-    jr489 = jr328*psi_dot
-    jr490 = cos_phi*phi_dot
-    jr491 = 2*sin_phi
-    jr492 = jr490*jr491
-    jr493 = jr492*jr77
-    jr494 = jr492*jr81
-    jr495 = jr104*jr493 + jr104*jr494 + jr493*jr98 + jr494*jr98
-    jr496 = jr310*jr67
-    jr497 = I1_pitch*jr496
-    jr498 = jr310*jr64
-    jr499 = I1_roll*jr498
-    jr500 = I2_pitch*jr496
-    jr501 = I2_roll*jr498
-    jr502 = jr310*jr65
-    jr503 = jr310*jr68
-    jr504 = jr310*jr72
-    jr505 = jr310*jr74
-    jr506 = I1_yaw*jr314
-    jr507 = I2_yaw*jr314
-    jr508 = I1_yaw*jr212
-    jr509 = I2_yaw*jr212
-    jr510 = jr212*jr65
-    jr511 = jr212*jr68
-    jr512 = jr212*jr72
-    jr513 = jr212*jr74
-    jr514 = jr314*jr65
-    jr515 = jr314*jr68
-    jr516 = jr314*jr72
-    jr517 = jr314*jr74
-    jr518 = jr212*jr491
-    jr519 = jr104*jr518
-    jr520 = jr314*jr491
-    jr521 = jr104*jr520
-    jr522 = I1_yaw*jr310 + I2_yaw*jr310 - jr442*jr518 + jr442*jr520 - jr444*jr518 + jr444*jr520 - jr491*jr506 - jr491*jr507 + jr491*jr508 + jr491*jr509 - jr491*jr510 - jr491*jr511 - jr491*jr512 - jr491*jr513 + jr491*jr514 + jr491*jr515 + jr491*jr516 + jr491*jr517 - jr519*jr77 - jr519*jr81 + jr521*jr77 + jr521*jr81
-    jr523 = jr497 + jr499 + jr500 + jr501 - jr502 - jr503 - jr504 - jr505 + jr522
-    jr524 = jr321*phi_dot
-    jr525 = jr326*phi_dot
-    jr526 = jr328*phi_dot
-    jr527 = jr332*phi_dot
-    jr528 = jr212*jr67
-    jr529 = I1_pitch*jr528
-    jr530 = jr212*jr64
-    jr531 = I1_roll*jr530
-    jr532 = I2_pitch*jr528
-    jr533 = I2_roll*jr530
-    jr534 = jr314*jr67
-    jr535 = I1_pitch*jr534
-    jr536 = jr314*jr64
-    jr537 = I1_roll*jr536
-    jr538 = I2_pitch*jr534
-    jr539 = I2_roll*jr536
-    jr540 = jr250*jr85
-    jr541 = jr251*jr85
-    jr542 = 2*r
-    jr543 = jr246*jr542
-    jr544 = jr247*jr542
-    jr545 = -jr543*nu_dot + jr544*nu_dot
-    jr546 = I1_yaw*sin_phi
-    jr547 = 2*cos_phi
-    jr548 = jr547*sin_phi
-    jr549 = -jr439*jr547 - jr546*jr547 + jr548*jr65 + jr548*jr68 + jr548*jr72 + jr548*jr74 + jr548*jr77 + jr548*jr81
-    jr550 = jr242*jr82*r - jr243 + jr549
-    jr551 = I1_yaw + I2_yaw
-    jr552 = cos_phi*jr551
-    jr553 = jr70*phi_dot
-    jr554 = nu_dot*phi_dot
-    jr555 = 2*jr554
-    jr556 = phi_dot*theta_dot
-    jr557 = 2*jr556
-    jr558 = cos_phi*jr78
-    jr559 = jr558*jr94
-    jr560 = jr555*jr59
-    jr561 = jr557*jr59
-    jr562 = jr555*jr77
-    jr563 = jr557*jr97
-    jr564 = jr555*jr81
-    jr565 = jr105*jr557
-    jr566 = jr555*jr97
-    jr567 = jr557*jr77
-    jr568 = jr105*jr555
-    jr569 = jr557*jr81
-    jr570 = jr313*jr95
-    jr571 = jr312*jr95
-    jr572 = -I1_pitch*jr570 + I1_pitch*jr571 + I1_roll*jr559 - I1_yaw*jr553 - I2_pitch*jr559 - I2_pitch*jr570 + I2_pitch*jr571 + I2_roll*jr559 + I2_roll*jr570 - I2_roll*jr571 - I2_yaw*jr553 + X5*jr552 - jr104*jr563 - jr104*jr565 + jr104*jr566 + jr104*jr568 - jr132*jr562 - jr132*jr564 + jr132*jr567 + jr132*jr569 - jr134*jr562 - jr134*jr564 + jr134*jr567 + jr134*jr569 - jr175*jr558 + jr248 - jr312*jr317 + jr313*jr317 - jr553*jr65 - jr553*jr68 - jr553*jr72 - jr553*jr74 + jr553*jr89 + jr553*jr90 + jr553*jr91 + jr553*jr92 + jr555*jr60 + jr555*jr62 + jr555*jr66 + jr555*jr69 + jr555*jr73 + jr555*jr75 - jr555*jr84 - jr555*jr87 - jr557*jr60 - jr557*jr62 - jr557*jr66 - jr557*jr69 - jr557*jr73 - jr557*jr75 + jr557*jr84 + jr557*jr87 - jr560*jr65 - jr560*jr68 - jr560*jr72 - jr560*jr74 + jr561*jr65 + jr561*jr68 + jr561*jr72 + jr561*jr74 - jr563*jr98 - jr565*jr98 + jr566*jr98 + jr568*jr98
-    jr573 = a*jr152
-    jr574 = 12*jr25
-    jr575 = cos_theta*jr176
-    jr576 = jr175*jr574*jr575
-    jr577 = cos_theta*jr231
-    jr578 = jr176*jr577
-    jr579 = jr574*jr575
-    jr580 = jr178*jr579
-    jr581 = jr113*jr89
-    jr582 = jr257*jr89
-    jr583 = jr113*jr90
-    jr584 = jr257*jr90
-    jr585 = jr113*jr91
-    jr586 = jr257*jr91
-    jr587 = jr113*jr92
-    jr588 = jr257*jr92
-    jr589 = jr115*jr187
-    jr590 = jr175*jr230
-    jr591 = cos_phi*jr590
-    jr592 = cos_phi*jr266
-    jr593 = (39/2)*jr155
-    jr594 = jr145*jr169
-    jr595 = 15*jr594
-    jr596 = 48*jr163
-    jr597 = 15*jr203
-    jr598 = cos_phi*jr301
-    jr599 = jr225*jr598
-    jr600 = jr271*jr317
-    jr601 = jr599*jr95
-    jr602 = -jr57
-    jr603 = 3*jr98
-    jr604 = (3/2)*jr155
-    jr605 = jr147*jr254
-    jr606 = (105/2)*jr104
-    jr607 = jr115*jr254
-    jr608 = jr174*jr606
-    jr609 = 102*jr238
-    jr610 = jr237*jr609
-    jr611 = jr240*jr609
-    jr612 = (3/2)*jr163
-    jr613 = (39/2)*jr594
-    jr614 = (39/2)*jr203
-    jr615 = 48*jr104*jr205
-    jr616 = jr104*jr174
-    jr617 = 48*jr616
-    jr618 = (15/2)*jr171
-    jr619 = jr132*jr618
-    jr620 = jr128*jr154
-    jr621 = (45/2)*jr186
-    jr622 = (225/4)*jr201
-    jr623 = jr138*jr208
-    jr624 = jr311*phi_dot
-    jr625 = jr175*jr624
-    jr626 = jr231*jr624
-    jr627 = jr178*jr624
-    jr628 = jr264*jr624
-    jr629 = jr64*jr78
-    jr630 = I1_pitch*jr629
-    jr631 = jr630*sin_phi
-    jr632 = jr67*jr78
-    jr633 = I1_roll*jr632
-    jr634 = jr633*sin_phi
-    jr635 = I2_pitch*jr629
-    jr636 = jr635*sin_phi
-    jr637 = I2_roll*jr632
-    jr638 = jr637*sin_phi
-    jr639 = 4*phi_dot
-    jr640 = jr212*jr639
-    jr641 = jr640*jr95
-    jr642 = I1_pitch*jr641
-    jr643 = jr314*jr639
-    jr644 = jr643*jr95
-    jr645 = I1_pitch*jr644
-    jr646 = jr317*jr640
-    jr647 = jr317*jr643
-    jr648 = I2_pitch*jr641
-    jr649 = I2_pitch*jr644
-    jr650 = I2_roll*jr641
-    jr651 = I2_roll*jr644
-    jr652 = I1_pitch*jr632*sin_phi
-    jr653 = I1_roll*jr629*sin_phi
-    jr654 = I2_pitch*jr632*sin_phi
-    jr655 = I2_roll*jr629*sin_phi
-    jr656 = jr59*psi_dot
-    jr657 = jr656*jr85
-    jr658 = jr65*jr657
-    jr659 = jr656*theta_dot
-    jr660 = 2*jr659
-    jr661 = jr65*jr660
-    jr662 = jr657*jr89
-    jr663 = jr660*jr89
-    jr664 = jr309*jr656*nu_dot
-    jr665 = jr309*jr659
-    jr666 = jr657*jr68
-    jr667 = jr660*jr68
-    jr668 = jr657*jr72
-    jr669 = jr660*jr72
-    jr670 = jr657*jr91
-    jr671 = jr660*jr91
-    jr672 = jr657*jr92
-    jr673 = jr660*jr92
-    jr674 = jr657*jr74
-    jr675 = jr660*jr74
-    jr676 = jr283*sin_theta
-    jr677 = cos_theta*jr676
-    jr678 = jr175*jr677
-    jr679 = jr577*jr676
-    jr680 = jr178*jr677
-    jr681 = jr264*jr677
-    jr682 = jr113*sin_phi
-    jr683 = jr257*jr65*sin_phi
-    jr684 = jr581*sin_phi
-    jr685 = jr583*sin_phi
-    jr686 = jr257*jr68*sin_phi
-    jr687 = jr257*jr72*sin_phi
-    jr688 = jr585*sin_phi
-    jr689 = jr587*sin_phi
-    jr690 = jr257*jr74*sin_phi
-    jr691 = cos_phi*jr372
-    jr692 = jr175*jr271
-    jr693 = jr605*sin_phi
-    jr694 = jr65*jr693
-    jr695 = jr232*jr271
-    jr696 = jr372*jr695
-    jr697 = jr68*jr693
-    jr698 = jr63*jr679
-    jr699 = jr225*jr691
-    jr700 = jr235*jr699
-    jr701 = jr607*sin_phi
-    jr702 = jr198*jr701
-    jr703 = jr200*jr701
-    jr704 = jr63*jr681
-    jr705 = X3*jr351
-    jr706 = 30*jr295
-    jr707 = b*jr54
-    jr708 = jr175*jr707
-    jr709 = jr706*jr708
-    jr710 = jr267*jr63
-    jr711 = jr708*jr710
-    jr712 = jr231*jr707
-    jr713 = jr54*jr706
-    jr714 = jr267*jr459
-    jr715 = jr293*jr713
-    jr716 = jr267*jr481
-    jr717 = jr54*jr716
-    jr718 = jr289*jr322
-    jr719 = jr160*jr718
-    jr720 = jr161*jr718
-    jr721 = jr198*jr718
-    jr722 = jr200*jr718
-    jr723 = 33*jr270
-    jr724 = jr104*jr147
-    jr725 = jr723*jr724
-    jr726 = jr147*jr465
-    jr727 = jr723*jr726
-    jr728 = jr695*jr710
-    jr729 = jr147*jr468
-    jr730 = jr723*jr729
-    jr731 = cos_phi*jr225
-    jr732 = jr714*jr731
-    jr733 = 33*jr616*sin_phi
-    jr734 = jr286*jr733
-    jr735 = jr288*jr733
-    jr736 = 39*jr413
-    jr737 = jr708*jr736
-    jr738 = jr54*jr736
-    jr739 = jr293*jr738
-    jr740 = jr321*jr59
-    jr741 = jr328*jr59
-    jr742 = -2*I1_roll*cos_psi*jr59*sin_psi - 2*I2_roll*cos_psi*jr59*sin_psi + jr740 + jr741
-    jr743 = -jr742
-    jr744 = jr116 - jr119
-    jr745 = jr55*sin_theta
-    jr746 = a*jr54
-    jr747 = I2_yaw*jr28
-    jr748 = jr128*jr225
-    jr749 = cos_theta*jr165
-    jr750 = jr749*sin_theta
-    jr751 = jr445*jr95
-    jr752 = jr59*jr750
-    jr753 = cos_phi*jr466
-    jr754 = jr128*jr151
-    jr755 = jr54*jr55
-    jr756 = jr440*jr707
-    jr757 = cos_phi*jr440
-    jr758 = jr261*jr757
-    jr759 = jr171*jr98
-    jr760 = 60*jr746*jr759
-    jr761 = jr440*jr95
-    jr762 = jr115*jr234
-    jr763 = jr234*jr95
-    jr764 = 78*jr707*jr759
-    jr765 = jr620*jr7
-    jr766 = (75/2)*cos_theta*jr59*sin_theta
-    jr767 = 132*jr171
-    jr768 = -12*I1_pitch*b*cos_phi*cos_psi*cos_theta*jr3*mu*sin_phi*sin_psi - 48*I1_pitch*b*cos_phi*cos_psi*jr144*jr3*mu*sin_phi*sin_psi - 12*I1_pitch*b*cos_phi*jr225*jr3*jr63*jr64*mu - 60*I1_pitch*b*cos_phi*jr3*jr67*jr98*mu*sin_theta - 6*I1_pitch*b*cos_phi*jr3*mu*sin_theta - 9*I1_pitch*cos_psi*jr104*jr11*mu*sin_phi*sin_psi - 9*I1_pitch*cos_theta*jr11*jr63*jr64*mu*sin_theta + I1_pitch*jr751 - 132*I1_roll*b*cos_phi*cos_psi*cos_theta*jr104*jr3*mu*sin_phi*sin_psi - 12*I1_roll*b*cos_phi*jr225*jr3*jr63*jr67*mu - 60*I1_roll*b*cos_phi*jr3*jr64*jr98*mu*sin_theta - 6*I1_roll*b*cos_phi*jr3*mu*sin_theta - 9*I1_roll*cos_psi*jr11*jr98*mu*sin_phi*sin_psi - 9*I1_roll*cos_theta*jr11*jr63*jr67*mu*sin_theta + I1_roll*jr147*jr761 - 12*I1_yaw*b*cos_phi*jr3*jr63*mu*sin_theta - 6*I1_yaw*b*cos_phi*jr3*mu*sin_theta - 12*I1_yaw*b*jr128*jr225*jr3*mu - 9*I1_yaw*cos_theta*jr11*jr59*mu*sin_theta - 132*I2_pitch*a*cos_phi*cos_psi*cos_theta*jr104*jr3*mu*sin_phi*sin_psi - 30*I2_pitch*a*cos_phi*jr225*jr3*jr67*mu - 78*I2_pitch*a*cos_phi*jr3*jr63*jr64*jr98*mu*sin_theta - 12*I2_pitch*a*cos_phi*jr3*jr63*jr64*mu*sin_theta - 9*I2_pitch*cos_psi*jr104*jr11*mu*sin_phi*sin_psi - 9*I2_pitch*cos_theta*jr11*jr63*jr64*mu*sin_theta + I2_pitch*jr751 - 12*I2_roll*a*cos_phi*cos_psi*cos_theta*jr3*mu*sin_phi*sin_psi - 48*I2_roll*a*cos_phi*cos_psi*jr144*jr3*mu*sin_phi*sin_psi - 30*I2_roll*a*cos_phi*jr225*jr3*jr64*mu - 78*I2_roll*a*cos_phi*jr3*jr63*jr67*jr98*mu*sin_theta - 12*I2_roll*a*cos_phi*jr3*jr63*jr67*mu*sin_theta - 9*I2_roll*cos_psi*jr11*jr98*mu*sin_phi*sin_psi - 9*I2_roll*cos_theta*jr11*jr63*jr67*mu*sin_theta + I2_roll*jr182*jr95 - 78*I2_yaw*a*jr128*jr3*jr98*mu*sin_theta - 9*I2_yaw*cos_theta*jr11*jr59*mu*sin_theta - 6*J2*b*cos_phi*jr2*jr3*m1*mu*sin_theta - 135/2*J2*cos_phi*jr129*jr2*jr21*jr63*m2*mu*sin_theta - 45/2*J2*jr128*jr129*jr2*jr21*jr225*m2*mu - 135*J2*jr128*jr136*jr2*jr21*jr98*m1*mu*sin_theta - b*cos_phi*jr0*m1*sin_theta - 2*b*cos_phi*jr10*m1*mu*sin_theta - 6*cos_phi*jr129*jr3*jr63*m2*mu*sin_theta + jr0*jr54*jr55 + jr104*jr148*jr767*jr95 - 6*jr128*jr129*jr225*jr3*m2*mu - 6*jr128*jr129*jr3*jr98*m2*mu*sin_theta + jr137*jr28*jr748 + (45/2)*jr137*jr471*jr7*jr748 + jr156*jr440*jr748 + jr164*jr28*jr54 + jr164*jr472*jr54 + jr166*jr479*jr763 + jr169*jr317*jr479 + jr180*jr755 + jr182*jr317 + jr183*jr28*jr410 + jr201*jr766*jr77 + jr201*jr766*jr81 + jr211*jr236*jr767*jr95 + jr25*jr547*jr745 + jr272*jr753 + jr274*jr753 + jr336*jr749 + jr410*jr484*jr765 + jr436*jr746 + jr438*jr746 + jr440*jr746*jr87 + 78*jr477*jr754 + jr66*jr756 + jr66*jr764 + jr69*jr756 + jr69*jr764 + jr73*jr758 + jr746*jr747 + jr75*jr758 + jr750*jr90 + jr750*jr91 + jr750*jr92 + jr752*jr77 + jr752*jr81 + jr760*jr91 + jr760*jr92 + jr761*jr762
-    jr769 = -jr497 - jr499 - jr500 - jr501 + jr502 + jr503 + jr504 + jr505 + jr522 - jr524*sin_phi + jr525*sin_phi - jr526*sin_phi + jr527*sin_phi
-    jr770 = I1_yaw*jr490
-    jr771 = I2_yaw*jr490
-    jr772 = jr490*jr65
-    jr773 = jr490*jr68
-    jr774 = jr490*jr72
-    jr775 = jr490*jr74
-    jr776 = -jr486*jr59 - jr487*jr59 + jr488*jr59 + jr489*jr59 - jr491*jr770 - jr491*jr771 + jr491*jr772 + jr491*jr773 + jr491*jr774 + jr491*jr775 + jr495
-    jr777 = jr490*jr67
-    jr778 = I1_pitch*jr777
-    jr779 = jr490*jr64
-    jr780 = I1_roll*jr779
-    jr781 = I2_pitch*jr777
-    jr782 = I2_roll*jr779
-    jr783 = jr740*nu_dot
-    jr784 = jr326*jr59
-    jr785 = jr784*theta_dot
-    jr786 = jr741*nu_dot
-    jr787 = jr332*jr59
-    jr788 = jr787*theta_dot
-    jr789 = jr740*theta_dot
-    jr790 = jr784*nu_dot
-    jr791 = jr741*theta_dot
-    jr792 = jr787*nu_dot
-    jr793 = jr770 + jr771
-    jr794 = jr772 + jr773 + jr774 + jr775 - jr778 - jr780 - jr781 - jr782 - jr783 - jr785 - jr786 - jr788 + jr789 + jr790 + jr791 + jr792 + jr793
-    jr795 = 2*cos_theta
-    jr796 = jr55*jr795
-    jr797 = jr212*jr796
-    jr798 = jr213*jr795
-    jr799 = -jr797 + jr798
-    jr800 = jr542*sin_theta
-    jr801 = jr217*jr800
-    jr802 = jr213*jr800
-    jr803 = 2*jr119
-    jr804 = 2*jr116
-    jr805 = jr776 - jr803*r_dot + jr804*r_dot
-    jr806 = jr556*sin_phi
-    jr807 = jr554*sin_phi
-    jr808 = jr0*jr59
-    jr809 = jr59*jr61
-    jr810 = jr63*jr89
-    jr811 = jr147*jr267
-    jr812 = jr63*jr90
-    jr813 = jr115*jr267
-    jr814 = jr165*jr169
-    jr815 = 15*jr104*jr205
-    jr816 = jr63*jr813
-    jr817 = jr176*jr749
-    jr818 = jr445*jr63
-    jr819 = jr230*jr89
-    jr820 = jr322*jr460
-    jr821 = jr230*jr90
-    jr822 = jr176*jr757
-    jr823 = jr261*jr322*jr440
-    jr824 = jr175*jr63
-    jr825 = 24*jr171
-    jr826 = jr147*jr825
-    jr827 = 36*jr171
-    jr828 = jr238*jr479
-    jr829 = jr176*jr828
-    jr830 = 60*jr171
-    jr831 = jr762*jr94
-    jr832 = -24*I1_pitch*b*cos_phi*cos_psi*cos_theta*jr104*jr3*jr63*mu*sin_psi - 60*I1_pitch*b*cos_phi*cos_psi*cos_theta*jr104*jr3*mu*sin_psi - 12*I1_pitch*b*cos_phi*jr225*jr3*jr67*mu*sin_phi - 48*I1_pitch*b*cos_phi*jr3*jr64*jr98*mu*sin_phi*sin_theta - 12*I1_pitch*b*cos_phi*jr3*jr64*mu*sin_phi*sin_theta - 9*I1_pitch*cos_psi*jr11*jr63*jr98*mu*sin_psi - 9*I1_pitch*cos_theta*jr11*jr67*mu*sin_phi*sin_theta - 24*I1_roll*b*cos_phi*cos_psi*cos_theta*jr3*jr63*mu*sin_psi - 36*I1_roll*b*cos_phi*cos_psi*jr144*jr3*jr63*mu*sin_psi - 12*I1_roll*b*cos_phi*jr225*jr3*jr64*mu*sin_phi - 48*I1_roll*b*cos_phi*jr3*jr67*jr98*mu*sin_phi*sin_theta - 12*I1_roll*b*cos_phi*jr3*jr67*mu*sin_phi*sin_theta - 9*I1_roll*cos_psi*jr104*jr11*mu*sin_psi - 9*I1_roll*cos_theta*jr11*jr64*mu*sin_phi*sin_theta - 24*I2_pitch*a*cos_phi*cos_psi*cos_theta*jr3*jr63*mu*sin_psi - 36*I2_pitch*a*cos_phi*cos_psi*jr144*jr3*jr63*mu*sin_psi - 12*I2_pitch*a*cos_phi*jr225*jr3*jr64*mu*sin_phi - 48*I2_pitch*a*cos_phi*jr3*jr67*jr98*mu*sin_phi*sin_theta - 12*I2_pitch*a*cos_phi*jr3*jr67*mu*sin_phi*sin_theta - 9*I2_pitch*cos_psi*jr11*jr63*jr98*mu*sin_psi - 9*I2_pitch*cos_theta*jr11*jr67*mu*sin_phi*sin_theta - 24*I2_roll*a*cos_phi*cos_psi*cos_theta*jr104*jr3*jr63*mu*sin_psi - 60*I2_roll*a*cos_phi*cos_psi*cos_theta*jr104*jr3*mu*sin_psi - 12*I2_roll*a*cos_phi*jr225*jr3*jr67*mu*sin_phi - 48*I2_roll*a*cos_phi*jr3*jr64*jr98*mu*sin_phi*sin_theta - 12*I2_roll*a*cos_phi*jr3*jr64*mu*sin_phi*sin_theta - 9*I2_roll*cos_psi*jr104*jr11*mu*sin_psi - 9*I2_roll*cos_theta*jr11*jr64*mu*sin_phi*sin_theta + jr104*jr830*jr831 + jr115*jr481*jr825 + jr160*jr820 + jr161*jr820 + jr166*jr481*jr827 + jr169*jr824*jr827 + jr175*jr182 + jr178*jr182 + jr231*jr300*jr826 + jr231*jr724*jr830 + jr231*jr818 + jr264*jr818 + jr286*jr822 + jr286*jr829 + jr288*jr822 + jr288*jr829 + jr300*jr825*jr831 + jr65*jr817 + jr68*jr817 + jr72*jr817 + jr74*jr817 + jr757*jr819 + jr757*jr821 + jr819*jr828 + jr821*jr828 + jr823*jr91 + jr823*jr92 + jr824*jr826
-    jr833 = -jr772 - jr773 - jr774 - jr775 + jr778 + jr780 + jr781 + jr782 + jr783 + jr785 + jr786 + jr788 - jr789 - jr790 - jr791 - jr792 + jr793
-    jr834 = delta_x*delta_y
-    jr835 = jr176*jr83
-    jr836 = 2*phi_dot
-    jr837 = -jr744
-    jr838 = jr755*jr78
-    jr839 = jr61*jr755
-    jr840 = jr247*jr557
-    jr841 = jr82*sin_theta
-    jr842 = jr314*jr85
-    jr843 = jr841*jr842
-    jr844 = jr246*jr555
-    jr845 = delta_y**3
-    jr846 = r**(-8)
-    jr847 = jr132*jr440
-    jr848 = jr115*jr474
-    jr849 = 90*jr185
-    jr850 = 60*jr184
-    jr851 = delta_y*jr39*jr846
-    jr852 = jr147*jr850
-    jr853 = b*cos_phi*jr849
-    jr854 = jr132*jr483
-    jr855 = 150*jr184
-    jr856 = jr846*mu
-    jr857 = cos_phi*jr850
-    jr858 = jr115*jr850
-    jr859 = 240*jr184*jr238
-    jr860 = jr795*jr82
-    jr861 = jr314*jr796
-    jr862 = jr250*jr836
-    jr863 = jr314*jr860
-    jr864 = jr251*jr836
-    jr865 = jr542*m1
-    jr866 = jr542*m2
-    jr867 = jr799 + jr865*nu_dot + jr866*nu_dot
-    jr868 = delta_y*jr22 + jr22*r
-    jr869 = -X0*m3 + delta_y_dot*jr23 + jr23*r_dot
-    jr870 = jr250*r
-    jr871 = jr251*r
-    jr872 = jr314*jr542
-    jr873 = cos_theta*phi_dot
-    jr874 = jr872*jr873
-    jr875 = jr250*jr542
-    jr876 = nu_dot*theta_dot
-    jr877 = jr542*jr873
-    jr878 = jr251*jr542
-    jr879 = jr54*jr82
-    jr880 = jr119*r
-    jr881 = jr116*r
-    jr882 = cos_theta*jr872*nu_dot
-    jr883 = jr490*jr542
-    jr884 = jr543*phi_dot - jr544*phi_dot - jr745*jr872 + jr841*jr872
-    R0_0 = (3/2)*J2*jr2*jr3*m3*mu - dQ0_0 - delta_y*jr9 - jr1 - jr14
-    R1_0 = -dQ0_1 - jr20
-    R2_0 = -dQ0_2
-    R3_0 = -dQ0_3
-    R4_0 = -dQ0_4
-    R5_0 = -dQ0_5
-    R6_0 = 45*J2*delta_x*delta_y*jr2*jr21*m3*mu - dQ0_6 + 12*delta_x*delta_y*jr3*m3*mu - jr20
-    R7_0 = -dQ0_7
-    R8_0 = -dQ0_8
-    R9_0 = -dQ0_9 - jr23
-    R10_0 = -dQ0_10
-    R11_0 = -dQ0_11
-    R12_0 = -dQ0_12
-    R13_0 = -dQ0_13
-    R14_0 = -dQ0_14 - jr23
-    R15_0 = -dQ0_15 - delta_y_dot*jr22 - jr22*r_dot - jr24
-    R0_1 = -dQ1_0 + jr15 - jr19
-    R1_1 = -dQ1_1 - 9*jr12*jr5 - jr31
-    R2_1 = -dQ1_2 - jr33
-    R3_1 = -dQ1_3
-    R4_1 = -dQ1_4
-    R5_1 = -dQ1_5
-    R6_1 = -dQ1_6 + jr44
-    R7_1 = -dQ1_7
-    R8_1 = -dQ1_8 - jr45
-    R9_1 = -dQ1_9
-    R10_1 = -dQ1_10
-    R11_1 = -dQ1_11
-    R12_1 = -dQ1_12
-    R13_1 = -dQ1_13
-    R14_1 = -dQ1_14
-    R15_1 = -dQ1_15 - jr47
-    R0_2 = -dQ2_0
-    R1_2 = -dQ2_1 - jr33
-    R2_2 = (9/2)*J2*jr2*jr3*m3*mu - dQ2_2 - delta_y*jr32 - jr14
-    R3_2 = -dQ2_3
-    R4_2 = -dQ2_4
-    R5_2 = -dQ2_5
-    R6_2 = -dQ2_6 - jr48
-    R7_2 = -dQ2_7
-    R8_2 = -dQ2_8
-    R9_2 = -dQ2_9
-    R10_2 = -dQ2_10
-    R11_2 = -dQ2_11
-    R12_2 = -dQ2_12
-    R13_2 = -dQ2_13
-    R14_2 = -dQ2_14
-    R15_2 = -dQ2_15
-    R0_3 = -dQ3_0
-    R1_3 = -dQ3_1
-    R2_3 = -dQ3_2
-    R3_3 = (15/2)*I1_pitch*b*cos_phi*cos_theta*jr104*jr11*jr67*mu + 21*I1_pitch*b*cos_phi*cos_theta*jr11*jr63*jr64*mu + (63/2)*I1_pitch*b*cos_phi*jr11*jr144*jr63*jr64*mu + 6*I1_pitch*b*cos_theta*jr104*jr11*jr128*jr64*mu + 3*I1_pitch*jr10*jr59*jr64*jr98*mu + 2*I1_pitch*jr63*jr64*nu_dot*theta_dot + I1_pitch*jr64*psi_dot*sin_phi*theta_dot + I1_pitch*jr67*nu_dot*psi_dot*sin_phi + (15/2)*I1_roll*b*cos_phi*cos_theta*jr104*jr11*jr64*mu + 21*I1_roll*b*cos_phi*cos_theta*jr11*jr63*jr67*mu + (63/2)*I1_roll*b*cos_phi*jr11*jr144*jr63*jr67*mu + 6*I1_roll*b*cos_theta*jr104*jr11*jr128*jr67*mu + 3*I1_roll*cos_psi*cos_theta*jr10*mu*sin_phi*sin_psi*sin_theta + 3*I1_roll*jr10*jr59*jr67*jr98*mu + 2*I1_roll*jr63*jr67*nu_dot*theta_dot + I1_roll*jr64*nu_dot*psi_dot*sin_phi + I1_roll*jr67*psi_dot*sin_phi*theta_dot + 18*I1_yaw*b*cos_phi*cos_theta*jr104*jr11*jr63*mu + 6*I1_yaw*b*cos_theta*jr11*jr128*mu + (27/2)*I1_yaw*b*jr11*jr128*jr144*mu + I1_yaw*jr0*jr63 + 3*I1_yaw*jr10*jr63*jr98*mu + 2*I1_yaw*jr59*nu_dot*theta_dot + I1_yaw*jr61*jr63 - I1_yaw*jr71 + I1_yaw*nu_dot*psi_dot*sin_phi + 21*I2_pitch*a*cos_phi*cos_theta*jr104*jr11*jr63*jr64*mu + (3/2)*I2_pitch*a*cos_phi*cos_theta*jr11*mu + 6*I2_pitch*a*cos_theta*jr11*jr128*jr64*mu + 9*I2_pitch*a*jr11*jr128*jr144*jr64*mu + 3*I2_pitch*jr10*jr59*jr64*jr98*mu + 2*I2_pitch*jr63*jr64*nu_dot*theta_dot + I2_pitch*jr64*psi_dot*sin_phi*theta_dot + I2_pitch*jr67*nu_dot*psi_dot*sin_phi + 21*I2_roll*a*cos_phi*cos_theta*jr104*jr11*jr63*jr67*mu + (3/2)*I2_roll*a*cos_phi*cos_theta*jr11*mu + 6*I2_roll*a*cos_theta*jr11*jr128*jr67*mu + 9*I2_roll*a*jr11*jr128*jr144*jr67*mu + 3*I2_roll*cos_psi*cos_theta*jr10*mu*sin_phi*sin_psi*sin_theta + 3*I2_roll*jr10*jr59*jr67*jr98*mu + 2*I2_roll*jr63*jr67*nu_dot*theta_dot + I2_roll*jr64*nu_dot*psi_dot*sin_phi + I2_roll*jr67*psi_dot*sin_phi*theta_dot + 21*I2_yaw*a*cos_phi*cos_theta*jr11*jr63*mu + (3/2)*I2_yaw*a*cos_phi*cos_theta*jr11*mu + 27*I2_yaw*a*cos_phi*jr11*jr144*jr63*mu + 9*I2_yaw*a*cos_theta*jr104*jr11*jr128*mu + I2_yaw*jr0*jr63 + 3*I2_yaw*jr10*jr63*jr98*mu + 2*I2_yaw*jr59*nu_dot*theta_dot + I2_yaw*jr61*jr63 - I2_yaw*jr71 + I2_yaw*nu_dot*psi_dot*sin_phi + (3/2)*J2*a*cos_phi*cos_theta*jr11*jr2*m2*mu + (45/2)*J2*cos_phi*cos_theta*jr104*jr129*jr2*jr4*jr63*m2*mu + (315/4)*J2*cos_phi*cos_theta*jr136*jr2*jr4*jr63*m1*mu + 30*J2*cos_phi*jr136*jr144*jr2*jr4*jr63*m1*mu + (45/4)*J2*cos_theta*jr104*jr128*jr136*jr2*jr4*m1*mu + (45/2)*J2*cos_theta*jr128*jr129*jr2*jr4*m2*mu + (3/2)*J2*jr104*jr2*jr3*jr63*jr76*m1*mu + (3/2)*J2*jr104*jr2*jr3*jr63*jr80*m2*mu + 15*J2*jr128*jr129*jr144*jr2*jr4*m2*mu + 6*J2*jr2*jr3*jr59*jr76*jr98*m1*mu + (9/2)*J2*jr2*jr3*jr59*jr76*m1*mu + 6*J2*jr2*jr3*jr59*jr80*jr98*m2*mu + (9/2)*J2*jr2*jr3*jr59*jr80*m2*mu - X4*jr96 + X6*cos_phi*cos_theta*jr83 + X7*jr58 + a*cos_phi*cos_theta*jr120*m2*mu + b*cos_phi*cos_theta*jr0*m1*r + 9*cos_phi*cos_theta*jr104*jr11*jr129*jr63*m2*mu + (21/2)*cos_phi*cos_theta*jr11*jr136*jr63*m1*mu + 9*cos_phi*jr11*jr129*jr144*jr63*m2*mu - cos_phi*jr173*jr207*jr7 + (9/2)*cos_theta*jr104*jr11*jr128*jr136*m1*mu + 3*cos_theta*jr11*jr128*jr129*m2*mu - dQ3_3 + jr0*jr104*jr59*jr76*m1 + jr0*jr104*jr59*jr80*m2 + jr0*jr59*jr76*jr98*m1 + jr0*jr59*jr80*jr98*m2 - jr0*jr60 - jr0*jr62 - jr0*jr66 - jr0*jr69 - jr0*jr73 - jr0*jr75 + jr10*jr104*jr63*jr76*m1*mu + jr10*jr104*jr63*jr80*m2*mu + 2*jr10*jr59*jr76*jr98*m1*mu + jr10*jr59*jr76*m1*mu + 2*jr10*jr59*jr80*jr98*m2*mu + jr10*jr59*jr80*m2*mu - jr100*jr104 - jr100*jr98 - jr102*jr104 - jr102*jr98 - jr103*jr104 - jr103*jr98 - jr104*jr107 - jr104*jr108 - jr104*jr109 - 18*jr104*jr174*jr187 - jr104*jr179*jr72 - jr104*jr179*jr74 - jr104*jr206*jr66 - jr104*jr206*jr69 + jr104*jr59*jr61*jr76*m1 + jr104*jr59*jr61*jr80*m2 + jr104*jr59*jr76*jr78*m1 + jr104*jr59*jr78*jr80*m2 + 2*jr104*jr63*jr76*m1*nu_dot*theta_dot + 2*jr104*jr63*jr80*m2*nu_dot*theta_dot - jr105*jr131 - jr105*jr172*jr7 - jr105*jr181 - jr105*jr25 - jr107*jr98 - jr108*jr98 - jr109*jr98 + (9/2)*jr11*jr128*jr136*jr144*m1*mu - jr112 - jr114 - jr115*jr164*jr182 - jr118 - jr122 - jr125 - jr127 - jr128*jr138*jr202 - jr131*jr97 - jr132*jr133 - jr132*jr135 - jr133*jr134 - jr134*jr135 - 3*jr138*jr140 - jr142*jr143 - 21*jr147*jr168 - jr149 - jr150 - jr153 - 9/2*jr154*jr155 - 27/2*jr155*jr156 - jr158*jr65 - jr158*jr68 - jr159*jr160 - jr159*jr161 - 9*jr162*jr163 - 9/2*jr163*jr170 - jr164*jr167 - jr164*jr202*jr211 - 27*jr168*jr169 - jr170*jr208*jr209 - jr172*jr7*jr97 - 21/2*jr173*jr174 - jr175*jr177 - jr177*jr178 - jr181*jr97 - 15*jr183*jr186 - jr188*jr189 - jr188*jr190 - jr189*jr204 - jr190*jr204 - jr192 - jr193*jr195 - jr193*jr197 - jr198*jr199 - jr199*jr200 - 315/4*jr201*jr210 - jr219 - jr241 - jr25*jr97 + jr59*jr61*jr76*jr98*m1 + jr59*jr61*jr80*jr98*m2 + jr59*jr76*jr78*jr98*m1 + jr59*jr78*jr80*jr98*m2 - jr60*jr61 - jr61*jr62 - jr61*jr66 - jr61*jr69 - jr61*jr73 - jr61*jr75 + jr63*jr76*jr78*m1 + 2*jr63*jr76*jr98*m1*nu_dot*theta_dot + jr63*jr78*jr80*m2 + 2*jr63*jr80*jr98*m2*nu_dot*theta_dot - jr65*jr88 - jr68*jr88 - jr71*jr89 - jr71*jr90 - jr71*jr91 - jr71*jr92 - jr72*jr88 - jr74*jr88 - jr77*jr79 - jr79*jr81 - jr84*jr86 - jr86*jr87
-    R4_3 = X7*jr244 - dQ3_4 - jr248 - jr305
-    R5_3 = I1_pitch*jr316 + I2_pitch*jr316 + I2_roll*jr345 + X3*(jr321 - jr326 + jr328 - jr332) + X7*jr432 - dQ3_5 + jr0*jr327 + jr0*jr333 + jr104*jr343 + jr104*jr350 + jr160*jr389 + jr161*jr389 - jr175*jr312 + jr175*jr313 - jr178*jr312 + jr178*jr313 + jr198*jr367 + jr198*jr421 + jr200*jr367 + jr200*jr421 + jr226*jr402*jr59 + jr231*jr312 - jr231*jr313 + jr235*jr386 + jr236*jr405 + jr264*jr312 - jr264*jr313 + jr272*jr277 + jr274*jr277 + jr275*jr355 + jr286*jr416 + jr288*jr416 + jr292*jr386 - jr306*jr309 + jr307*jr65 + jr307*jr68 + jr307*jr72 + jr307*jr74 - jr307*jr89 - jr307*jr91 - jr307*jr92 + jr317*jr344 - jr318 - jr319 - jr324 - jr325 + jr327*jr61 - jr330 - jr331 + jr333*jr61 + jr335*jr65 + jr335*jr68 + jr335*jr72 + jr335*jr74 - jr337 - jr339 - jr340 - jr341 - jr343 - jr346 + jr347 + jr348 - jr349 - jr350 + jr352*jr64 - jr352*jr67 - jr354 + jr355*jr408 + jr357*jr66 + jr357*jr69 - jr358 + jr359*jr360 - jr361 + jr362*jr408 - jr363 + jr364*jr72 + jr364*jr74 - jr365 - jr366 - jr368 - jr369 + jr370*jr373 + jr371*jr59 - jr375 + jr376*jr425 - jr377 + jr378*jr426 + jr380*jr384 - jr381 + jr382*jr384 - jr383 - jr387 - jr388 - jr390 - jr392 - jr393 - jr394 - jr395 + jr396*jr91 + jr396*jr92 + jr397*jr73 + jr397*jr75 - jr399 - jr400 - jr401 - jr403 - jr404 - jr406 - jr407 - jr409 + jr412*jr66 + jr412*jr69 - jr415 - jr417 - jr418 - jr419 - jr420 - jr422 - jr423 - jr424 - jr427
-    R6_3 = X7*jr434 - dQ3_6 - jr485
-    R7_3 = -dQ3_7
-    R8_3 = -dQ3_8
-    R9_3 = -dQ3_9
-    R10_3 = -dQ3_10
-    R11_3 = -dQ3_11 - jr486 - jr487 + jr488 + jr489 - jr493 - jr494 + jr495
-    R12_3 = -dQ3_12 + jr523
-    R13_3 = -dQ3_13 + jr506 + jr507 - jr508 - jr509 + jr510 + jr511 + jr512 + jr513 - jr514 - jr515 - jr516 - jr517 + jr524 - jr525 + jr526 - jr527 - jr529 - jr531 - jr532 - jr533 + jr535 + jr537 + jr538 + jr539
-    R14_3 = -dQ3_14 - jr540 + jr541
-    R15_3 = 2*b*m1*r_dot*sin_phi*sin_theta - dQ3_15 - jr214*jr250 - jr523 - jr545
-    R0_4 = -dQ4_0
-    R1_4 = -dQ4_1
-    R2_4 = -dQ4_2
-    R3_4 = -X3*jr96 - X4*jr549 + X7*jr550 - dQ4_3 - jr305 - jr572
-    R4_4 = I2_pitch*jr573 + I2_roll*jr573 + X7*jr602 - dQ4_4 - jr112 - jr114 + jr115*jr164*jr209 + jr115*jr249 + jr116*jr121 + jr116*jr191 + jr117*jr119 - jr118 - jr122 + jr124*jr603 - 3*jr125 + jr126*jr603 - 3*jr127 + jr137*jr604 + jr138*jr612 + jr142*jr596 - jr147*jr254*jr84 - jr149 - jr150 + jr151*jr593 + jr152*jr156 + jr152*jr164 - jr152*jr173 - jr153 - jr154*jr604 - jr156*jr593 - jr162*jr596 - jr170*jr208*jr622 - jr170*jr612 + jr175*jr610 - jr183*jr621 - jr189*jr607 - jr189*jr614 + jr189*jr617 - jr190*jr607 - jr190*jr614 + jr190*jr617 - jr192 + jr194*jr619 - jr195*jr618 + jr196*jr619 - jr197*jr618 + jr198*jr597 - jr198*jr608 + jr200*jr597 - jr200*jr608 + (105/2)*jr205*jr465 + jr205*jr606*jr90 - jr209*jr210 + jr216 - jr218 - jr221 - jr222 - jr223 - jr224 - jr226*jr599 - jr231*jr610 - jr233*jr254 + jr234*jr601 - jr235*jr592 - jr235*jr611 - jr236*jr601 + jr254*jr589 + jr254*jr591 + jr257*jr60 + jr257*jr62 + jr257*jr66 + jr257*jr69 + jr257*jr73 + jr257*jr75 + jr264*jr579 + jr293*jr592 + jr293*jr611 + jr574*jr578 - jr576 - jr580 + jr581 - jr582 + jr583 - jr584 + jr585 - jr586 + jr587 - jr588 - jr595*jr89 - jr595*jr90 + jr598*jr600 + jr605*jr66 + jr605*jr69 + jr613*jr66 + jr613*jr69 - jr615*jr66 - jr615*jr69 + jr620*jr621 + jr622*jr623
-    R5_4 = X4*jr743 + X7*jr742 + b*jr718*jr89 + cos_phi*jr692*jr710 - dQ4_5 + jr198*jr733 + jr200*jr733 + jr235*jr713 + jr235*jr738 + jr286*jr701 + jr286*jr718 + jr288*jr701 + jr288*jr718 + jr293*jr699 + jr360*jr718 + jr54*jr714 + jr582*sin_phi + jr584*sin_phi + jr586*sin_phi + jr588*sin_phi + jr625 - jr626 + jr627 - jr628 + jr63*jr678 + jr63*jr680 + jr631 + jr634 + jr636 + jr638 + jr64*jr705 - jr642 + jr645 + jr646 - jr647 - jr648 + jr649 + jr65*jr682 + jr65*jr725 + jr650 - jr651 - jr652 - jr653 - jr654 - jr655 + jr658 - jr661 - jr662 + jr663 - jr664 + jr665 + jr666 - jr667 + jr668 - jr669 - jr67*jr705 - jr670 + jr671 - jr672 + jr673 + jr674 - jr675 + jr678 - jr679 + jr68*jr682 + jr68*jr725 + jr680 - jr681 + jr682*jr72 + jr682*jr74 - jr683 - jr684 - jr685 - jr686 - jr687 - jr688 - jr689 - jr690 + jr691*jr692 + jr693*jr89 + jr693*jr90 - jr694 - jr696 - jr697 - jr698 - jr700 - jr702 - jr703 - jr704 + jr706*jr712 - jr709 + jr710*jr712 - jr711 + jr712*jr736 - jr715 + jr716*jr731 - jr717 - jr719 - jr720 - jr721 - jr722 - jr727 - jr728 - jr730 - jr732 - jr734 - jr735 - jr737 - jr739
-    R6_4 = X7*jr744 - dQ4_6 - jr768
-    R7_4 = -dQ4_7
-    R8_4 = -dQ4_8
-    R9_4 = -dQ4_9
-    R10_4 = -dQ4_10
-    R11_4 = -dQ4_11 - jr769
-    R12_4 = -dQ4_12 - jr776
-    R13_4 = -dQ4_13 - jr794
-    R14_4 = -dQ4_14 - jr799
-    R15_4 = -dQ4_15 - jr801 + jr802 + jr805
-    R0_5 = -dQ5_0
-    R1_5 = -dQ5_1
-    R2_5 = -dQ5_2
-    R3_5 = 6*I1_pitch*b*cos_psi*cos_theta*jr104*jr11*jr252*mu*sin_psi + 15*I1_pitch*b*cos_psi*cos_theta*jr104*jr11*mu*sin_phi*sin_psi + 12*I1_pitch*b*cos_psi*cos_theta*jr11*jr59*mu*sin_phi*sin_psi + 18*I1_pitch*b*cos_psi*jr11*jr144*jr59*mu*sin_phi*sin_psi + 3*I1_pitch*b*jr11*jr225*jr59*jr64*mu + 3*I1_pitch*b*jr11*jr225*jr63*jr67*mu + 12*I1_pitch*b*jr11*jr59*jr67*jr98*mu*sin_theta + 3*I1_pitch*b*jr11*jr59*jr67*mu*sin_theta + 12*I1_pitch*b*jr11*jr63*jr64*jr98*mu*sin_theta + 3*I1_pitch*b*jr11*jr63*jr64*mu*sin_theta + 4*I1_pitch*cos_phi*cos_psi*nu_dot*sin_phi*sin_psi*theta_dot + 3*I1_pitch*cos_phi*cos_theta*jr10*jr64*mu*sin_theta + I1_pitch*jr64*nu_dot*phi_dot*sin_phi + I1_pitch*jr67*phi_dot*sin_phi*theta_dot + 12*I1_roll*b*cos_psi*cos_theta*jr104*jr11*jr59*mu*sin_phi*sin_psi + 6*I1_roll*b*cos_psi*cos_theta*jr11*jr252*mu*sin_psi + 9*I1_roll*b*cos_psi*jr11*jr144*jr252*mu*sin_psi + 3*I1_roll*b*jr11*jr225*jr59*jr67*mu + 3*I1_roll*b*jr11*jr225*jr63*jr64*mu + 12*I1_roll*b*jr11*jr59*jr64*jr98*mu*sin_theta + 3*I1_roll*b*jr11*jr59*jr64*mu*sin_theta + 12*I1_roll*b*jr11*jr63*jr67*jr98*mu*sin_theta + 3*I1_roll*b*jr11*jr63*jr67*mu*sin_theta + 2*I1_roll*cos_phi*cos_psi*jr0*sin_phi*sin_psi + 6*I1_roll*cos_phi*cos_psi*jr10*jr98*mu*sin_phi*sin_psi + 2*I1_roll*cos_phi*cos_psi*jr61*sin_phi*sin_psi + 3*I1_roll*cos_phi*cos_theta*jr10*jr67*mu*sin_theta + I1_roll*jr64*phi_dot*sin_phi*theta_dot + I1_roll*jr67*nu_dot*phi_dot*sin_phi + I1_yaw*phi_dot*sin_phi*theta_dot + 12*I2_pitch*a*cos_psi*cos_theta*jr104*jr11*jr59*mu*sin_phi*sin_psi + 6*I2_pitch*a*cos_psi*cos_theta*jr11*jr252*mu*sin_psi + 9*I2_pitch*a*cos_psi*jr11*jr144*jr252*mu*sin_psi + 3*I2_pitch*a*jr11*jr225*jr59*jr67*mu + 3*I2_pitch*a*jr11*jr225*jr63*jr64*mu + 12*I2_pitch*a*jr11*jr59*jr64*jr98*mu*sin_theta + 3*I2_pitch*a*jr11*jr59*jr64*mu*sin_theta + 12*I2_pitch*a*jr11*jr63*jr67*jr98*mu*sin_theta + 3*I2_pitch*a*jr11*jr63*jr67*mu*sin_theta + 4*I2_pitch*cos_phi*cos_psi*nu_dot*sin_phi*sin_psi*theta_dot + 3*I2_pitch*cos_phi*cos_theta*jr10*jr64*mu*sin_theta + I2_pitch*jr64*nu_dot*phi_dot*sin_phi + I2_pitch*jr67*phi_dot*sin_phi*theta_dot + 6*I2_roll*a*cos_psi*cos_theta*jr104*jr11*jr252*mu*sin_psi + 15*I2_roll*a*cos_psi*cos_theta*jr104*jr11*mu*sin_phi*sin_psi + 12*I2_roll*a*cos_psi*cos_theta*jr11*jr59*mu*sin_phi*sin_psi + 18*I2_roll*a*cos_psi*jr11*jr144*jr59*mu*sin_phi*sin_psi + 3*I2_roll*a*jr11*jr225*jr59*jr64*mu + 3*I2_roll*a*jr11*jr225*jr63*jr67*mu + 12*I2_roll*a*jr11*jr59*jr67*jr98*mu*sin_theta + 3*I2_roll*a*jr11*jr59*jr67*mu*sin_theta + 12*I2_roll*a*jr11*jr63*jr64*jr98*mu*sin_theta + 3*I2_roll*a*jr11*jr63*jr64*mu*sin_theta + 2*I2_roll*cos_phi*cos_psi*jr0*sin_phi*sin_psi + 6*I2_roll*cos_phi*cos_psi*jr10*jr98*mu*sin_phi*sin_psi + 2*I2_roll*cos_phi*cos_psi*jr61*sin_phi*sin_psi + 3*I2_roll*cos_phi*cos_theta*jr10*jr67*mu*sin_theta + I2_roll*jr64*phi_dot*sin_phi*theta_dot + I2_roll*jr67*nu_dot*phi_dot*sin_phi + I2_yaw*phi_dot*sin_phi*theta_dot - X4*jr552 + X7*cos_phi*jr551 - dQ5_3 - jr318 - jr319 - jr324 - jr325 - jr330 - jr331 - jr337 - jr339 - jr340 - jr341 - jr343 - jr346 - jr349 - jr350 - jr354 - jr358 - jr361 - jr363 - jr365 - jr366 - jr368 - jr369 - jr375 - jr377 - jr381 - jr383 - jr387 - jr388 - jr390 - jr392 - jr393 - jr394 - jr395 - jr399 - jr400 - jr401 - jr403 - jr404 - jr406 - jr407 - jr409 - jr415 - jr417 - jr418 - jr419 - jr420 - jr422 - jr423 - jr424 - jr427 - jr439*jr554 - jr546*jr554 - jr65*jr806 - jr68*jr806 - jr72*jr806 - jr74*jr806 - jr807*jr89 - jr807*jr90 - jr807*jr91 - jr807*jr92
-    R4_5 = 6*I1_pitch*b*cos_phi*cos_psi*jr11*jr225*jr63*mu*sin_psi + 15*I1_pitch*b*cos_phi*cos_psi*jr11*jr225*mu*sin_psi + 33*I1_pitch*b*cos_phi*cos_theta*jr104*jr11*jr64*mu*sin_phi + 3*I1_pitch*b*cos_phi*cos_theta*jr11*jr67*mu*sin_phi + 12*I1_pitch*b*cos_phi*jr11*jr144*jr67*mu*sin_phi + 6*I1_pitch*cos_psi*cos_theta*jr10*jr63*mu*sin_psi*sin_theta + 6*I1_pitch*cos_psi*cos_theta*jr10*mu*sin_psi*sin_theta + 3*I1_pitch*jr10*jr104*jr67*mu*sin_phi + 3*I1_pitch*jr10*jr64*jr98*mu*sin_phi + 39*I1_roll*b*cos_phi*cos_psi*jr11*jr63*jr98*mu*sin_psi*sin_theta + 6*I1_roll*b*cos_phi*cos_psi*jr11*jr63*mu*sin_psi*sin_theta + 30*I1_roll*b*cos_phi*cos_psi*jr11*jr98*mu*sin_psi*sin_theta + 33*I1_roll*b*cos_phi*cos_theta*jr104*jr11*jr67*mu*sin_phi + 3*I1_roll*b*cos_phi*cos_theta*jr11*jr64*mu*sin_phi + 12*I1_roll*b*cos_phi*jr11*jr144*jr64*mu*sin_phi + 3*I1_roll*jr10*jr104*jr64*mu*sin_phi + 3*I1_roll*jr10*jr67*jr98*mu*sin_phi + 39*I2_pitch*a*cos_phi*cos_psi*jr11*jr63*jr98*mu*sin_psi*sin_theta + 6*I2_pitch*a*cos_phi*cos_psi*jr11*jr63*mu*sin_psi*sin_theta + 30*I2_pitch*a*cos_phi*cos_psi*jr11*jr98*mu*sin_psi*sin_theta + 33*I2_pitch*a*cos_phi*cos_theta*jr104*jr11*jr67*mu*sin_phi + 3*I2_pitch*a*cos_phi*cos_theta*jr11*jr64*mu*sin_phi + 12*I2_pitch*a*cos_phi*jr11*jr144*jr64*mu*sin_phi + 6*I2_pitch*cos_psi*cos_theta*jr10*jr63*mu*sin_psi*sin_theta + 6*I2_pitch*cos_psi*cos_theta*jr10*mu*sin_psi*sin_theta + 3*I2_pitch*jr10*jr104*jr67*mu*sin_phi + 3*I2_pitch*jr10*jr64*jr98*mu*sin_phi + 6*I2_roll*a*cos_phi*cos_psi*jr11*jr225*jr63*mu*sin_psi + 15*I2_roll*a*cos_phi*cos_psi*jr11*jr225*mu*sin_psi + 33*I2_roll*a*cos_phi*cos_theta*jr104*jr11*jr64*mu*sin_phi + 3*I2_roll*a*cos_phi*cos_theta*jr11*jr67*mu*sin_phi + 12*I2_roll*a*cos_phi*jr11*jr144*jr67*mu*sin_phi + 3*I2_roll*jr10*jr104*jr64*mu*sin_phi + 3*I2_roll*jr10*jr67*jr98*mu*sin_phi - dQ5_4 - jr679 - jr681 - jr683 - jr684 - jr685 - jr686 - jr687 - jr688 - jr689 - jr690 - jr694 - jr696 - jr697 - jr698 - jr700 - jr702 - jr703 - jr704 - jr709 - jr711 - jr715 - jr717 - jr719 - jr720 - jr721 - jr722 - jr727 - jr728 - jr730 - jr732 - jr734 - jr735 - jr737 - jr739
-    R5_5 = 6*I1_pitch*b*cos_phi*cos_theta*jr104*jr11*jr63*jr67*mu + 15*I1_pitch*b*cos_phi*cos_theta*jr104*jr11*jr67*mu + 6*I1_pitch*b*cos_phi*cos_theta*jr11*jr63*jr64*mu + 9*I1_pitch*b*cos_phi*jr11*jr144*jr63*jr64*mu + 4*I1_pitch*cos_phi*cos_psi*nu_dot*phi_dot*sin_psi + 3*I1_pitch*jr10*jr104*jr64*mu + 3*I1_pitch*jr10*jr63*jr67*jr98*mu + 2*I1_pitch*jr59*jr67*nu_dot*theta_dot + I1_pitch*jr67*jr78 + 6*I1_roll*b*cos_phi*cos_theta*jr104*jr11*jr63*jr64*mu + 15*I1_roll*b*cos_phi*cos_theta*jr104*jr11*jr64*mu + 6*I1_roll*b*cos_phi*cos_theta*jr11*jr63*jr67*mu + 9*I1_roll*b*cos_phi*jr11*jr144*jr63*jr67*mu + 4*I1_roll*cos_phi*cos_psi*phi_dot*sin_psi*theta_dot + 12*I1_roll*cos_psi*cos_theta*jr10*mu*sin_phi*sin_psi*sin_theta + 3*I1_roll*jr10*jr104*jr67*mu + 3*I1_roll*jr10*jr63*jr64*jr98*mu + 2*I1_roll*jr59*jr64*nu_dot*theta_dot + I1_roll*jr64*jr78 + 6*I2_pitch*a*cos_phi*cos_theta*jr104*jr11*jr63*jr64*mu + 15*I2_pitch*a*cos_phi*cos_theta*jr104*jr11*jr64*mu + 6*I2_pitch*a*cos_phi*cos_theta*jr11*jr63*jr67*mu + 9*I2_pitch*a*cos_phi*jr11*jr144*jr63*jr67*mu + 4*I2_pitch*cos_phi*cos_psi*nu_dot*phi_dot*sin_psi + 3*I2_pitch*jr10*jr104*jr64*mu + 3*I2_pitch*jr10*jr63*jr67*jr98*mu + 2*I2_pitch*jr59*jr67*nu_dot*theta_dot + I2_pitch*jr67*jr78 + 6*I2_roll*a*cos_phi*cos_theta*jr104*jr11*jr63*jr67*mu + 15*I2_roll*a*cos_phi*cos_theta*jr104*jr11*jr67*mu + 6*I2_roll*a*cos_phi*cos_theta*jr11*jr63*jr64*mu + 9*I2_roll*a*cos_phi*jr11*jr144*jr63*jr64*mu + 4*I2_roll*cos_phi*cos_psi*phi_dot*sin_psi*theta_dot + 12*I2_roll*cos_psi*cos_theta*jr10*mu*sin_phi*sin_psi*sin_theta + 3*I2_roll*jr10*jr104*jr67*mu + 3*I2_roll*jr10*jr63*jr64*jr98*mu + 2*I2_roll*jr59*jr64*nu_dot*theta_dot + I2_roll*jr64*jr78 - dQ5_5 - jr104*jr198*jr816 - jr104*jr200*jr816 - jr104*jr66*jr811 - jr104*jr69*jr811 - jr167*jr189 - jr167*jr190 - jr175*jr643 - jr178*jr643 - jr189*jr813 - jr190*jr813 - jr231*jr640 - jr241 - jr264*jr640 - jr294*jr616 - jr297*jr616 - jr576 - jr580 - jr582 - jr584 - jr586 - jr588 - jr630 - jr633 - jr635 - jr637 - jr65*jr815 - jr68*jr815 - jr808*jr89 - jr808*jr90 - jr808*jr91 - jr808*jr92 - jr809*jr89 - jr809*jr90 - jr809*jr91 - jr809*jr92 - jr810*jr811 - jr810*jr814 - jr811*jr812 - jr812*jr814
-    R6_5 = -dQ5_6 - jr832
-    R7_5 = -dQ5_7
-    R8_5 = -dQ5_8
-    R9_5 = -dQ5_9
-    R10_5 = -dQ5_10
-    R11_5 = -dQ5_11 - jr506 - jr507 + jr508 + jr509 - jr510 - jr511 - jr512 - jr513 + jr514 + jr515 + jr516 + jr517 - jr524 + jr525 - jr526 + jr527 + jr529 + jr531 + jr532 + jr533 - jr535 - jr537 - jr538 - jr539
-    R12_5 = -dQ5_12 - jr833
-    R13_5 = -dQ5_13
-    R14_5 = -dQ5_14
-    R15_5 = -dQ5_15 + jr833
-    R0_6 = -dQ6_0 + jr15 - jr17 - jr18 + 12*jr37*jr834 + 45*jr40*jr834
-    R1_6 = -dQ6_1 + jr44
-    R2_6 = -dQ6_2 - jr48
-    R3_6 = X3*cos_phi*cos_theta*jr83 - X4*jr835 + X7*jr433 + 2*a*cos_phi*m2*nu_dot*phi_dot*sin_theta + 2*a*cos_theta*m2*nu_dot*sin_phi*theta_dot + 2*b*cos_phi*m1*phi_dot*sin_theta*theta_dot + b*cos_theta*jr61*m1*sin_phi + b*cos_theta*jr78*m1*sin_phi - dQ6_3 - jr213*jr836*sin_theta - jr246*jr86 - jr247*jr61 - jr247*jr78 - jr314*jr745*jr836 - jr485
-    R4_6 = -X3*jr835 + X4*cos_phi*cos_theta*jr83 + X7*jr837 + 2*a*cos_phi*m2*nu_dot*sin_theta*theta_dot + 2*a*cos_theta*m2*nu_dot*phi_dot*sin_phi + b*cos_phi*jr61*m1*sin_theta + b*cos_phi*jr78*m1*sin_theta + 2*b*cos_theta*m1*phi_dot*sin_phi*theta_dot - dQ6_4 - jr768 - jr838 - jr839 - jr840 - jr843 - jr844
-    R5_6 = -dQ6_5 - jr832
-    R6_6 = 60*I1_pitch*b*cos_phi*cos_psi*jr225*jr4*mu*sin_phi*sin_psi + 60*I1_pitch*b*cos_phi*cos_theta*jr104*jr4*jr63*jr64*mu + 30*I1_pitch*b*cos_phi*cos_theta*jr4*mu + 36*I1_pitch*cos_psi*cos_theta*jr3*mu*sin_phi*sin_psi*sin_theta + 18*I1_pitch*jr104*jr3*jr67*mu - I1_pitch*jr28 + 18*I1_pitch*jr3*jr63*jr64*jr98*mu + 240*I1_roll*b*cos_phi*cos_psi*jr4*jr98*mu*sin_phi*sin_psi*sin_theta + 60*I1_roll*b*cos_phi*cos_psi*jr4*mu*sin_phi*sin_psi*sin_theta + 60*I1_roll*b*cos_phi*cos_theta*jr104*jr4*jr63*jr67*mu + 30*I1_roll*b*cos_phi*cos_theta*jr4*mu + 18*I1_roll*jr104*jr3*jr64*mu - I1_roll*jr28 + 18*I1_roll*jr3*jr63*jr67*jr98*mu + 60*I1_yaw*b*cos_phi*cos_theta*jr4*jr63*mu + 30*I1_yaw*b*cos_phi*cos_theta*jr4*mu + 60*I1_yaw*b*cos_theta*jr104*jr128*jr4*mu - I1_yaw*jr28 + 18*I1_yaw*jr3*jr59*jr98*mu + 240*I2_pitch*a*cos_phi*cos_psi*jr4*jr98*mu*sin_phi*sin_psi*sin_theta + 60*I2_pitch*a*cos_phi*cos_psi*jr4*mu*sin_phi*sin_psi*sin_theta + 150*I2_pitch*a*cos_phi*cos_theta*jr104*jr4*jr67*mu + 60*I2_pitch*a*cos_phi*cos_theta*jr4*jr63*jr64*mu + 90*I2_pitch*a*cos_phi*jr144*jr4*jr63*jr64*mu + 36*I2_pitch*cos_psi*cos_theta*jr3*mu*sin_phi*sin_psi*sin_theta + 18*I2_pitch*jr104*jr3*jr67*mu + 18*I2_pitch*jr3*jr63*jr64*jr98*mu + 60*I2_roll*a*cos_phi*cos_psi*jr225*jr4*mu*sin_phi*sin_psi + 150*I2_roll*a*cos_phi*cos_theta*jr104*jr4*jr64*mu + 60*I2_roll*a*cos_phi*cos_theta*jr4*jr63*jr67*mu + 90*I2_roll*a*cos_phi*jr144*jr4*jr63*jr67*mu + 18*I2_roll*jr104*jr3*jr64*mu + 18*I2_roll*jr3*jr63*jr67*jr98*mu + 90*I2_yaw*a*jr128*jr144*jr4*mu + 18*I2_yaw*jr3*jr59*jr98*mu + 30*J2*b*cos_phi*cos_theta*jr2*jr4*m1*mu + (945/2)*J2*cos_phi*cos_theta*jr129*jr2*jr63*jr846*m2*mu + (315/2)*J2*cos_theta*jr104*jr128*jr129*jr2*jr846*m2*mu + (45/2)*J2*jr104*jr2*jr21*jr59*jr76*m1*mu + (45/2)*J2*jr104*jr2*jr21*jr59*jr80*m2*mu + 210*J2*jr128*jr136*jr144*jr2*jr846*m1*mu + (45/2)*J2*jr2*jr21*jr34*m3*mu + (135/2)*J2*jr2*jr21*jr35*m3*mu + (135/2)*J2*jr2*jr21*jr63*jr76*m1*mu + (135/2)*J2*jr2*jr21*jr63*jr80*m2*mu + 210*J2*jr2*jr845*jr846*m3*mu + 6*b*cos_phi*cos_theta*jr11*m1*mu + 30*cos_phi*cos_theta*jr129*jr4*jr63*m2*mu + 30*cos_theta*jr104*jr128*jr129*jr4*m2*mu - dQ6_6 + 6*delta_y*jr11*m3*mu - jr104*jr189*jr858 - jr104*jr190*jr858 + 6*jr104*jr3*jr59*jr76*m1*mu + 6*jr104*jr3*jr59*jr80*m2*mu - jr106 - 945/2*jr115*jr164*jr7*jr856 - jr116*jr267 - jr116*jr475 + 30*jr128*jr129*jr144*jr4*m2*mu - jr130*m1 - jr130*m2 - jr138*jr208*jr474 - jr142*jr208*jr850 - 210*jr144*jr765*jr856 - jr156*jr848 - jr164*jr848 - jr176*jr293*jr857 - jr176*jr293*jr859 - jr180*m1 - jr180*m2 - jr183*jr207 - jr194*jr854 - jr196*jr854 - jr236*jr848 - jr264*jr575*jr827 + 6*jr3*jr34*m3*mu + 6*jr3*jr35*m3*mu + 6*jr3*jr63*jr76*m1*mu + 6*jr3*jr63*jr80*m2*mu - jr31 - jr34*jr43 - 315/2*jr34*jr851 - jr35*jr43 - 945/2*jr35*jr851 - 12*jr38 - jr41 - jr42*jr845 - jr436 - jr438 - jr474*jr762 - jr578*jr827 - jr589*jr850 - jr590*jr859 - jr591*jr850 - jr600*jr857 - 315/2*jr623*jr7*jr856 - jr66*jr852 - jr66*jr853 - jr69*jr852 - jr69*jr853 - jr726*jr855 - jr729*jr855 - jr731*jr763*jr850 - jr747 - jr754*jr849 - jr77*jr847 - jr81*jr847 - jr99
-    R7_6 = -dQ6_7
-    R8_6 = -dQ6_8 - jr45
-    R9_6 = -dQ6_9
-    R10_6 = -dQ6_10
-    R11_6 = 2*a*cos_phi*cos_theta*m2*phi_dot + 2*b*m1*sin_phi*sin_theta*theta_dot - dQ6_11 - 2*jr250*theta_dot - jr490*jr860 + jr540 - jr541
-    R12_6 = -dQ6_12 - jr797 + jr798 + jr861 - jr862 - jr863 + jr864
-    R13_6 = -dQ6_13
-    R14_6 = -dQ6_14
-    R15_6 = -dQ6_15 - jr47 - jr861 + jr862 + jr863 - jr864 - jr867
-    R0_7 = X1*m3 + X6*m3 - dQ7_0 + 2*delta_x*jr15 + delta_x_dot*jr23
-    R1_7 = X7*jr868 - dQ7_1 + jr869
-    R2_7 = -dQ7_2
-    R3_7 = X3*jr58 + X4*jr550 + X6*jr433 + X7*(2*a*cos_theta*m2*r*sin_phi - jr543 - jr549) - dQ7_3 - jr213*jr877 + jr217*jr877 - jr55*jr874 + jr572 + jr61*jr870 - jr61*jr871 + jr78*jr870 - jr78*jr871 + jr82*jr874 - jr875*jr876 + jr876*jr878
-    R4_7 = X3*jr244 + X4*jr602 + X6*jr837 + X7*(jr542*jr755 - jr542*jr879) - dQ7_4 + jr219 + jr55*jr882 - jr554*jr875 + jr554*jr878 + jr556*jr875 - jr556*jr878 + jr61*jr880 - jr61*jr881 + jr78*jr880 - jr78*jr881 - jr82*jr882
-    R5_7 = X3*jr432 + X4*jr742 + X7*jr743 - dQ7_5 - jr625 + jr626 - jr627 + jr628 - jr631 - jr634 - jr636 - jr638 + jr642 - jr645 - jr646 + jr647 + jr648 - jr649 - jr650 + jr651 + jr652 + jr653 + jr654 + jr655 - jr658 + jr661 + jr662 - jr663 + jr664 - jr665 - jr666 + jr667 - jr668 + jr669 + jr670 - jr671 + jr672 - jr673 - jr674 + jr675
-    R6_7 = X3*jr434 + X4*jr744 + X7*(jr803 - jr804 + jr865 + jr866 + jr868) - dQ7_6 + jr245*m1 + jr245*m2 + jr246*jr557 + jr247*jr555 + jr61*jr879 + jr745*jr842 + jr78*jr879 - jr838 - jr839 - jr840 - jr843 - jr844 + jr869
-    R7_7 = -dQ7_7
-    R8_7 = -dQ7_8 + jr24
-    R9_7 = -dQ7_9 + jr46
-    R10_7 = -dQ7_10
-    R11_7 = -dQ7_11 + jr543*theta_dot - jr544*theta_dot + jr545 - jr745*jr883 + jr769 + jr841*jr883
-    R12_7 = -dQ7_12 + jr776 + jr801 - jr802 + jr884
-    R13_7 = -dQ7_13 + jr794
-    R14_7 = -dQ7_14 + jr46 + jr867
-    R15_7 = -dQ7_15 + 2*delta_x*delta_x_dot*m3 + 2*delta_y*delta_y_dot*m3 + 2*delta_y*m3*r_dot + 2*delta_y_dot*m3*r - jr805 - jr884 + 2*m1*r*r_dot + 2*m2*r*r_dot + 2*m3*r*r_dot
-    if I1_yaw + I2_yaw == 0.0:  # no inertia about the boom: psi'' = 0 (docs/three-d.md)
-        M0_5 = 0.0
-        M1_5 = 0.0
-        M2_5 = 0.0
-        M3_5 = 0.0
-        M4_5 = 0.0
-        M5_6 = 0.0
-        M5_7 = 0.0
-        M5_5 = 1.0
-        R0_5 = 0.0
-        R1_5 = 0.0
-        R2_5 = 0.0
-        R3_5 = 0.0
-        R4_5 = 0.0
-        R5_5 = 0.0
-        R6_5 = 0.0
-        R7_5 = 0.0
-        R8_5 = 0.0
-        R9_5 = 0.0
-        R10_5 = 0.0
-        R11_5 = 0.0
-        R12_5 = 0.0
-        R13_5 = 0.0
-        R14_5 = 0.0
-        R15_5 = 0.0
-    J[:, :] = 0.0
-    J[0, 8] = 1.0
-    J[1, 9] = 1.0
-    J[2, 10] = 1.0
-    J[3, 11] = 1.0
-    J[4, 12] = 1.0
-    J[5, 13] = 1.0
-    J[6, 14] = 1.0
-    J[7, 15] = 1.0
-    R0_1 -= L1_0 * R0_0
-    R0_2 -= L2_0 * R0_0
-    R0_3 -= L3_0 * R0_0
-    R0_4 -= L4_0 * R0_0
-    R0_5 -= L5_0 * R0_0
-    R0_6 -= L6_0 * R0_0
-    R0_7 -= L7_0 * R0_0
-    R0_2 -= L2_1 * R0_1
-    R0_3 -= L3_1 * R0_1
-    R0_4 -= L4_1 * R0_1
-    R0_5 -= L5_1 * R0_1
-    R0_6 -= L6_1 * R0_1
-    R0_7 -= L7_1 * R0_1
-    R0_3 -= L3_2 * R0_2
-    R0_4 -= L4_2 * R0_2
-    R0_5 -= L5_2 * R0_2
-    R0_6 -= L6_2 * R0_2
-    R0_7 -= L7_2 * R0_2
-    R0_4 -= L4_3 * R0_3
-    R0_5 -= L5_3 * R0_3
-    R0_6 -= L6_3 * R0_3
-    R0_7 -= L7_3 * R0_3
-    R0_5 -= L5_4 * R0_4
-    R0_6 -= L6_4 * R0_4
-    R0_7 -= L7_4 * R0_4
-    R0_6 -= L6_5 * R0_5
-    R0_7 -= L7_5 * R0_5
-    R0_7 -= L7_6 * R0_6
-    Z0_7 = (R0_7) / M7_7
-    Z0_6 = (R0_6 - M6_7 * Z0_7) / M6_6
-    Z0_5 = (R0_5 - M5_6 * Z0_6 - M5_7 * Z0_7) / M5_5
-    Z0_4 = (R0_4 - M4_5 * Z0_5 - M4_6 * Z0_6 - M4_7 * Z0_7) / M4_4
-    Z0_3 = (R0_3 - M3_4 * Z0_4 - M3_5 * Z0_5 - M3_6 * Z0_6 - M3_7 * Z0_7) / M3_3
-    Z0_2 = (R0_2 - M2_3 * Z0_3 - M2_4 * Z0_4 - M2_5 * Z0_5 - M2_6 * Z0_6 - M2_7 * Z0_7) / M2_2
-    Z0_1 = (R0_1 - M1_2 * Z0_2 - M1_3 * Z0_3 - M1_4 * Z0_4 - M1_5 * Z0_5 - M1_6 * Z0_6 - M1_7 * Z0_7) / M1_1
-    Z0_0 = (R0_0 - M0_1 * Z0_1 - M0_2 * Z0_2 - M0_3 * Z0_3 - M0_4 * Z0_4 - M0_5 * Z0_5 - M0_6 * Z0_6 - M0_7 * Z0_7) / M0_0
-    J[8, 0] = -Z0_0
-    J[9, 0] = -Z0_1
-    J[10, 0] = -Z0_2
-    J[11, 0] = -Z0_3
-    J[12, 0] = -Z0_4
-    J[13, 0] = -Z0_5
-    J[14, 0] = -Z0_6
-    J[15, 0] = -Z0_7
-    R1_1 -= L1_0 * R1_0
-    R1_2 -= L2_0 * R1_0
-    R1_3 -= L3_0 * R1_0
-    R1_4 -= L4_0 * R1_0
-    R1_5 -= L5_0 * R1_0
-    R1_6 -= L6_0 * R1_0
-    R1_7 -= L7_0 * R1_0
-    R1_2 -= L2_1 * R1_1
-    R1_3 -= L3_1 * R1_1
-    R1_4 -= L4_1 * R1_1
-    R1_5 -= L5_1 * R1_1
-    R1_6 -= L6_1 * R1_1
-    R1_7 -= L7_1 * R1_1
-    R1_3 -= L3_2 * R1_2
-    R1_4 -= L4_2 * R1_2
-    R1_5 -= L5_2 * R1_2
-    R1_6 -= L6_2 * R1_2
-    R1_7 -= L7_2 * R1_2
-    R1_4 -= L4_3 * R1_3
-    R1_5 -= L5_3 * R1_3
-    R1_6 -= L6_3 * R1_3
-    R1_7 -= L7_3 * R1_3
-    R1_5 -= L5_4 * R1_4
-    R1_6 -= L6_4 * R1_4
-    R1_7 -= L7_4 * R1_4
-    R1_6 -= L6_5 * R1_5
-    R1_7 -= L7_5 * R1_5
-    R1_7 -= L7_6 * R1_6
-    Z1_7 = (R1_7) / M7_7
-    Z1_6 = (R1_6 - M6_7 * Z1_7) / M6_6
-    Z1_5 = (R1_5 - M5_6 * Z1_6 - M5_7 * Z1_7) / M5_5
-    Z1_4 = (R1_4 - M4_5 * Z1_5 - M4_6 * Z1_6 - M4_7 * Z1_7) / M4_4
-    Z1_3 = (R1_3 - M3_4 * Z1_4 - M3_5 * Z1_5 - M3_6 * Z1_6 - M3_7 * Z1_7) / M3_3
-    Z1_2 = (R1_2 - M2_3 * Z1_3 - M2_4 * Z1_4 - M2_5 * Z1_5 - M2_6 * Z1_6 - M2_7 * Z1_7) / M2_2
-    Z1_1 = (R1_1 - M1_2 * Z1_2 - M1_3 * Z1_3 - M1_4 * Z1_4 - M1_5 * Z1_5 - M1_6 * Z1_6 - M1_7 * Z1_7) / M1_1
-    Z1_0 = (R1_0 - M0_1 * Z1_1 - M0_2 * Z1_2 - M0_3 * Z1_3 - M0_4 * Z1_4 - M0_5 * Z1_5 - M0_6 * Z1_6 - M0_7 * Z1_7) / M0_0
-    J[8, 1] = -Z1_0
-    J[9, 1] = -Z1_1
-    J[10, 1] = -Z1_2
-    J[11, 1] = -Z1_3
-    J[12, 1] = -Z1_4
-    J[13, 1] = -Z1_5
-    J[14, 1] = -Z1_6
-    J[15, 1] = -Z1_7
-    R2_1 -= L1_0 * R2_0
-    R2_2 -= L2_0 * R2_0
-    R2_3 -= L3_0 * R2_0
-    R2_4 -= L4_0 * R2_0
-    R2_5 -= L5_0 * R2_0
-    R2_6 -= L6_0 * R2_0
-    R2_7 -= L7_0 * R2_0
-    R2_2 -= L2_1 * R2_1
-    R2_3 -= L3_1 * R2_1
-    R2_4 -= L4_1 * R2_1
-    R2_5 -= L5_1 * R2_1
-    R2_6 -= L6_1 * R2_1
-    R2_7 -= L7_1 * R2_1
-    R2_3 -= L3_2 * R2_2
-    R2_4 -= L4_2 * R2_2
-    R2_5 -= L5_2 * R2_2
-    R2_6 -= L6_2 * R2_2
-    R2_7 -= L7_2 * R2_2
-    R2_4 -= L4_3 * R2_3
-    R2_5 -= L5_3 * R2_3
-    R2_6 -= L6_3 * R2_3
-    R2_7 -= L7_3 * R2_3
-    R2_5 -= L5_4 * R2_4
-    R2_6 -= L6_4 * R2_4
-    R2_7 -= L7_4 * R2_4
-    R2_6 -= L6_5 * R2_5
-    R2_7 -= L7_5 * R2_5
-    R2_7 -= L7_6 * R2_6
-    Z2_7 = (R2_7) / M7_7
-    Z2_6 = (R2_6 - M6_7 * Z2_7) / M6_6
-    Z2_5 = (R2_5 - M5_6 * Z2_6 - M5_7 * Z2_7) / M5_5
-    Z2_4 = (R2_4 - M4_5 * Z2_5 - M4_6 * Z2_6 - M4_7 * Z2_7) / M4_4
-    Z2_3 = (R2_3 - M3_4 * Z2_4 - M3_5 * Z2_5 - M3_6 * Z2_6 - M3_7 * Z2_7) / M3_3
-    Z2_2 = (R2_2 - M2_3 * Z2_3 - M2_4 * Z2_4 - M2_5 * Z2_5 - M2_6 * Z2_6 - M2_7 * Z2_7) / M2_2
-    Z2_1 = (R2_1 - M1_2 * Z2_2 - M1_3 * Z2_3 - M1_4 * Z2_4 - M1_5 * Z2_5 - M1_6 * Z2_6 - M1_7 * Z2_7) / M1_1
-    Z2_0 = (R2_0 - M0_1 * Z2_1 - M0_2 * Z2_2 - M0_3 * Z2_3 - M0_4 * Z2_4 - M0_5 * Z2_5 - M0_6 * Z2_6 - M0_7 * Z2_7) / M0_0
-    J[8, 2] = -Z2_0
-    J[9, 2] = -Z2_1
-    J[10, 2] = -Z2_2
-    J[11, 2] = -Z2_3
-    J[12, 2] = -Z2_4
-    J[13, 2] = -Z2_5
-    J[14, 2] = -Z2_6
-    J[15, 2] = -Z2_7
-    R3_1 -= L1_0 * R3_0
-    R3_2 -= L2_0 * R3_0
-    R3_3 -= L3_0 * R3_0
-    R3_4 -= L4_0 * R3_0
-    R3_5 -= L5_0 * R3_0
-    R3_6 -= L6_0 * R3_0
-    R3_7 -= L7_0 * R3_0
-    R3_2 -= L2_1 * R3_1
-    R3_3 -= L3_1 * R3_1
-    R3_4 -= L4_1 * R3_1
-    R3_5 -= L5_1 * R3_1
-    R3_6 -= L6_1 * R3_1
-    R3_7 -= L7_1 * R3_1
-    R3_3 -= L3_2 * R3_2
-    R3_4 -= L4_2 * R3_2
-    R3_5 -= L5_2 * R3_2
-    R3_6 -= L6_2 * R3_2
-    R3_7 -= L7_2 * R3_2
-    R3_4 -= L4_3 * R3_3
-    R3_5 -= L5_3 * R3_3
-    R3_6 -= L6_3 * R3_3
-    R3_7 -= L7_3 * R3_3
-    R3_5 -= L5_4 * R3_4
-    R3_6 -= L6_4 * R3_4
-    R3_7 -= L7_4 * R3_4
-    R3_6 -= L6_5 * R3_5
-    R3_7 -= L7_5 * R3_5
-    R3_7 -= L7_6 * R3_6
-    Z3_7 = (R3_7) / M7_7
-    Z3_6 = (R3_6 - M6_7 * Z3_7) / M6_6
-    Z3_5 = (R3_5 - M5_6 * Z3_6 - M5_7 * Z3_7) / M5_5
-    Z3_4 = (R3_4 - M4_5 * Z3_5 - M4_6 * Z3_6 - M4_7 * Z3_7) / M4_4
-    Z3_3 = (R3_3 - M3_4 * Z3_4 - M3_5 * Z3_5 - M3_6 * Z3_6 - M3_7 * Z3_7) / M3_3
-    Z3_2 = (R3_2 - M2_3 * Z3_3 - M2_4 * Z3_4 - M2_5 * Z3_5 - M2_6 * Z3_6 - M2_7 * Z3_7) / M2_2
-    Z3_1 = (R3_1 - M1_2 * Z3_2 - M1_3 * Z3_3 - M1_4 * Z3_4 - M1_5 * Z3_5 - M1_6 * Z3_6 - M1_7 * Z3_7) / M1_1
-    Z3_0 = (R3_0 - M0_1 * Z3_1 - M0_2 * Z3_2 - M0_3 * Z3_3 - M0_4 * Z3_4 - M0_5 * Z3_5 - M0_6 * Z3_6 - M0_7 * Z3_7) / M0_0
-    J[8, 3] = -Z3_0
-    J[9, 3] = -Z3_1
-    J[10, 3] = -Z3_2
-    J[11, 3] = -Z3_3
-    J[12, 3] = -Z3_4
-    J[13, 3] = -Z3_5
-    J[14, 3] = -Z3_6
-    J[15, 3] = -Z3_7
-    R4_1 -= L1_0 * R4_0
-    R4_2 -= L2_0 * R4_0
-    R4_3 -= L3_0 * R4_0
-    R4_4 -= L4_0 * R4_0
-    R4_5 -= L5_0 * R4_0
-    R4_6 -= L6_0 * R4_0
-    R4_7 -= L7_0 * R4_0
-    R4_2 -= L2_1 * R4_1
-    R4_3 -= L3_1 * R4_1
-    R4_4 -= L4_1 * R4_1
-    R4_5 -= L5_1 * R4_1
-    R4_6 -= L6_1 * R4_1
-    R4_7 -= L7_1 * R4_1
-    R4_3 -= L3_2 * R4_2
-    R4_4 -= L4_2 * R4_2
-    R4_5 -= L5_2 * R4_2
-    R4_6 -= L6_2 * R4_2
-    R4_7 -= L7_2 * R4_2
-    R4_4 -= L4_3 * R4_3
-    R4_5 -= L5_3 * R4_3
-    R4_6 -= L6_3 * R4_3
-    R4_7 -= L7_3 * R4_3
-    R4_5 -= L5_4 * R4_4
-    R4_6 -= L6_4 * R4_4
-    R4_7 -= L7_4 * R4_4
-    R4_6 -= L6_5 * R4_5
-    R4_7 -= L7_5 * R4_5
-    R4_7 -= L7_6 * R4_6
-    Z4_7 = (R4_7) / M7_7
-    Z4_6 = (R4_6 - M6_7 * Z4_7) / M6_6
-    Z4_5 = (R4_5 - M5_6 * Z4_6 - M5_7 * Z4_7) / M5_5
-    Z4_4 = (R4_4 - M4_5 * Z4_5 - M4_6 * Z4_6 - M4_7 * Z4_7) / M4_4
-    Z4_3 = (R4_3 - M3_4 * Z4_4 - M3_5 * Z4_5 - M3_6 * Z4_6 - M3_7 * Z4_7) / M3_3
-    Z4_2 = (R4_2 - M2_3 * Z4_3 - M2_4 * Z4_4 - M2_5 * Z4_5 - M2_6 * Z4_6 - M2_7 * Z4_7) / M2_2
-    Z4_1 = (R4_1 - M1_2 * Z4_2 - M1_3 * Z4_3 - M1_4 * Z4_4 - M1_5 * Z4_5 - M1_6 * Z4_6 - M1_7 * Z4_7) / M1_1
-    Z4_0 = (R4_0 - M0_1 * Z4_1 - M0_2 * Z4_2 - M0_3 * Z4_3 - M0_4 * Z4_4 - M0_5 * Z4_5 - M0_6 * Z4_6 - M0_7 * Z4_7) / M0_0
-    J[8, 4] = -Z4_0
-    J[9, 4] = -Z4_1
-    J[10, 4] = -Z4_2
-    J[11, 4] = -Z4_3
-    J[12, 4] = -Z4_4
-    J[13, 4] = -Z4_5
-    J[14, 4] = -Z4_6
-    J[15, 4] = -Z4_7
-    R5_1 -= L1_0 * R5_0
-    R5_2 -= L2_0 * R5_0
-    R5_3 -= L3_0 * R5_0
-    R5_4 -= L4_0 * R5_0
-    R5_5 -= L5_0 * R5_0
-    R5_6 -= L6_0 * R5_0
-    R5_7 -= L7_0 * R5_0
-    R5_2 -= L2_1 * R5_1
-    R5_3 -= L3_1 * R5_1
-    R5_4 -= L4_1 * R5_1
-    R5_5 -= L5_1 * R5_1
-    R5_6 -= L6_1 * R5_1
-    R5_7 -= L7_1 * R5_1
-    R5_3 -= L3_2 * R5_2
-    R5_4 -= L4_2 * R5_2
-    R5_5 -= L5_2 * R5_2
-    R5_6 -= L6_2 * R5_2
-    R5_7 -= L7_2 * R5_2
-    R5_4 -= L4_3 * R5_3
-    R5_5 -= L5_3 * R5_3
-    R5_6 -= L6_3 * R5_3
-    R5_7 -= L7_3 * R5_3
-    R5_5 -= L5_4 * R5_4
-    R5_6 -= L6_4 * R5_4
-    R5_7 -= L7_4 * R5_4
-    R5_6 -= L6_5 * R5_5
-    R5_7 -= L7_5 * R5_5
-    R5_7 -= L7_6 * R5_6
-    Z5_7 = (R5_7) / M7_7
-    Z5_6 = (R5_6 - M6_7 * Z5_7) / M6_6
-    Z5_5 = (R5_5 - M5_6 * Z5_6 - M5_7 * Z5_7) / M5_5
-    Z5_4 = (R5_4 - M4_5 * Z5_5 - M4_6 * Z5_6 - M4_7 * Z5_7) / M4_4
-    Z5_3 = (R5_3 - M3_4 * Z5_4 - M3_5 * Z5_5 - M3_6 * Z5_6 - M3_7 * Z5_7) / M3_3
-    Z5_2 = (R5_2 - M2_3 * Z5_3 - M2_4 * Z5_4 - M2_5 * Z5_5 - M2_6 * Z5_6 - M2_7 * Z5_7) / M2_2
-    Z5_1 = (R5_1 - M1_2 * Z5_2 - M1_3 * Z5_3 - M1_4 * Z5_4 - M1_5 * Z5_5 - M1_6 * Z5_6 - M1_7 * Z5_7) / M1_1
-    Z5_0 = (R5_0 - M0_1 * Z5_1 - M0_2 * Z5_2 - M0_3 * Z5_3 - M0_4 * Z5_4 - M0_5 * Z5_5 - M0_6 * Z5_6 - M0_7 * Z5_7) / M0_0
-    J[8, 5] = -Z5_0
-    J[9, 5] = -Z5_1
-    J[10, 5] = -Z5_2
-    J[11, 5] = -Z5_3
-    J[12, 5] = -Z5_4
-    J[13, 5] = -Z5_5
-    J[14, 5] = -Z5_6
-    J[15, 5] = -Z5_7
-    R6_1 -= L1_0 * R6_0
-    R6_2 -= L2_0 * R6_0
-    R6_3 -= L3_0 * R6_0
-    R6_4 -= L4_0 * R6_0
-    R6_5 -= L5_0 * R6_0
-    R6_6 -= L6_0 * R6_0
-    R6_7 -= L7_0 * R6_0
-    R6_2 -= L2_1 * R6_1
-    R6_3 -= L3_1 * R6_1
-    R6_4 -= L4_1 * R6_1
-    R6_5 -= L5_1 * R6_1
-    R6_6 -= L6_1 * R6_1
-    R6_7 -= L7_1 * R6_1
-    R6_3 -= L3_2 * R6_2
-    R6_4 -= L4_2 * R6_2
-    R6_5 -= L5_2 * R6_2
-    R6_6 -= L6_2 * R6_2
-    R6_7 -= L7_2 * R6_2
-    R6_4 -= L4_3 * R6_3
-    R6_5 -= L5_3 * R6_3
-    R6_6 -= L6_3 * R6_3
-    R6_7 -= L7_3 * R6_3
-    R6_5 -= L5_4 * R6_4
-    R6_6 -= L6_4 * R6_4
-    R6_7 -= L7_4 * R6_4
-    R6_6 -= L6_5 * R6_5
-    R6_7 -= L7_5 * R6_5
-    R6_7 -= L7_6 * R6_6
-    Z6_7 = (R6_7) / M7_7
-    Z6_6 = (R6_6 - M6_7 * Z6_7) / M6_6
-    Z6_5 = (R6_5 - M5_6 * Z6_6 - M5_7 * Z6_7) / M5_5
-    Z6_4 = (R6_4 - M4_5 * Z6_5 - M4_6 * Z6_6 - M4_7 * Z6_7) / M4_4
-    Z6_3 = (R6_3 - M3_4 * Z6_4 - M3_5 * Z6_5 - M3_6 * Z6_6 - M3_7 * Z6_7) / M3_3
-    Z6_2 = (R6_2 - M2_3 * Z6_3 - M2_4 * Z6_4 - M2_5 * Z6_5 - M2_6 * Z6_6 - M2_7 * Z6_7) / M2_2
-    Z6_1 = (R6_1 - M1_2 * Z6_2 - M1_3 * Z6_3 - M1_4 * Z6_4 - M1_5 * Z6_5 - M1_6 * Z6_6 - M1_7 * Z6_7) / M1_1
-    Z6_0 = (R6_0 - M0_1 * Z6_1 - M0_2 * Z6_2 - M0_3 * Z6_3 - M0_4 * Z6_4 - M0_5 * Z6_5 - M0_6 * Z6_6 - M0_7 * Z6_7) / M0_0
-    J[8, 6] = -Z6_0
-    J[9, 6] = -Z6_1
-    J[10, 6] = -Z6_2
-    J[11, 6] = -Z6_3
-    J[12, 6] = -Z6_4
-    J[13, 6] = -Z6_5
-    J[14, 6] = -Z6_6
-    J[15, 6] = -Z6_7
-    R7_1 -= L1_0 * R7_0
-    R7_2 -= L2_0 * R7_0
-    R7_3 -= L3_0 * R7_0
-    R7_4 -= L4_0 * R7_0
-    R7_5 -= L5_0 * R7_0
-    R7_6 -= L6_0 * R7_0
-    R7_7 -= L7_0 * R7_0
-    R7_2 -= L2_1 * R7_1
-    R7_3 -= L3_1 * R7_1
-    R7_4 -= L4_1 * R7_1
-    R7_5 -= L5_1 * R7_1
-    R7_6 -= L6_1 * R7_1
-    R7_7 -= L7_1 * R7_1
-    R7_3 -= L3_2 * R7_2
-    R7_4 -= L4_2 * R7_2
-    R7_5 -= L5_2 * R7_2
-    R7_6 -= L6_2 * R7_2
-    R7_7 -= L7_2 * R7_2
-    R7_4 -= L4_3 * R7_3
-    R7_5 -= L5_3 * R7_3
-    R7_6 -= L6_3 * R7_3
-    R7_7 -= L7_3 * R7_3
-    R7_5 -= L5_4 * R7_4
-    R7_6 -= L6_4 * R7_4
-    R7_7 -= L7_4 * R7_4
-    R7_6 -= L6_5 * R7_5
-    R7_7 -= L7_5 * R7_5
-    R7_7 -= L7_6 * R7_6
-    Z7_7 = (R7_7) / M7_7
-    Z7_6 = (R7_6 - M6_7 * Z7_7) / M6_6
-    Z7_5 = (R7_5 - M5_6 * Z7_6 - M5_7 * Z7_7) / M5_5
-    Z7_4 = (R7_4 - M4_5 * Z7_5 - M4_6 * Z7_6 - M4_7 * Z7_7) / M4_4
-    Z7_3 = (R7_3 - M3_4 * Z7_4 - M3_5 * Z7_5 - M3_6 * Z7_6 - M3_7 * Z7_7) / M3_3
-    Z7_2 = (R7_2 - M2_3 * Z7_3 - M2_4 * Z7_4 - M2_5 * Z7_5 - M2_6 * Z7_6 - M2_7 * Z7_7) / M2_2
-    Z7_1 = (R7_1 - M1_2 * Z7_2 - M1_3 * Z7_3 - M1_4 * Z7_4 - M1_5 * Z7_5 - M1_6 * Z7_6 - M1_7 * Z7_7) / M1_1
-    Z7_0 = (R7_0 - M0_1 * Z7_1 - M0_2 * Z7_2 - M0_3 * Z7_3 - M0_4 * Z7_4 - M0_5 * Z7_5 - M0_6 * Z7_6 - M0_7 * Z7_7) / M0_0
-    J[8, 7] = -Z7_0
-    J[9, 7] = -Z7_1
-    J[10, 7] = -Z7_2
-    J[11, 7] = -Z7_3
-    J[12, 7] = -Z7_4
-    J[13, 7] = -Z7_5
-    J[14, 7] = -Z7_6
-    J[15, 7] = -Z7_7
-    R8_1 -= L1_0 * R8_0
-    R8_2 -= L2_0 * R8_0
-    R8_3 -= L3_0 * R8_0
-    R8_4 -= L4_0 * R8_0
-    R8_5 -= L5_0 * R8_0
-    R8_6 -= L6_0 * R8_0
-    R8_7 -= L7_0 * R8_0
-    R8_2 -= L2_1 * R8_1
-    R8_3 -= L3_1 * R8_1
-    R8_4 -= L4_1 * R8_1
-    R8_5 -= L5_1 * R8_1
-    R8_6 -= L6_1 * R8_1
-    R8_7 -= L7_1 * R8_1
-    R8_3 -= L3_2 * R8_2
-    R8_4 -= L4_2 * R8_2
-    R8_5 -= L5_2 * R8_2
-    R8_6 -= L6_2 * R8_2
-    R8_7 -= L7_2 * R8_2
-    R8_4 -= L4_3 * R8_3
-    R8_5 -= L5_3 * R8_3
-    R8_6 -= L6_3 * R8_3
-    R8_7 -= L7_3 * R8_3
-    R8_5 -= L5_4 * R8_4
-    R8_6 -= L6_4 * R8_4
-    R8_7 -= L7_4 * R8_4
-    R8_6 -= L6_5 * R8_5
-    R8_7 -= L7_5 * R8_5
-    R8_7 -= L7_6 * R8_6
-    Z8_7 = (R8_7) / M7_7
-    Z8_6 = (R8_6 - M6_7 * Z8_7) / M6_6
-    Z8_5 = (R8_5 - M5_6 * Z8_6 - M5_7 * Z8_7) / M5_5
-    Z8_4 = (R8_4 - M4_5 * Z8_5 - M4_6 * Z8_6 - M4_7 * Z8_7) / M4_4
-    Z8_3 = (R8_3 - M3_4 * Z8_4 - M3_5 * Z8_5 - M3_6 * Z8_6 - M3_7 * Z8_7) / M3_3
-    Z8_2 = (R8_2 - M2_3 * Z8_3 - M2_4 * Z8_4 - M2_5 * Z8_5 - M2_6 * Z8_6 - M2_7 * Z8_7) / M2_2
-    Z8_1 = (R8_1 - M1_2 * Z8_2 - M1_3 * Z8_3 - M1_4 * Z8_4 - M1_5 * Z8_5 - M1_6 * Z8_6 - M1_7 * Z8_7) / M1_1
-    Z8_0 = (R8_0 - M0_1 * Z8_1 - M0_2 * Z8_2 - M0_3 * Z8_3 - M0_4 * Z8_4 - M0_5 * Z8_5 - M0_6 * Z8_6 - M0_7 * Z8_7) / M0_0
-    J[8, 8] = -Z8_0
-    J[9, 8] = -Z8_1
-    J[10, 8] = -Z8_2
-    J[11, 8] = -Z8_3
-    J[12, 8] = -Z8_4
-    J[13, 8] = -Z8_5
-    J[14, 8] = -Z8_6
-    J[15, 8] = -Z8_7
-    R9_1 -= L1_0 * R9_0
-    R9_2 -= L2_0 * R9_0
-    R9_3 -= L3_0 * R9_0
-    R9_4 -= L4_0 * R9_0
-    R9_5 -= L5_0 * R9_0
-    R9_6 -= L6_0 * R9_0
-    R9_7 -= L7_0 * R9_0
-    R9_2 -= L2_1 * R9_1
-    R9_3 -= L3_1 * R9_1
-    R9_4 -= L4_1 * R9_1
-    R9_5 -= L5_1 * R9_1
-    R9_6 -= L6_1 * R9_1
-    R9_7 -= L7_1 * R9_1
-    R9_3 -= L3_2 * R9_2
-    R9_4 -= L4_2 * R9_2
-    R9_5 -= L5_2 * R9_2
-    R9_6 -= L6_2 * R9_2
-    R9_7 -= L7_2 * R9_2
-    R9_4 -= L4_3 * R9_3
-    R9_5 -= L5_3 * R9_3
-    R9_6 -= L6_3 * R9_3
-    R9_7 -= L7_3 * R9_3
-    R9_5 -= L5_4 * R9_4
-    R9_6 -= L6_4 * R9_4
-    R9_7 -= L7_4 * R9_4
-    R9_6 -= L6_5 * R9_5
-    R9_7 -= L7_5 * R9_5
-    R9_7 -= L7_6 * R9_6
-    Z9_7 = (R9_7) / M7_7
-    Z9_6 = (R9_6 - M6_7 * Z9_7) / M6_6
-    Z9_5 = (R9_5 - M5_6 * Z9_6 - M5_7 * Z9_7) / M5_5
-    Z9_4 = (R9_4 - M4_5 * Z9_5 - M4_6 * Z9_6 - M4_7 * Z9_7) / M4_4
-    Z9_3 = (R9_3 - M3_4 * Z9_4 - M3_5 * Z9_5 - M3_6 * Z9_6 - M3_7 * Z9_7) / M3_3
-    Z9_2 = (R9_2 - M2_3 * Z9_3 - M2_4 * Z9_4 - M2_5 * Z9_5 - M2_6 * Z9_6 - M2_7 * Z9_7) / M2_2
-    Z9_1 = (R9_1 - M1_2 * Z9_2 - M1_3 * Z9_3 - M1_4 * Z9_4 - M1_5 * Z9_5 - M1_6 * Z9_6 - M1_7 * Z9_7) / M1_1
-    Z9_0 = (R9_0 - M0_1 * Z9_1 - M0_2 * Z9_2 - M0_3 * Z9_3 - M0_4 * Z9_4 - M0_5 * Z9_5 - M0_6 * Z9_6 - M0_7 * Z9_7) / M0_0
-    J[8, 9] = -Z9_0
-    J[9, 9] = -Z9_1
-    J[10, 9] = -Z9_2
-    J[11, 9] = -Z9_3
-    J[12, 9] = -Z9_4
-    J[13, 9] = -Z9_5
-    J[14, 9] = -Z9_6
-    J[15, 9] = -Z9_7
-    R10_1 -= L1_0 * R10_0
-    R10_2 -= L2_0 * R10_0
-    R10_3 -= L3_0 * R10_0
-    R10_4 -= L4_0 * R10_0
-    R10_5 -= L5_0 * R10_0
-    R10_6 -= L6_0 * R10_0
-    R10_7 -= L7_0 * R10_0
-    R10_2 -= L2_1 * R10_1
-    R10_3 -= L3_1 * R10_1
-    R10_4 -= L4_1 * R10_1
-    R10_5 -= L5_1 * R10_1
-    R10_6 -= L6_1 * R10_1
-    R10_7 -= L7_1 * R10_1
-    R10_3 -= L3_2 * R10_2
-    R10_4 -= L4_2 * R10_2
-    R10_5 -= L5_2 * R10_2
-    R10_6 -= L6_2 * R10_2
-    R10_7 -= L7_2 * R10_2
-    R10_4 -= L4_3 * R10_3
-    R10_5 -= L5_3 * R10_3
-    R10_6 -= L6_3 * R10_3
-    R10_7 -= L7_3 * R10_3
-    R10_5 -= L5_4 * R10_4
-    R10_6 -= L6_4 * R10_4
-    R10_7 -= L7_4 * R10_4
-    R10_6 -= L6_5 * R10_5
-    R10_7 -= L7_5 * R10_5
-    R10_7 -= L7_6 * R10_6
-    Z10_7 = (R10_7) / M7_7
-    Z10_6 = (R10_6 - M6_7 * Z10_7) / M6_6
-    Z10_5 = (R10_5 - M5_6 * Z10_6 - M5_7 * Z10_7) / M5_5
-    Z10_4 = (R10_4 - M4_5 * Z10_5 - M4_6 * Z10_6 - M4_7 * Z10_7) / M4_4
-    Z10_3 = (R10_3 - M3_4 * Z10_4 - M3_5 * Z10_5 - M3_6 * Z10_6 - M3_7 * Z10_7) / M3_3
-    Z10_2 = (R10_2 - M2_3 * Z10_3 - M2_4 * Z10_4 - M2_5 * Z10_5 - M2_6 * Z10_6 - M2_7 * Z10_7) / M2_2
-    Z10_1 = (R10_1 - M1_2 * Z10_2 - M1_3 * Z10_3 - M1_4 * Z10_4 - M1_5 * Z10_5 - M1_6 * Z10_6 - M1_7 * Z10_7) / M1_1
-    Z10_0 = (R10_0 - M0_1 * Z10_1 - M0_2 * Z10_2 - M0_3 * Z10_3 - M0_4 * Z10_4 - M0_5 * Z10_5 - M0_6 * Z10_6 - M0_7 * Z10_7) / M0_0
-    J[8, 10] = -Z10_0
-    J[9, 10] = -Z10_1
-    J[10, 10] = -Z10_2
-    J[11, 10] = -Z10_3
-    J[12, 10] = -Z10_4
-    J[13, 10] = -Z10_5
-    J[14, 10] = -Z10_6
-    J[15, 10] = -Z10_7
-    R11_1 -= L1_0 * R11_0
-    R11_2 -= L2_0 * R11_0
-    R11_3 -= L3_0 * R11_0
-    R11_4 -= L4_0 * R11_0
-    R11_5 -= L5_0 * R11_0
-    R11_6 -= L6_0 * R11_0
-    R11_7 -= L7_0 * R11_0
-    R11_2 -= L2_1 * R11_1
-    R11_3 -= L3_1 * R11_1
-    R11_4 -= L4_1 * R11_1
-    R11_5 -= L5_1 * R11_1
-    R11_6 -= L6_1 * R11_1
-    R11_7 -= L7_1 * R11_1
-    R11_3 -= L3_2 * R11_2
-    R11_4 -= L4_2 * R11_2
-    R11_5 -= L5_2 * R11_2
-    R11_6 -= L6_2 * R11_2
-    R11_7 -= L7_2 * R11_2
-    R11_4 -= L4_3 * R11_3
-    R11_5 -= L5_3 * R11_3
-    R11_6 -= L6_3 * R11_3
-    R11_7 -= L7_3 * R11_3
-    R11_5 -= L5_4 * R11_4
-    R11_6 -= L6_4 * R11_4
-    R11_7 -= L7_4 * R11_4
-    R11_6 -= L6_5 * R11_5
-    R11_7 -= L7_5 * R11_5
-    R11_7 -= L7_6 * R11_6
-    Z11_7 = (R11_7) / M7_7
-    Z11_6 = (R11_6 - M6_7 * Z11_7) / M6_6
-    Z11_5 = (R11_5 - M5_6 * Z11_6 - M5_7 * Z11_7) / M5_5
-    Z11_4 = (R11_4 - M4_5 * Z11_5 - M4_6 * Z11_6 - M4_7 * Z11_7) / M4_4
-    Z11_3 = (R11_3 - M3_4 * Z11_4 - M3_5 * Z11_5 - M3_6 * Z11_6 - M3_7 * Z11_7) / M3_3
-    Z11_2 = (R11_2 - M2_3 * Z11_3 - M2_4 * Z11_4 - M2_5 * Z11_5 - M2_6 * Z11_6 - M2_7 * Z11_7) / M2_2
-    Z11_1 = (R11_1 - M1_2 * Z11_2 - M1_3 * Z11_3 - M1_4 * Z11_4 - M1_5 * Z11_5 - M1_6 * Z11_6 - M1_7 * Z11_7) / M1_1
-    Z11_0 = (R11_0 - M0_1 * Z11_1 - M0_2 * Z11_2 - M0_3 * Z11_3 - M0_4 * Z11_4 - M0_5 * Z11_5 - M0_6 * Z11_6 - M0_7 * Z11_7) / M0_0
-    J[8, 11] = -Z11_0
-    J[9, 11] = -Z11_1
-    J[10, 11] = -Z11_2
-    J[11, 11] = -Z11_3
-    J[12, 11] = -Z11_4
-    J[13, 11] = -Z11_5
-    J[14, 11] = -Z11_6
-    J[15, 11] = -Z11_7
-    R12_1 -= L1_0 * R12_0
-    R12_2 -= L2_0 * R12_0
-    R12_3 -= L3_0 * R12_0
-    R12_4 -= L4_0 * R12_0
-    R12_5 -= L5_0 * R12_0
-    R12_6 -= L6_0 * R12_0
-    R12_7 -= L7_0 * R12_0
-    R12_2 -= L2_1 * R12_1
-    R12_3 -= L3_1 * R12_1
-    R12_4 -= L4_1 * R12_1
-    R12_5 -= L5_1 * R12_1
-    R12_6 -= L6_1 * R12_1
-    R12_7 -= L7_1 * R12_1
-    R12_3 -= L3_2 * R12_2
-    R12_4 -= L4_2 * R12_2
-    R12_5 -= L5_2 * R12_2
-    R12_6 -= L6_2 * R12_2
-    R12_7 -= L7_2 * R12_2
-    R12_4 -= L4_3 * R12_3
-    R12_5 -= L5_3 * R12_3
-    R12_6 -= L6_3 * R12_3
-    R12_7 -= L7_3 * R12_3
-    R12_5 -= L5_4 * R12_4
-    R12_6 -= L6_4 * R12_4
-    R12_7 -= L7_4 * R12_4
-    R12_6 -= L6_5 * R12_5
-    R12_7 -= L7_5 * R12_5
-    R12_7 -= L7_6 * R12_6
-    Z12_7 = (R12_7) / M7_7
-    Z12_6 = (R12_6 - M6_7 * Z12_7) / M6_6
-    Z12_5 = (R12_5 - M5_6 * Z12_6 - M5_7 * Z12_7) / M5_5
-    Z12_4 = (R12_4 - M4_5 * Z12_5 - M4_6 * Z12_6 - M4_7 * Z12_7) / M4_4
-    Z12_3 = (R12_3 - M3_4 * Z12_4 - M3_5 * Z12_5 - M3_6 * Z12_6 - M3_7 * Z12_7) / M3_3
-    Z12_2 = (R12_2 - M2_3 * Z12_3 - M2_4 * Z12_4 - M2_5 * Z12_5 - M2_6 * Z12_6 - M2_7 * Z12_7) / M2_2
-    Z12_1 = (R12_1 - M1_2 * Z12_2 - M1_3 * Z12_3 - M1_4 * Z12_4 - M1_5 * Z12_5 - M1_6 * Z12_6 - M1_7 * Z12_7) / M1_1
-    Z12_0 = (R12_0 - M0_1 * Z12_1 - M0_2 * Z12_2 - M0_3 * Z12_3 - M0_4 * Z12_4 - M0_5 * Z12_5 - M0_6 * Z12_6 - M0_7 * Z12_7) / M0_0
-    J[8, 12] = -Z12_0
-    J[9, 12] = -Z12_1
-    J[10, 12] = -Z12_2
-    J[11, 12] = -Z12_3
-    J[12, 12] = -Z12_4
-    J[13, 12] = -Z12_5
-    J[14, 12] = -Z12_6
-    J[15, 12] = -Z12_7
-    R13_1 -= L1_0 * R13_0
-    R13_2 -= L2_0 * R13_0
-    R13_3 -= L3_0 * R13_0
-    R13_4 -= L4_0 * R13_0
-    R13_5 -= L5_0 * R13_0
-    R13_6 -= L6_0 * R13_0
-    R13_7 -= L7_0 * R13_0
-    R13_2 -= L2_1 * R13_1
-    R13_3 -= L3_1 * R13_1
-    R13_4 -= L4_1 * R13_1
-    R13_5 -= L5_1 * R13_1
-    R13_6 -= L6_1 * R13_1
-    R13_7 -= L7_1 * R13_1
-    R13_3 -= L3_2 * R13_2
-    R13_4 -= L4_2 * R13_2
-    R13_5 -= L5_2 * R13_2
-    R13_6 -= L6_2 * R13_2
-    R13_7 -= L7_2 * R13_2
-    R13_4 -= L4_3 * R13_3
-    R13_5 -= L5_3 * R13_3
-    R13_6 -= L6_3 * R13_3
-    R13_7 -= L7_3 * R13_3
-    R13_5 -= L5_4 * R13_4
-    R13_6 -= L6_4 * R13_4
-    R13_7 -= L7_4 * R13_4
-    R13_6 -= L6_5 * R13_5
-    R13_7 -= L7_5 * R13_5
-    R13_7 -= L7_6 * R13_6
-    Z13_7 = (R13_7) / M7_7
-    Z13_6 = (R13_6 - M6_7 * Z13_7) / M6_6
-    Z13_5 = (R13_5 - M5_6 * Z13_6 - M5_7 * Z13_7) / M5_5
-    Z13_4 = (R13_4 - M4_5 * Z13_5 - M4_6 * Z13_6 - M4_7 * Z13_7) / M4_4
-    Z13_3 = (R13_3 - M3_4 * Z13_4 - M3_5 * Z13_5 - M3_6 * Z13_6 - M3_7 * Z13_7) / M3_3
-    Z13_2 = (R13_2 - M2_3 * Z13_3 - M2_4 * Z13_4 - M2_5 * Z13_5 - M2_6 * Z13_6 - M2_7 * Z13_7) / M2_2
-    Z13_1 = (R13_1 - M1_2 * Z13_2 - M1_3 * Z13_3 - M1_4 * Z13_4 - M1_5 * Z13_5 - M1_6 * Z13_6 - M1_7 * Z13_7) / M1_1
-    Z13_0 = (R13_0 - M0_1 * Z13_1 - M0_2 * Z13_2 - M0_3 * Z13_3 - M0_4 * Z13_4 - M0_5 * Z13_5 - M0_6 * Z13_6 - M0_7 * Z13_7) / M0_0
-    J[8, 13] = -Z13_0
-    J[9, 13] = -Z13_1
-    J[10, 13] = -Z13_2
-    J[11, 13] = -Z13_3
-    J[12, 13] = -Z13_4
-    J[13, 13] = -Z13_5
-    J[14, 13] = -Z13_6
-    J[15, 13] = -Z13_7
-    R14_1 -= L1_0 * R14_0
-    R14_2 -= L2_0 * R14_0
-    R14_3 -= L3_0 * R14_0
-    R14_4 -= L4_0 * R14_0
-    R14_5 -= L5_0 * R14_0
-    R14_6 -= L6_0 * R14_0
-    R14_7 -= L7_0 * R14_0
-    R14_2 -= L2_1 * R14_1
-    R14_3 -= L3_1 * R14_1
-    R14_4 -= L4_1 * R14_1
-    R14_5 -= L5_1 * R14_1
-    R14_6 -= L6_1 * R14_1
-    R14_7 -= L7_1 * R14_1
-    R14_3 -= L3_2 * R14_2
-    R14_4 -= L4_2 * R14_2
-    R14_5 -= L5_2 * R14_2
-    R14_6 -= L6_2 * R14_2
-    R14_7 -= L7_2 * R14_2
-    R14_4 -= L4_3 * R14_3
-    R14_5 -= L5_3 * R14_3
-    R14_6 -= L6_3 * R14_3
-    R14_7 -= L7_3 * R14_3
-    R14_5 -= L5_4 * R14_4
-    R14_6 -= L6_4 * R14_4
-    R14_7 -= L7_4 * R14_4
-    R14_6 -= L6_5 * R14_5
-    R14_7 -= L7_5 * R14_5
-    R14_7 -= L7_6 * R14_6
-    Z14_7 = (R14_7) / M7_7
-    Z14_6 = (R14_6 - M6_7 * Z14_7) / M6_6
-    Z14_5 = (R14_5 - M5_6 * Z14_6 - M5_7 * Z14_7) / M5_5
-    Z14_4 = (R14_4 - M4_5 * Z14_5 - M4_6 * Z14_6 - M4_7 * Z14_7) / M4_4
-    Z14_3 = (R14_3 - M3_4 * Z14_4 - M3_5 * Z14_5 - M3_6 * Z14_6 - M3_7 * Z14_7) / M3_3
-    Z14_2 = (R14_2 - M2_3 * Z14_3 - M2_4 * Z14_4 - M2_5 * Z14_5 - M2_6 * Z14_6 - M2_7 * Z14_7) / M2_2
-    Z14_1 = (R14_1 - M1_2 * Z14_2 - M1_3 * Z14_3 - M1_4 * Z14_4 - M1_5 * Z14_5 - M1_6 * Z14_6 - M1_7 * Z14_7) / M1_1
-    Z14_0 = (R14_0 - M0_1 * Z14_1 - M0_2 * Z14_2 - M0_3 * Z14_3 - M0_4 * Z14_4 - M0_5 * Z14_5 - M0_6 * Z14_6 - M0_7 * Z14_7) / M0_0
-    J[8, 14] = -Z14_0
-    J[9, 14] = -Z14_1
-    J[10, 14] = -Z14_2
-    J[11, 14] = -Z14_3
-    J[12, 14] = -Z14_4
-    J[13, 14] = -Z14_5
-    J[14, 14] = -Z14_6
-    J[15, 14] = -Z14_7
-    R15_1 -= L1_0 * R15_0
-    R15_2 -= L2_0 * R15_0
-    R15_3 -= L3_0 * R15_0
-    R15_4 -= L4_0 * R15_0
-    R15_5 -= L5_0 * R15_0
-    R15_6 -= L6_0 * R15_0
-    R15_7 -= L7_0 * R15_0
-    R15_2 -= L2_1 * R15_1
-    R15_3 -= L3_1 * R15_1
-    R15_4 -= L4_1 * R15_1
-    R15_5 -= L5_1 * R15_1
-    R15_6 -= L6_1 * R15_1
-    R15_7 -= L7_1 * R15_1
-    R15_3 -= L3_2 * R15_2
-    R15_4 -= L4_2 * R15_2
-    R15_5 -= L5_2 * R15_2
-    R15_6 -= L6_2 * R15_2
-    R15_7 -= L7_2 * R15_2
-    R15_4 -= L4_3 * R15_3
-    R15_5 -= L5_3 * R15_3
-    R15_6 -= L6_3 * R15_3
-    R15_7 -= L7_3 * R15_3
-    R15_5 -= L5_4 * R15_4
-    R15_6 -= L6_4 * R15_4
-    R15_7 -= L7_4 * R15_4
-    R15_6 -= L6_5 * R15_5
-    R15_7 -= L7_5 * R15_5
-    R15_7 -= L7_6 * R15_6
-    Z15_7 = (R15_7) / M7_7
-    Z15_6 = (R15_6 - M6_7 * Z15_7) / M6_6
-    Z15_5 = (R15_5 - M5_6 * Z15_6 - M5_7 * Z15_7) / M5_5
-    Z15_4 = (R15_4 - M4_5 * Z15_5 - M4_6 * Z15_6 - M4_7 * Z15_7) / M4_4
-    Z15_3 = (R15_3 - M3_4 * Z15_4 - M3_5 * Z15_5 - M3_6 * Z15_6 - M3_7 * Z15_7) / M3_3
-    Z15_2 = (R15_2 - M2_3 * Z15_3 - M2_4 * Z15_4 - M2_5 * Z15_5 - M2_6 * Z15_6 - M2_7 * Z15_7) / M2_2
-    Z15_1 = (R15_1 - M1_2 * Z15_2 - M1_3 * Z15_3 - M1_4 * Z15_4 - M1_5 * Z15_5 - M1_6 * Z15_6 - M1_7 * Z15_7) / M1_1
-    Z15_0 = (R15_0 - M0_1 * Z15_1 - M0_2 * Z15_2 - M0_3 * Z15_3 - M0_4 * Z15_4 - M0_5 * Z15_5 - M0_6 * Z15_6 - M0_7 * Z15_7) / M0_0
-    J[8, 15] = -Z15_0
-    J[9, 15] = -Z15_1
-    J[10, 15] = -Z15_2
-    J[11, 15] = -Z15_3
-    J[12, 15] = -Z15_4
-    J[13, 15] = -Z15_5
-    J[14, 15] = -Z15_6
-    J[15, 15] = -Z15_7
 
 
 @njit(cache=True, inline="always")
@@ -6053,106 +2097,41 @@ def tether_margins(y, p, g):
     delta_z = y[2]
     phi = y[3]
     theta = y[4]
-    psi = y[5]
-    r = y[6]
-    nu = y[7]
-    delta_x_dot = y[8]
-    delta_y_dot = y[9]
-    delta_z_dot = y[10]
-    phi_dot = y[11]
-    theta_dot = y[12]
-    psi_dot = y[13]
-    r_dot = y[14]
-    nu_dot = y[15]
-    m1 = p[0]
-    m2 = p[1]
-    m3 = p[2]
-    A1 = p[3]
-    A2 = p[4]
-    A3 = p[5]
     a = p[6]
     b = p[7]
     l10 = p[8]
     l20 = p[9]
-    E1 = p[10]
-    E2 = p[11]
-    c1 = p[12]
-    c2 = p[13]
-    CD = p[14]
-    mu = p[15]
-    omega_earth = p[16]
-    rho1 = p[17]
-    rho2 = p[18]
-    rho3 = p[19]
-    J2 = p[20]
-    R_E = p[21]
-    I1_roll = p[22]
-    I1_pitch = p[23]
-    I1_yaw = p[24]
-    I2_roll = p[25]
-    I2_pitch = p[26]
-    I2_yaw = p[27]
     sin_phi = math.sin(phi)
     cos_phi = math.cos(phi)
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
-    sin_psi = math.sin(psi)
-    cos_psi = math.cos(psi)
-    g[0] = math.sqrt((b*cos_phi*sin_theta - delta_x)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*sin_phi - delta_z)**2) - l10
-    g[1] = math.sqrt((-a*cos_phi*sin_theta - delta_x)**2 + (-a*cos_phi*cos_theta - delta_y)**2 + (-a*sin_phi - delta_z)**2) - l20
+    g[0] = (
+            math.sqrt((b*cos_phi*sin_theta - delta_x)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*
+            sin_phi - delta_z)**2) - l10)
+    g[1] = (
+            math.sqrt((-a*cos_phi*sin_theta - delta_x)**2 + (-a*cos_phi*cos_theta - delta_y)**2 + (-a*
+            sin_phi - delta_z)**2) - l20)
 
 
 @njit(cache=True, inline="always")
 def body_radii(y, p):
-    """(|R_1|, |R_2|, |R_3|) [m]: tip-mass, bus, balloon from Earth's centre (docs/three-d.md, about the orbit radius r)."""
+    """(|R_1|, |R_2|, |R_3|) [m]: tip-mass, bus, balloon from Earth's centre.
+
+    Positions (docs/three-d.md, about the orbit radius r).
+    """
     delta_x = y[0]
     delta_y = y[1]
     delta_z = y[2]
     phi = y[3]
     theta = y[4]
-    psi = y[5]
     r = y[6]
-    nu = y[7]
-    delta_x_dot = y[8]
-    delta_y_dot = y[9]
-    delta_z_dot = y[10]
-    phi_dot = y[11]
-    theta_dot = y[12]
-    psi_dot = y[13]
-    r_dot = y[14]
-    nu_dot = y[15]
-    m1 = p[0]
-    m2 = p[1]
-    m3 = p[2]
-    A1 = p[3]
-    A2 = p[4]
-    A3 = p[5]
     a = p[6]
     b = p[7]
-    l10 = p[8]
-    l20 = p[9]
-    E1 = p[10]
-    E2 = p[11]
-    c1 = p[12]
-    c2 = p[13]
-    CD = p[14]
-    mu = p[15]
-    omega_earth = p[16]
-    rho1 = p[17]
-    rho2 = p[18]
-    rho3 = p[19]
-    J2 = p[20]
-    R_E = p[21]
-    I1_roll = p[22]
-    I1_pitch = p[23]
-    I1_yaw = p[24]
-    I2_roll = p[25]
-    I2_pitch = p[26]
-    I2_yaw = p[27]
     sin_phi = math.sin(phi)
     cos_phi = math.cos(phi)
     sin_theta = math.sin(theta)
     cos_theta = math.cos(theta)
-    sin_psi = math.sin(psi)
-    cos_psi = math.cos(psi)
-    return (math.sqrt((b*cos_phi*sin_theta)**2 + (b*cos_phi*cos_theta + r)**2 + (b*sin_phi)**2), math.sqrt((-a*cos_phi*sin_theta)**2 + (-a*cos_phi*cos_theta + r)**2 + (-a*sin_phi)**2), math.sqrt((delta_x)**2 + (delta_y + r)**2 + (delta_z)**2))
+    return (
+            math.sqrt((b*cos_phi*sin_theta)**2 + (b*cos_phi*cos_theta + r)**2 + (b*sin_phi)**2),
+            math.sqrt((-a*cos_phi*sin_theta)**2 + (-a*cos_phi*cos_theta + r)**2 + (-a*sin_phi)**2),
+            math.sqrt((delta_x)**2 + (delta_y + r)**2 + (delta_z)**2))

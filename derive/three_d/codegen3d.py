@@ -5,25 +5,38 @@ Kernels, with the planar signatures (derive/codegen.py) and 12-entry states:
 ``rhs(t, y, p, dydt)``        state derivative
 ``family_forces(y, p, out)``  out[f, k]: generalized force of family f on q_k, out (7, 6)
 ``jacobi(y, p)``              Jacobi integral + taut-tether spring energy [J]
-``jacobian(t, y, p, J)``      ∂(dy/dt)/∂y, 12×12
+
+No ``jacobian``: the 3-D models' Jacobian is the central differences of rhs
+(tethersim/engine/jacobian.py; the roll modes and the 3-D equilibrium use it).
 
 q̈ comes from M q̈ = Q − f: the balloon block is m3·1; the 3×3 attitude block
 is solved numerically (Cramer's rule on the symmetric matrix).  Where the
 axial inertia J_ax = I1_yaw + I2_yaw is zero (point masses: the boom has no
 inertia about its own axis) the ψ row and column of M vanish, ψ is not a
 degree of freedom, and the kernels solve the 2×2 (φ, θ) block and set ψ̈ = 0
-(docs/three-d.md).  The Jacobian is M⁻¹ (∂(Q − f)/∂y − (∂M/∂y) q̈), column by
-column.  Output is deterministic (explicit orders, fixed cse prefixes).
+(docs/three-d.md).  Output is deterministic (explicit orders, fixed cse prefixes).
 """
 from __future__ import annotations
 
 import sympy as sp
 
-from ..codegen import INDENT, NumbaPrinter
+from ..printer import (
+    INDENT,
+    NumbaPrinter,
+    Printing,
+    constant,
+    cse_block,
+    family_forces_source,
+    forces_lines,
+    index_tables,
+    jacobi_source,
+    kernel,
+    paragraph,
+    unpack_lines,
+)
 from .forces3d import FAMILY_ORDER
 from .pipeline3d import DerivedModel3D
 from .symbols3d import (
-    ACCELERATION_SYMBOLS,
     N_Q,
     PARAMETERS,
     ROTATION,
@@ -36,7 +49,6 @@ from .symbols3d import (
     TRANSLATION,
 )
 
-N_Y = len(STATE_NAMES)
 _CODE_NAMES = {p.symbol: sp.Symbol(p.name, real=True) for p in PARAMETERS}
 _ANGLES = STATE_SYMBOLS[3:6]
 _TRIG = {}
@@ -76,55 +88,23 @@ def prepare(expr):
 
 def block(targets, exprs, prefix, indent, op="=", skip_zero=False):
     """cse a group of expressions; code lines assigning them to targets."""
-    pairs = [(t, prepare(e)) for t, e in zip(targets, exprs)]
-    if skip_zero:
-        pairs = [(t, e) for t, e in pairs if e != 0]
-    if not pairs:
-        return []
-    printer = NumbaPrinter()
-    repl, reduced = sp.cse([e for _, e in pairs], symbols=sp.numbered_symbols(prefix),
-                           order="canonical")
-    lines = [f"{indent}{s} = {printer.doprint(v)}" for s, v in repl]
-    lines += [f"{indent}{t} {op} {printer.doprint(e)}" for (t, _), e in zip(pairs, reduced)]
-    return lines
+    return cse_block(targets, [prepare(e) for e in exprs], prefix, indent, op, skip_zero)
 
 
-def _unpack(indent) -> list:
-    lines = [f"{indent}{n} = y[{i}]" for i, n in enumerate(STATE_NAMES)]
-    lines += [f"{indent}{p.name} = p[{i}]" for i, p in enumerate(PARAMETERS)]
-    for a in _ANGLES:
-        lines += [f"{indent}sin_{a} = math.sin({a})", f"{indent}cos_{a} = math.cos({a})"]
-    return lines
+UNPACK = unpack_lines(STATE_NAMES, PARAMETERS, ("phi", "theta", "psi"))
+JACOBI_DOC = ("Jacobi integral h = Σ q̇ ∂L/∂q̇ − L plus taut-tether spring energy [J].", "",
+              f"{INDENT}Constant with drag and dampers off; otherwise dh/dt = power of drag and dampers.")
 
 
-def _gate(j: int) -> str:
-    return f"{TETHER_LENGTHS[j]} > {_CODE_NAMES[TETHER_REST[j]]}"
+def printing(model: DerivedModel3D) -> Printing:
+    """The 3-D models' code names; exactly-zero force components are not printed."""
+    return Printing(UNPACK, block, lambda j, indent: _length_line(model, j, indent), N_Q,
+                    "N or N m", skip_zero=True)
 
 
 def _length_line(model: DerivedModel3D, j: int, indent: str) -> str:
     lam = TETHER_LENGTHS[j]
     return f"{indent}{lam} = {NumbaPrinter().doprint(prepare(model.length_defs[lam]))}"
-
-
-def _summed(model: DerivedModel3D, tether):
-    fams = [f for f in model.families if f.tether == tether]
-    return tuple(sum(f.Q[k] for f in fams) for k in range(N_Q)), fams
-
-
-def _forces(model: DerivedModel3D, targets, transform, prefix) -> list:
-    """Drag block, then each tether's gated block accumulated into targets."""
-    i1, i2 = INDENT, INDENT * 2
-    drag, fams = _summed(model, None)
-    out = [f"{i1}# air drag on the three bodies ({fams[0].equation})"]
-    out += block(targets, transform(drag), f"{prefix}d", i1)
-    for j in range(2):
-        tq, fams = _summed(model, j + 1)
-        out.append(_length_line(model, j, i1))
-        out.append(f"{i1}if {_gate(j)}:  # tether {j + 1} taut: "
-                   + ", ".join(f.name for f in fams))
-        body = block(targets, transform(tq), f"{prefix}t{j + 1}_", i2, op="+=", skip_zero=True)
-        out += body or [f"{i2}pass"]
-    return out
 
 
 def _mass_block(model: DerivedModel3D, indent) -> list:
@@ -149,11 +129,11 @@ ZERO_AXIAL = "I1_yaw + I2_yaw == 0.0"
 
 def rhs_source(model: DerivedModel3D) -> list:
     i1 = INDENT
-    out = ['@njit(cache=True, inline="always")', "def rhs(t, y, p, dydt):",
-           f'{i1}"""State derivative dy/dt of model {model.name!r} (SI; layout in STATE)."""']
-    out += _unpack(i1)
+    head = ['@njit(cache=True, inline="always")', "def rhs(t, y, p, dydt):",
+            f'{i1}"""State derivative dy/dt of model {model.name!r} (SI; layout in STATE)."""']
+    out = []
     qn = [f"Q{k}" for k in range(N_Q)]
-    out += _forces(model, qn, lambda e: e, "")
+    out += forces_lines(printing(model), model.families, qn)
     out.append(f"{i1}# M q'' + f(q, q') = Q (Lagrange, 3.26-3.31 in 3-D)")
     out += [f"{i1}dydt[{k}] = {STATE_NAMES[k + N_Q]}" for k in range(N_Q)]
     rn = [f"R{k}" for k in ROTATION]
@@ -162,109 +142,15 @@ def rhs_source(model: DerivedModel3D) -> list:
                  + [sp.Symbol(qn[k]) - model.f[k] for k in ROTATION], "a", i1)
     out += _mass_block(model, i1)
     out += _solve_lines(i1, [f"dydt[{N_Q + k}]" for k in ROTATION], rn, ZERO_AXIAL)
-    return out
-
-
-def family_forces_source(model: DerivedModel3D) -> list:
-    i1, i2 = INDENT, INDENT * 2
-    out = ["@njit(cache=True)", "def family_forces(y, p, out):",
-           f'{i1}"""out[f, k] = generalized force of family FAMILIES[f] on q_k (N or N m)."""']
-    out += _unpack(i1)
-    out += [_length_line(model, j, i1) for j in range(2)]
-    out.append(f"{i1}out[:, :] = 0.0")
-    for f_idx, fam in enumerate(model.families):
-        targets = [f"out[{f_idx}, {k}]" for k in range(N_Q)]
-        out.append(f"{i1}# {fam.name}: {fam.meaning} ({fam.equation})")
-        if fam.tether is None:
-            out += block(targets, fam.Q, f"f{f_idx}_", i1, skip_zero=True)
-        else:
-            out.append(f"{i1}if {_gate(fam.tether - 1)}:")
-            out += block(targets, fam.Q, f"f{f_idx}_", i2, skip_zero=True) or [f"{i2}pass"]
-    return out
-
-
-def jacobi_source(model: DerivedModel3D) -> list:
-    i1, i2 = INDENT, INDENT * 2
-    out = ["@njit(cache=True)", "def jacobi(y, p):",
-           f'{i1}"""Jacobi integral h = Σ q̇ ∂L/∂q̇ − L plus taut-tether spring energy [J].',
-           "",
-           f"{i1}Constant with drag and dampers off; otherwise dh/dt = power of drag and dampers.",
-           f'{i1}"""']
-    out += _unpack(i1)
-    out += block(["h"], [model.jacobi], "e", i1)
-    for j in range(2):
-        pots = [f.potential for f in model.families if f.tether == j + 1 and f.potential is not None]
-        out.append(_length_line(model, j, i1))
-        out.append(f"{i1}if {_gate(j)}:")
-        out += block(["h"], [sum(pots)], f"u{j + 1}_", i2, op="+=")
-    out.append(f"{i1}return h")
-    return out
-
-
-def _d_dy(model: DerivedModel3D, exprs):
-    """Rows of ∂e/∂y (12 columns), λ_j differentiated through their definitions."""
-    back = {v: k for k, v in model.length_defs.items()}
-    rows = []
-    for e in exprs:
-        full = sp.sympify(e).xreplace(model.length_defs)
-        rows.append([sp.sympify(full.diff(s)).xreplace(back) for s in STATE_SYMBOLS])
-    return rows
-
-
-def jacobian_source(model: DerivedModel3D) -> list:
-    """J = ∂(dy/dt)/∂y with the taut/slack branches of rhs."""
-    i1, i2 = INDENT, INDENT * 2
-    out = ["@njit(cache=True)", "def jacobian(t, y, p, J):",
-           f'{i1}"""J[i, j] = ∂(dy_i/dt)/∂y_j of model {model.name!r} (units of y_i/s per y_j)."""']
-    out += _unpack(i1)
-    qn = [f"Q{k}" for k in range(N_Q)]
-    dq = [[f"dQ{k}_{c}" for c in range(N_Y)] for k in range(N_Q)]
-    flat = [dq[k][c] for k in range(N_Q) for c in range(N_Y)]
-    out += _forces(model, qn, lambda e: e, "")
-    out += _forces(model, flat, lambda e: [r for row in _d_dy(model, e) for r in row], "j")
-    rn = [f"R{k}" for k in ROTATION]
-    out += block(rn, [sp.Symbol(qn[k]) - model.f[k] for k in ROTATION], "a", i1)
-    out += _mass_block(model, i1)
-    acc = [str(ACCELERATION_SYMBOLS[k]) for k in ROTATION]
-    out += _solve_lines(i1, acc, rn, ZERO_AXIAL)
-    out.append(f"{i1}J[:, :] = 0.0")
-    out += [f"{i1}J[{k}, {k + N_Q}] = 1.0" for k in range(N_Q)]
-    M, f = model.mass_matrix, model.f
-    targets, exprs = [], []
-    for k in range(N_Q):
-        dfk = _d_dy(model, [f[k]])[0]
-        for c, ys in enumerate(STATE_SYMBOLS):
-            g = sp.Symbol(dq[k][c]) - dfk[c]
-            if k in ROTATION:
-                g -= sum(sp.diff(M[k, m], ys) * ACCELERATION_SYMBOLS[m] for m in ROTATION)
-            else:
-                g = g / M[k, k]
-            targets.append(f"J[{N_Q + k}, {c}]")
-            exprs.append(g)
-    out += block(targets, exprs, "ja", i1, skip_zero=True)
-    rows = [N_Q + k for k in ROTATION]
-    out.append(f"{i1}for c in range({N_Y}):")
-    out += _solve_lines(i2, [f"J[{r}, c]" for r in rows], [f"J[{r}, c]" for r in rows], ZERO_AXIAL)
-    return out
-
-
-def index_tables() -> list:
-    """index -> name -> unit tables of y and p of the 3-D models."""
-    w = max(len(n) for n in STATE_NAMES + tuple(p.name for p in PARAMETERS))
-    lines = ["State vector y (index, name, unit, meaning):"]
-    lines += [f"  {i:2d}  {n:<{w}}  {u:<8}  {m}" for i, (n, u, m)
-              in enumerate(zip(STATE_NAMES, STATE_UNITS, STATE_MEANINGS))]
-    lines += ["", "Parameter vector p (index, name, unit, meaning):"]
-    lines += [f"  {i:2d}  {p.name:<{w}}  {p.unit:<8}  {p.meaning}" for i, p in enumerate(PARAMETERS)]
-    return lines
+    return kernel(head, UNPACK, out)
 
 
 def layout_constants() -> list:
     """STATE, PARAMETERS ... tuples (the same in every 3-D module and layout3d)."""
-    return [f"STATE = {STATE_NAMES!r}", f"STATE_UNITS = {STATE_UNITS!r}",
-            f"PARAMETERS = {tuple(p.name for p in PARAMETERS)!r}",
-            f"PARAMETER_UNITS = {tuple(p.unit for p in PARAMETERS)!r}",
-            f"FAMILIES = {FAMILY_ORDER!r}"]
+    return [*constant("STATE", STATE_NAMES), *constant("STATE_UNITS", STATE_UNITS),
+            *constant("PARAMETERS", tuple(p.name for p in PARAMETERS)),
+            *constant("PARAMETER_UNITS", tuple(p.unit for p in PARAMETERS)),
+            *constant("FAMILIES", FAMILY_ORDER)]
 
 
 def geometry_lines() -> list:
@@ -280,7 +166,7 @@ def geometry_lines() -> list:
     def comps(vec):
         return [printer.doprint(prepare(sp.sympify(c).subs(sub))) for c in kin.components(vec)]
 
-    return geometry_source(_unpack(INDENT), [comps(v) for v in kin.tether_vectors],
+    return geometry_source(list(UNPACK), [comps(v) for v in kin.tether_vectors],
                            [str(_CODE_NAMES[r]) for r in TETHER_REST],
                            [comps(r) for r in kin.positions], " (docs/three-d.md)")
 
@@ -296,56 +182,24 @@ def module_source(model: DerivedModel3D, geometry=()) -> str:
     Returns
     -------
     str
-        Header (index tables, layout tuples), solvers, the four kernels and the
+        Header (index tables, layout tuples), solvers, the three kernels and the
         geometry kernels (``geometry``: tether_margins, body_radii).
     """
     head = ['"""GENERATED FILE - DO NOT EDIT.', "",
-            f"Model {model.name!r}: {model.definition.description}.",
+            *paragraph(f"Model {model.name!r}: {model.definition.description}."),
             "Produced by `make derive` (python -m derive) from derive/three_d/; regenerate",
             f"instead of editing.  sympy {sp.__version__}.  Conventions: docs/three-d.md.", "",
-            *index_tables(), '"""', "import math", "", "from numba import njit", "",
-            f"MODEL = {model.name!r}", f"DESCRIPTION = {model.definition.description!r}",
+            *index_tables(STATE_NAMES, STATE_UNITS, PARAMETERS, STATE_MEANINGS), '"""',
+            "import math", "", "from numba import njit", "",
+            f"MODEL = {model.name!r}", *constant("DESCRIPTION", model.definition.description),
             'GEOMETRY = "3d"  # roll, pitch, yaw and an out-of-plane balloon',
             'ORBIT = "circular"  # the COM held on a circle of radius r0 at rate ω',
             *layout_constants()]
     assert tuple(f.name for f in model.families) == FAMILY_ORDER
     lines = head + SOLVERS + ["", ""] + rhs_source(model)
-    for part in (family_forces_source, jacobi_source, jacobian_source):
-        lines += ["", ""] + part(model)
+    pr = printing(model)
+    lines += ["", ""] + family_forces_source(pr, model.families)
+    lines += ["", ""] + jacobi_source(pr, model.families, model.jacobi, JACOBI_DOC)
     if geometry:
         lines += ["", ""] + list(geometry)
-    return "\n".join(lines) + "\n"
-
-
-def module_filename(name: str) -> str:
-    """'3d-exact-gravity' -> 'three_d_exact_gravity.py' (a valid module name)."""
-    return name.replace("3d", "three_d").replace("-", "_") + ".py"
-
-
-def layout_source(definitions) -> str:
-    """generated/layout3d.py: index tables, tuples and Y_*/P_* index constants."""
-    lines = ['"""GENERATED FILE - DO NOT EDIT.  Produced by `make derive` from',
-             "derive/three_d/symbols3d.py: the layout of every 3-D model.", "",
-             *index_tables(), '"""', "",
-             f"MODEL_NAMES = {tuple(d.name for d in definitions)!r}", *layout_constants(), ""]
-    lines += [f"Y_{n.upper()} = {i}" for i, n in enumerate(STATE_NAMES)]
-    lines += [""] + [f"P_{p.name.upper()} = {i}" for i, p in enumerate(PARAMETERS)]
-    return "\n".join(lines) + "\n"
-
-
-def dispatch_source(definitions) -> str:
-    """generated/dispatch3d.py: jitted entry points taking a 3-D model index."""
-    mods = [module_filename(d.name)[:-3] for d in definitions]
-    lines = ['"""GENERATED FILE - DO NOT EDIT.  Produced by `make derive` from derive/three_d/."""',
-             "from numba import njit", "", *(f"from . import {m}" for m in mods), "",
-             f"MODEL_NAMES = {tuple(d.name for d in definitions)!r}", ""]
-    for fn, args in (("rhs", "t, y, p, dydt"), ("family_forces", "y, p, out"),
-                     ("jacobi", "y, p"), ("jacobian", "t, y, p, J")):
-        lines += ["", "@njit(cache=True)", f"def {fn}(model, {args}):",
-                  f'    """{fn} of model MODEL_NAMES[model]."""']
-        ret = "return " if fn == "jacobi" else ""
-        for i, m in enumerate(mods):
-            lines += [f"    {'if' if i == 0 else 'elif'} model == {i}:", f"        {ret}{m}.{fn}({args})"]
-        if ret:
-            lines += ["    return 0.0"]
     return "\n".join(lines) + "\n"

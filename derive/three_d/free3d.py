@@ -91,7 +91,7 @@ def free3d_substitution() -> dict:
 
 def to_free3d_symbols(expr):
     """Replace q(t), q̇(t), q̈(t) by the plain state symbols."""
-    return sp.sympify(expr).subs(free3d_substitution())
+    return sp.sympify(expr).xreplace(free3d_substitution())
 
 
 @functools.cache

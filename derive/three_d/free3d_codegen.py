@@ -8,7 +8,8 @@ zero-axial-inertia rule of the 3-D models (I1_yaw + I2_yaw = 0: ψ̈ = 0).
 from __future__ import annotations
 
 from ..orbit_codegen import FreeLayout, geometry_lines, module_source
-from .codegen3d import ZERO_AXIAL, block, module_filename, prepare
+from ..printer import module_filename
+from .codegen3d import ZERO_AXIAL, block, prepare
 from .free3d import (
     FREE3D_ACCELERATION_SYMBOLS,
     FREE3D_DEFINITIONS,
@@ -31,7 +32,7 @@ FREE3D = FreeLayout(
     'GEOMETRY = "3d"  # roll, pitch, yaw and an out-of-plane balloon',
     ("Produced by `make derive` (python -m derive) from derive/three_d/free3d.py and",
      "derive/orbit_codegen.py; regenerate instead of editing.  docs/three-d.md, docs/orbit.md."),
-    axial=(PSI, ZERO_AXIAL))
+    axial=(PSI, ZERO_AXIAL), force_units="N, N, N, N m, N m, N m, N, N m")
 
 
 def write_free3d_models(out, definitions=FREE3D_DEFINITIONS) -> list:

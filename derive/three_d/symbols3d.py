@@ -69,7 +69,7 @@ def state_substitution() -> dict:
 
 def to_state_symbols(expr):
     """Replace q(t), q̇(t), q̈(t) by the plain state symbols."""
-    return sp.sympify(expr).subs(state_substitution())
+    return sp.sympify(expr).xreplace(state_substitution())
 
 
 def eq44_box_inertia(mass: float, area: float) -> tuple:

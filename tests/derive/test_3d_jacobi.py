@@ -17,7 +17,7 @@ from scipy.integrate import solve_ivp
 
 import tethersim.generated as generated
 from derive.three_d.symbols3d import eq44_box_inertia
-from tethersim.generated import layout3d
+from tethersim.generated import three_d as layout3d  # every 3-D model has this layout
 
 R0 = 6.578e6
 MU = 3.986004418e14

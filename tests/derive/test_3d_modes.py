@@ -1,7 +1,7 @@
 """Linear attitude modes of the 3-D kernels against closed forms (checks (b), (c)).
 
 Jacobian of the generated kernels at the nominal attitude (y = 0), drag and
-tethers off.  References (docs/sources.md):
+tethers off (central differences of rhs, tethersim/engine/jacobian.py).  References (docs/sources.md):
 
 * rigid dumbbell (point masses on a rod): in-plane libration √3·n, out-of-plane
   2·n (Cosmo & Lorenzini, Tethers in Space Handbook, 1997);
@@ -24,9 +24,11 @@ import numpy as np
 import pytest
 
 import tethersim.generated as generated
-from tethersim.generated import layout3d
+from tethersim.engine.jacobian import jacobian
+from tethersim.generated import three_d as layout3d  # every 3-D model has this layout
+from tethersim.model.registry import BY_NAME
 
-# compiles the 3-D kernels (jacobian ~15 s cold): the slow tier (make test-slow, CI)
+# compiles the 3-D kernels and their difference loops: the slow tier (make test-slow, CI)
 pytestmark = pytest.mark.slow
 
 MODELS = tuple(n for n, m in generated.MODELS.items()
@@ -53,7 +55,7 @@ def params(m=50.0, half_length=5.0, box=(0.0, 0.0, 0.0)):
 
 def jacobian_at_rest(model, p):
     J = np.full((12, 12), np.nan)
-    generated.MODELS[model].jacobian(0.0, np.zeros(12), p, J)
+    jacobian(BY_NAME[model].index, 0.0, np.zeros(12), p, J)
     return J
 
 
@@ -160,7 +162,7 @@ def test_satellite_moments_give_the_rigid_body_pitch_and_roll_yaw_quartic(model,
     sat = rigid_satellite(I1=box, I2=list(box))
     n = sat.omega
     J = np.full((12, 12), np.nan)
-    generated.MODELS[model].jacobian(0.0, np.zeros(12), parameter_vector(sat, model), J)
+    jacobian(BY_NAME[model].index, 0.0, np.zeros(12), parameter_vector(sat, model), J)
     assert_attitude_decoupled(J)
     pitch, quartic = closed_form(*totals(50.0, 5.0, box), n=n)
     got_pitch, got_ry = eigs(J, [THETA]), eigs(J, [PHI, PSI])
@@ -181,7 +183,7 @@ def test_satellite_point_masses_give_the_dumbbell_librations(model):
     sat = rigid_satellite(inertia="points")
     n = sat.omega
     J = np.full((12, 12), np.nan)
-    generated.MODELS[model].jacobian(0.0, np.zeros(12), parameter_vector(sat, model), J)
+    jacobian(BY_NAME[model].index, 0.0, np.zeros(12), parameter_vector(sat, model), J)
     assert_same_roots(eigs(J, [THETA]), [1j * math.sqrt(3) * n, -1j * math.sqrt(3) * n], n)
     assert_same_roots(eigs(J, [PHI]), [2j * n, -2j * n], n)
     assert np.all(J[RATE[PSI]] == 0.0)  # no axial moment: yaw is no degree of freedom

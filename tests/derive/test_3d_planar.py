@@ -18,7 +18,10 @@ import sympy as sp
 import tethersim.generated as generated
 from derive.three_d import symbols3d as s3
 from derive.three_d.reference import derived_3d
-from tethersim.generated import layout, layout3d
+from tethersim.engine.jacobian import jacobian
+from tethersim.generated import layout
+from tethersim.generated import three_d as layout3d  # every 3-D model has this layout
+from tethersim.model.registry import BY_NAME
 
 PAIRS = (("derived", "3d"), ("exact-gravity", "3d-exact-gravity"),
          ("objective-damper", "3d-objective-damper"))
@@ -105,7 +108,7 @@ def test_family_forces_in_plane_equal_planar_and_out_of_plane_are_zero(sample, p
     assert worst <= REL_TOL, worst
 
 
-# each 3-D jacobian compiles for ~9 s cold: the variants' in the slow tier (as test_3d_modes.py)
+# each 3-D model's difference loop compiles for seconds cold: the variants' in the slow tier
 @pytest.mark.parametrize("planar, three_d", [PAIRS[0], *(pytest.param(*pair, marks=pytest.mark.slow)
                                                         for pair in PAIRS[1:])])
 def test_jacobian_in_plane_block_equals_planar_and_planar_states_stay_planar(sample, planar, three_d):
@@ -114,13 +117,15 @@ def test_jacobian_in_plane_block_equals_planar_and_planar_states_stay_planar(sam
     for y2, p2 in sample:
         y3, p3 = to_3d(y2, p2)
         J2, J3 = np.full((6, 6), np.nan), np.full((12, 12), np.nan)
-        generated.MODELS[planar].jacobian(0.0, y2, p2, J2)
-        generated.MODELS[three_d].jacobian(0.0, y3, p3, J3)
+        jacobian(BY_NAME[planar].index, 0.0, y2, p2, J2)
+        jacobian(BY_NAME[three_d].index, 0.0, y3, p3, J3)
         block = J3[np.ix_(IN_PLANE, IN_PLANE)]
-        scale = np.maximum(np.abs(J2), 1e-12 * np.max(np.abs(J2), axis=1, keepdims=True))
+        # per row: the 3-D Jacobian is central differences (tethersim/engine/jacobian.py),
+        # whose rate columns carry the rounding of the ~7.3 km/s air speed inside the drag
+        scale = np.max(np.abs(J2), axis=1, keepdims=True)
         worst = max(worst, float(np.max(np.abs(block - J2) / scale)))
         assert np.all(J3[np.ix_(OUT_OF_PLANE, IN_PLANE)] == 0.0)
-    assert worst <= 1e-9, worst
+    assert worst <= 1e-8, worst
 
 
 @pytest.mark.slow

@@ -1,7 +1,8 @@
 """Roll and yaw: what the balloon adds out of the orbit plane (issue 13, docs/roll.md).
 
 At a planar equilibrium (δz = φ = ψ = 0) the 3-D models are symmetric under
-z → −z, so their Jacobian splits exactly into an in-plane block (δx, δy, θ)
+z → −z, so their Jacobian (central differences of the generated rhs,
+tethersim.engine.jacobian) splits exactly into an in-plane block (δx, δy, θ)
 and an out-of-plane block (δz, roll φ, yaw ψ and rates).  The out-of-plane
 block's eigenvalues are the roll, yaw and balloon-sideways modes.  Compared
 here with:
@@ -27,6 +28,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from tethersim.analysis.equilibrium import NEUTRAL_TOL, find_equilibrium
+from tethersim.engine.jacobian import jacobian
 from tethersim.model.constants import OMEGA_EARTH
 from tethersim.model.inputs import box_inertias, parameter_vector
 from tethersim.model.registry import KERNELS, get_model
@@ -268,7 +270,7 @@ def roll_case(sat: Satellite, case: str = "balloon", model: str = "3d") -> RollC
         y = _boom_pitch_equilibrium(p, model, guess)
         out_keys, in_keys = ("phi", "psi"), ("theta",)
     J = np.empty((m.n_state, m.n_state))
-    KERNELS[m.index].jacobian(0.0, np.ascontiguousarray(y, dtype=float), p, J)
+    jacobian(m.index, 0.0, np.ascontiguousarray(y, dtype=float), p, J)
     n = m.n_coordinates
     i_out = [names.index(k) for k in OUT_OF_PLANE] + [n + names.index(k) for k in OUT_OF_PLANE]
     i_in = [names.index(k) for k in IN_PLANE] + [n + names.index(k) for k in IN_PLANE]
