@@ -136,7 +136,7 @@ def test_until_reentry_runs_to_the_reentry_and_says_so(tmp_path):
     assert code == 0, err
     summary = json.loads((out / "summary.json").read_text())
     assert summary["status"] == "re-entered" and summary["until"].startswith("at most 240 h")
-    assert summary["run ended by"].startswith("re-entered: altitude")
+    assert summary["run ended by"].startswith("re-entered: the boom's COM fell below 170 km")
     assert summary["run ended at [h]"] == pytest.approx(summary["re-entry time [h]"], abs=0.01)
     assert "until re-entry, at most 240 h" in stdout
 

@@ -31,6 +31,7 @@ from tethersim.engine.integrators.steps import (
     dop853_error_norm,
     dop853_interpolate,
     dop853_step,
+    initial_step,
 )
 
 ORDER = 8
@@ -41,36 +42,6 @@ MAX_FACTOR = 10.0  # largest increase of the step after an acceptance
 ERROR_EXPONENT = -1.0 / (ERROR_ESTIMATOR_ORDER + 1)
 
 STATUS_OK, STATUS_NONFINITE, STATUS_STEP_TOO_SMALL, STATUS_MAX_STEPS, STATUS_EVENT = 0, 1, 2, 3, 4
-
-
-@njit(cache=True)
-def initial_step(model, air, t0, y0, f0, p, pw, rtol, atol, t_end, y1, f1):
-    """Hairer's starting step (scipy.integrate._ivp.common.select_initial_step).
-
-    y1, f1: scratch vectors like y0.
-    """
-    n = y0.shape[0]
-    d0, d1 = 0.0, 0.0
-    for i in range(n):
-        sc = atol + abs(y0[i]) * rtol
-        d0 += (y0[i] / sc) ** 2
-        d1 += (f0[i] / sc) ** 2
-    d0, d1 = math.sqrt(d0 / n), math.sqrt(d1 / n)
-    h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
-    h0 = min(h0, t_end - t0)
-    for i in range(n):
-        y1[i] = y0[i] + h0 * f0[i]
-    derivative(model, air, t0 + h0, y1, p, pw, f1)
-    d2 = 0.0
-    for i in range(n):
-        sc = atol + abs(y0[i]) * rtol
-        d2 += ((f1[i] - f0[i]) / sc) ** 2
-    d2 = math.sqrt(d2 / n) / h0
-    if d1 <= 1e-15 and d2 <= 1e-15:
-        h1 = max(1e-6, h0 * 1e-3)
-    else:
-        h1 = (0.01 / max(d1, d2)) ** (1.0 / (ORDER + 1))
-    return min(100 * h0, h1, t_end - t0)
 
 
 @njit(cache=True, nogil=True)
@@ -97,7 +68,7 @@ def _dop853_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out
             return t, h, i_out, STATUS_NONFINITE, -1
     if h <= 0.0:
         # F's rows are free until the first dense output: scratch for the trial step
-        h = initial_step(model, air, t, y, f, p, pw, rtol, atol, t_end, F[0], F[1])
+        h = initial_step(model, air, t, y, f, p, pw, rtol, atol, t_end, F[0], F[1], ORDER)
         counters[0] += 1
     if not math.isfinite(h):
         return t, h, i_out, STATUS_NONFINITE, -1

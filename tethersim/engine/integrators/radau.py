@@ -26,6 +26,7 @@ from tethersim.engine.integrators.dop853 import (
 )
 from tethersim.engine.integrators.linalg import EPS, fd_jacobian, lu_solve
 from tethersim.engine.integrators.radau_step import (
+    ERROR_ESTIMATOR_ORDER,
     MAX_FACTOR,
     MIN_FACTOR,
     NEWTON_MAXITER,
@@ -37,9 +38,9 @@ from tethersim.engine.integrators.radau_step import (
     _factor,
     _predict_factor,
     _rms,
-    initial_step,
     radau_newton,
 )
+from tethersim.engine.integrators.steps import initial_step
 
 N_COUNTERS = 7  # nfev, accepted, rejected, switches, steps, Jacobians, LU factorisations
 
@@ -92,7 +93,8 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
     h_abs_old, err_old = carry[_C_H_OLD], carry[_C_ERR_OLD]
     have_sol, t_old, h_last = carry[_C_HAVE_SOL] != 0.0, carry[_C_T_OLD], carry[_C_H_LAST]
     if h <= 0.0:
-        h = initial_step(model, air, t, y, f, p, pw, rtol, atol, t_end, ys, fs)
+        h = initial_step(model, air, t, y, f, p, pw, rtol, atol, t_end, ys, fs,
+                         ERROR_ESTIMATOR_ORDER)
         counters[0] += 1
     if not math.isfinite(h):
         return t, h, i_out, STATUS_NONFINITE, -1

@@ -181,30 +181,3 @@ def _dense_q(n, Z, Q):
     for i in range(n):
         for k in range(3):
             Q[i, k] = Z[0, i] * P[0, k] + Z[1, i] * P[1, k] + Z[2, i] * P[2, k]
-
-
-@njit(cache=True)
-def initial_step(model, air, t0, y0, f0, p, pw, rtol, atol, t_end, y1, f1):
-    """Hairer's starting step for the order-3 error estimate (scipy's select_initial_step)."""
-    n = model_size(model)
-    d0, d1 = 0.0, 0.0
-    for i in range(n):
-        sc = atol + abs(y0[i]) * rtol
-        d0 += (y0[i] / sc) ** 2
-        d1 += (f0[i] / sc) ** 2
-    d0, d1 = math.sqrt(d0 / n), math.sqrt(d1 / n)
-    h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
-    h0 = min(h0, t_end - t0)
-    for i in range(n):
-        y1[i] = y0[i] + h0 * f0[i]
-    derivative(model, air, t0 + h0, y1, p, pw, f1)
-    d2 = 0.0
-    for i in range(n):
-        sc = atol + abs(y0[i]) * rtol
-        d2 += ((f1[i] - f0[i]) / sc) ** 2
-    d2 = math.sqrt(d2 / n) / h0
-    if d1 <= 1e-15 and d2 <= 1e-15:
-        h1 = max(1e-6, h0 * 1e-3)
-    else:
-        h1 = (0.01 / max(d1, d2)) ** (1.0 / (ERROR_ESTIMATOR_ORDER + 1))
-    return min(100 * h0, h1, t_end - t0)

@@ -192,3 +192,36 @@ def dop853_interpolate(n, F, y, x, out):
             else:
                 acc *= 1.0 - x
         out[i] = acc + y[i]
+
+
+@njit(cache=True)
+def initial_step(model, air, t0, y0, f0, p, pw, rtol, atol, t_end, y1, f1, order):
+    """Hairer's starting step (scipy.integrate._ivp.common.select_initial_step).
+
+    ``order``: the exponent is 1 / (order + 1) (DOP853 passes its order 8, Radau its
+    error estimate's 3).
+
+    y1, f1: scratch vectors like y0.
+    """
+    n = y0.shape[0]
+    d0, d1 = 0.0, 0.0
+    for i in range(n):
+        sc = atol + abs(y0[i]) * rtol
+        d0 += (y0[i] / sc) ** 2
+        d1 += (f0[i] / sc) ** 2
+    d0, d1 = math.sqrt(d0 / n), math.sqrt(d1 / n)
+    h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
+    h0 = min(h0, t_end - t0)
+    for i in range(n):
+        y1[i] = y0[i] + h0 * f0[i]
+    derivative(model, air, t0 + h0, y1, p, pw, f1)
+    d2 = 0.0
+    for i in range(n):
+        sc = atol + abs(y0[i]) * rtol
+        d2 += ((f1[i] - f0[i]) / sc) ** 2
+    d2 = math.sqrt(d2 / n) / h0
+    if d1 <= 1e-15 and d2 <= 1e-15:
+        h1 = max(1e-6, h0 * 1e-3)
+    else:
+        h1 = (0.01 / max(d1, d2)) ** (1.0 / (order + 1))
+    return min(100 * h0, h1, t_end - t0)
