@@ -18,6 +18,14 @@ import warnings
 import numpy as np
 from tqdm.auto import tqdm
 
+from tethersim.engine.arguments import (
+    ATOL_RANGE,
+    MIN_PERIODS,
+    RTOL_RANGE,
+    check_positive,
+    check_range,
+    check_scheme,
+)
 from tethersim.engine.domain import event_message
 from tethersim.engine.dynamics import initial_state, state_size
 from tethersim.engine.events import EVENTS, STOPS, event_parameters
@@ -55,74 +63,8 @@ QUICK_RUN_S = 0.5
 # ~2500x a nominal run (steps of ~5 ms): a spinning-up run fails in about a minute, not an
 # hour; no tether of this model's scale (N/mm^2 x 1 mm^2) needs more
 MAX_STEPS_PER_PERIOD = 1_000_000
-# allowed adaptive tolerances.  rtol: below 1e-14 is under double precision's resolution
-# (~2.2e-16 per operation, amplified by the stage sums); above 1e-3, scipy solve_ivp's
-# default and the loosest tolerance in common use, a step may be wrong by more than 0.1 %
-# and over the thousands of steps of a run the pitch error reaches the 0.05 rad settling
-# band (`run --rtol 0.9` "left the domain" on satI): the result would be the integrator's.
-# atol [m, rad, m/s, rad/s]: below 1e-20 the absolute term vanishes beside any
-# state of size >= 1e-6 (it then plays no role) and near 1e-300 the starting-step estimate
-# divides by zero; above 1e-3 (1 mm, 1 mrad per step) it swamps rtol on the states of order
-# 1 rad and 10 m that the thesis's runs have.
-RTOL_RANGE = (1e-14, 1e-3)
-ATOL_RANGE = (1e-20, 1e-3)
-# shortest run: below 1e-4 orbit (~0.5 s at 200 km) the step budget MAX_STEPS_PER_PERIOD x
-# periods falls under 100 steps (0 for 1e-9 orbit: "too many steps at t = 0")
-MIN_PERIODS = 1e-4
-
-
 class RK4StepWarning(UserWarning):
     """The RK4 step exceeds what the linearised system supports."""
-
-
-def _check_positive(name, value, integer=False):
-    if integer:
-        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
-            raise ValueError(f"{name} = {value!r}: must be an integer >= 1")
-        return int(value)
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} = {value!r}: must be a positive number") from None
-    if not (math.isfinite(v) and v > 0):
-        raise ValueError(f"{name} = {value!r}: must be a finite number > 0")
-    return v
-
-
-def _check_range(name, value, bounds):
-    v = _check_positive(name, value)
-    if not bounds[0] <= v <= bounds[1]:
-        raise ValueError(f"{name} = {value!r}: allowed range {bounds[0]:g} <= {name} <= "
-                         f"{bounds[1]:g} (docs/limits.md)")
-    return v
-
-
-def check_scheme(sat: Satellite, method: str) -> None:
-    """Refuse tethers or dampers too stiff for an explicit scheme, in one line.
-
-    RK4 and DOP853 must resolve a tether's axial oscillation step by step (a real fibre
-    line's is a fraction of a second: docs/tethers.md); the implicit scheme need not.
-    A satellite made with ``allow_implausible`` runs anyway (slowly).
-
-    Parameters
-    ----------
-    sat : Satellite
-        The satellite.
-    method : str
-        ``"adaptive"``, ``"rk4"`` (explicit) or ``"implicit"``.
-
-    Raises
-    ------
-    ValueError
-        Naming the tether, its period and the way out.
-    """
-    if method == "implicit" or sat.allow_implausible:
-        return
-    from tethersim.model.plausibility import stiffness_problems
-    stiff = stiffness_problems(sat)
-    if stiff:
-        raise ValueError(f"{stiff[0]}; method='implicit' (--method implicit) integrates stiff "
-                         f"tethers (docs/tethers.md)")
 
 
 def _kernel_args(sat: Satellite, model: str, duration: float) -> tuple:
@@ -201,7 +143,7 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
     check_simulation(periods, steps, method, samples, check)
     if not isinstance(sat, Satellite):
         raise TypeError(f"sat must be a tethersim Satellite (load_preset/load), got {type(sat).__name__}")
-    periods = _check_positive("periods", periods)
+    periods = check_positive("periods", periods)
     if periods < MIN_PERIODS:
         raise ValueError(f"periods = {periods!r}: allowed range >= {MIN_PERIODS:g} orbit (a "
                          f"shorter run has too few steps to integrate)")
@@ -213,17 +155,17 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
     check_scheme(sat, method)
     model = model_for_orbit(model, sat.orbit)  # orbit = "free": the model's free twin
     if method == "rk4":
-        steps = _check_positive("steps", steps if steps is not None
+        steps = check_positive("steps", steps if steps is not None
                                 else max(1, round(STEPS_PER_PERIOD * periods)), integer=True)
         locate = False if locate_switches is None else bool(locate_switches)
         run = _run_rk4(sat, periods, steps, model, locate, progress, step_warning)
         return estimate_error(run) if check else run
-    rtol = _check_range("rtol", rtol, RTOL_RANGE)
-    atol = _check_range("atol", atol, ATOL_RANGE)
+    rtol = check_range("rtol", rtol, RTOL_RANGE)
+    atol = check_range("atol", atol, ATOL_RANGE)
     if samples is not None:
-        n_out = _check_positive("samples", samples, integer=True)
+        n_out = check_positive("samples", samples, integer=True)
     elif steps is not None:
-        n_out = _check_positive("steps", steps, integer=True)
+        n_out = check_positive("steps", steps, integer=True)
     else:
         n_out = max(2, round(SAMPLES_PER_PERIOD * periods))
     locate = True if locate_switches is None else bool(locate_switches)

@@ -19,6 +19,7 @@ import numpy as np
 
 from tethersim.analysis.classify import classify
 from tethersim.analysis.metrics import SS_FRACTION, PitchMetrics
+from tethersim.engine.arguments import check_scheme
 from tethersim.engine.dynamics import initial_state
 from tethersim.engine.events import event_parameters
 from tethersim.engine.guards import API_SUBJECT, check_simulation
@@ -28,7 +29,6 @@ from tethersim.engine.simulate import (
     FAITHFUL_STEPS_PER_PERIOD,
     MAX_STEPS_PER_PERIOD,
     METRIC_SAMPLES_PER_PERIOD,
-    check_scheme,
     refined_grid,
 )
 from tethersim.experiments.sweep.kernel import COL_FIELDS, F_FIELDS, I_FIELDS, sweep_block
