@@ -21,7 +21,7 @@ from tethersim.engine.simulate import (
     METRIC_SAMPLES_PER_PERIOD,
     RTOL_RANGE,
 )
-from tethersim.model import params
+from tethersim.model import params, plausibility
 from tethersim.model.registry import DEFAULT_MODEL, model_for_orbit, model_index
 from tethersim.model.satellite import Satellite, SatelliteError
 
@@ -174,12 +174,20 @@ class SweepSpec:
 
     def _check_point(self, k: int) -> None:
         try:
-            self.satellite_at(k)
+            sat = self.satellite_at(k)
         except SatelliteError as exc:
-            where = ", ".join(f"{n} = {v:g} {params.unit(n)}"
-                              for n, v in self.values_at(k).items())
-            raise SatelliteError(f"sweep point {where} is not a valid satellite: "
+            raise SatelliteError(f"sweep point {self._where(k)} is not a valid satellite: "
                                  f"{exc}") from None
+        # a sweep runs the explicit schemes: a tether too stiff for them (a real fibre line,
+        # docs/tethers.md) is refused here, before any store, not in the middle of the run
+        stiff = [] if sat.allow_implausible else plausibility.stiffness_problems(sat)
+        if stiff:
+            raise SatelliteError(f"sweep point {self._where(k)} is too stiff for the sweep's "
+                                 f"{self.method} scheme: {stiff[0]}; run such a tether with "
+                                 f"`tethersim run --method implicit`")
+
+    def _where(self, k: int) -> str:
+        return ", ".join(f"{n} = {v:g} {params.unit(n)}" for n, v in self.values_at(k).items())
 
     # --- plain-data form (store attributes, Dask) -------------------------------
     def to_json(self) -> str:
