@@ -123,6 +123,7 @@ def test_simulate_implicit_agrees_with_dop853_and_says_which_scheme():
     ref = ts.simulate(SAT, 1, rtol=1e-13, atol=1e-14, progress=False)
     res = ts.simulate(SAT, 1, method="implicit", rtol=1e-9, progress=False)
     assert res.method == "implicit" and res.status == "ok" and res.t.size == ref.t.size
+    assert "Radau IIA implicit, rtol 1e-09" in res.label
     scale = np.maximum(np.abs(ref.states[:, :6]).max(axis=0), 1.0)
     assert np.all(np.abs(res.states[:, :6] - ref.states[:, :6]) <= 1e-6 * scale)
     # its error estimate reruns the same scheme, tighter

@@ -248,8 +248,8 @@ class Integrator:
         ch. 5), switches not located``; ``period`` [s] of the orbit, ``periods`` run."""
         located = "switches located" if self.locate else "switches not located"
         if self.method != "rk4":
-            scheme = "Radau IIA implicit" if self.method == "implicit" else "DOP853 adaptive"
-            return f"{scheme}, rtol {self.rtol:g}, {located}"
+            from tethersim.engine.result import ADAPTIVE_SCHEMES
+            return f"{ADAPTIVE_SCHEMES[self.method]}, rtol {self.rtol:g}, {located}"
         per_orbit = self.steps / periods
         thesis = self.faithful and self.steps == faithful_steps(periods)
         why = ", thesis ch. 5" if thesis else ""

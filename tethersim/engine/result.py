@@ -32,6 +32,8 @@ CONVERGED_TOLERANCE = {"rad": CONVERGED_THETA, "m": CONVERGED_POSITION}
 STATUSES = ("ok", "diverged", "failed", "re-entered", "left-domain", "interrupted",
             "tether-broke")
 DISSIPATIVE = ("drag1", "drag2", "drag3", "damper1", "damper2")
+# how labels name the error-controlled schemes (simulate's method -> words)
+ADAPTIVE_SCHEMES = {"adaptive": "DOP853 adaptive", "implicit": "Radau IIA implicit"}
 
 
 def errors_converged(errors: dict | None, units: dict) -> bool | None:
@@ -235,7 +237,7 @@ class SimResult:
             kind = f"RK4, fixed step {self.step:.4g} s"
             kind += " (faithful to the thesis)" if self.faithful else ", switches located"
         else:
-            kind = f"DOP853 adaptive, rtol {self.rtol:g}"
+            kind = f"{ADAPTIVE_SCHEMES[self.method]}, rtol {self.rtol:g}"
         if self.converged is None:
             conv = "convergence not checked"
         else:

@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 from tethersim.analysis.outcome import ROW_COLUMNS, outcome
-from tethersim.engine.result import SimResult
+from tethersim.engine.result import ADAPTIVE_SCHEMES, SimResult
 from tethersim.model.registry import NAMES, THESIS_VARIANTS, model_for_orbit
 from tethersim.model.satellite import Satellite
 
@@ -115,7 +115,7 @@ def describe_runs(results, overrides: str = "") -> str:
         kind = f"RK4, fixed step {res.step:.4g} s" + (" (faithful)" if res.faithful
                                                       else ", switches located")
     else:
-        kind = f"DOP853 adaptive, rtol {res.rtol:g}"
+        kind = f"{ADAPTIVE_SCHEMES[res.method]}, rtol {res.rtol:g}"
     name = res.satellite.name + (f" ({overrides})" if overrides else "")
     return (f"{name}, {orbits:.4g} orbits, {kind}; models {', '.join(m for m, _ in results)}; "
             f"θ differences against {results[0][0]}")
