@@ -124,8 +124,8 @@ def bench_csweep(rep, S, q, log):
 
     from tethersim import load_preset
     from tethersim.experiments.sweep import SweepSpec, run_sweep
+    from tethersim.experiments.sweep.plan import ATOL_PER_RTOL
     from tethersim.experiments.sweep.runner import map_points
-    from tethersim.experiments.sweep.spec import ATOL_PER_RTOL
 
     lib, why = build(S)
     if lib is None:

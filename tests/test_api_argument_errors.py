@@ -8,7 +8,7 @@ import pytest
 
 import tethersim as ts
 from tethersim.experiments.sweep import SweepSpec
-from tethersim.experiments.sweep.spec import MAX_SAMPLES, MAX_STEPS
+from tethersim.experiments.sweep.plan import MAX_SAMPLES, MAX_STEPS
 
 SAT = ts.load_preset("satI")
 RES = ts.simulate(SAT, periods=0.05, progress=False)

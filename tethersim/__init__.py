@@ -29,7 +29,7 @@ __all__ = ["Satellite", "SatelliteError", "SimResult", "RK4StepWarning", "Outcom
            "load_preset", "simulate", "outcome", "run_summary", "write_timeseries",
            "write_netcdf", "write_table", "accelerations", "generalized_forces", "parameters",
            "MODELS", "FAMILIES", "STATE", "PARAMETERS", "__version__", "find_equilibrium",
-           "Equilibrium", "SweepSpec", "run_sweep", "bodies", "body_accelerations",
+           "Equilibrium", "SweepSpec", "run_sweep", "Plan", "run_plan", "bodies", "body_accelerations",
            "air_density", "MATERIALS", "tether_parameters"]
 from tethersim._version import __version__  # noqa: E402
 
@@ -237,7 +237,8 @@ def body_accelerations(sat: Satellite, state, t: float = 0.0, model: str = DEFAU
 # heavier parts of the API (scipy.optimize, xarray/zarr) load on first use
 _LAZY = {"find_equilibrium": "tethersim.analysis.equilibrium",
          "Equilibrium": "tethersim.analysis.equilibrium",
-         "SweepSpec": "tethersim.experiments.sweep", "run_sweep": "tethersim.experiments.sweep"}
+         "SweepSpec": "tethersim.experiments.sweep", "run_sweep": "tethersim.experiments.sweep",
+         "Plan": "tethersim.experiments.sweep", "run_plan": "tethersim.experiments.sweep"}
 
 
 def __getattr__(name):

@@ -16,7 +16,7 @@ import tethersim as ts
 from tethersim import load_preset, simulate
 from tethersim.analysis.classify import classify
 from tethersim.experiments.sweep import StoreMismatch, SweepInterrupted, SweepSpec, run_sweep, sweep
-from tethersim.experiments.sweep.spec import ATOL_PER_RTOL, DEFAULT_RTOL, SAMPLES_PER_PERIOD
+from tethersim.experiments.sweep.plan import ATOL_PER_RTOL, DEFAULT_RTOL, SAMPLES_PER_PERIOD
 from tethersim.model.params import parse_grid
 from tethersim.model.satellite import SatelliteError
 

@@ -51,7 +51,7 @@ from tethersim.analysis.outcome import outcome
 from tethersim.engine.release import continue_released
 from tethersim.engine.simulate import RTOL_RANGE, simulate
 from tethersim.experiments.sweep.lock import StoreLock
-from tethersim.experiments.sweep.spec import ATOL_PER_RTOL
+from tethersim.experiments.sweep.plan import ATOL_PER_RTOL
 from tethersim.model import atmosphere
 from tethersim.model.air import solar_cycle_densities
 from tethersim.model.air.model import SOLAR_CYCLE, SOLAR_CYCLE_EPOCH

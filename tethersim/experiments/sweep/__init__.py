@@ -8,8 +8,9 @@ resumable Zarr store; it returns the xarray Dataset.
 from __future__ import annotations
 
 from tethersim.experiments.sweep.lock import StoreLocked
+from tethersim.experiments.sweep.plan import Plan
 from tethersim.experiments.sweep.point import VARIABLES, run_point
-from tethersim.experiments.sweep.runner import SweepInterrupted, run_sweep
+from tethersim.experiments.sweep.runner import SweepInterrupted, run_plan, run_sweep
 from tethersim.experiments.sweep.spec import SweepSpec
 from tethersim.experiments.sweep.store import StoreMismatch, StoreRepaired, open_dataset, status_names
 from tethersim.experiments.sweep.verify import StoreDamaged
@@ -28,6 +29,6 @@ def sweep(sat, axes: dict, out, **options):
     return run_sweep(spec, out, **run_opts).dataset()
 
 
-__all__ = ["SweepSpec", "SweepInterrupted", "StoreMismatch", "StoreLocked", "StoreDamaged",
+__all__ = ["Plan", "SweepSpec", "SweepInterrupted", "StoreMismatch", "StoreLocked", "StoreDamaged",
            "StoreRepaired", "VARIABLES", "open_dataset", "status_names",
-           "run_point", "run_sweep", "sweep"]
+           "run_plan", "run_point", "run_sweep", "sweep"]

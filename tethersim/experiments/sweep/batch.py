@@ -32,8 +32,9 @@ from tethersim.engine.simulate import (
     refined_grid,
 )
 from tethersim.experiments.sweep.kernel import COL_FIELDS, F_FIELDS, I_FIELDS, sweep_block
+from tethersim.experiments.sweep.plan import ATOL_PER_RTOL, Plan
 from tethersim.experiments.sweep.point import record
-from tethersim.experiments.sweep.spec import ATOL_PER_RTOL, SweepSpec
+from tethersim.experiments.sweep.spec import SweepSpec
 from tethersim.model.inputs import air_vector, initial_model_state, parameter_vector
 from tethersim.model.registry import get_model, model_for_orbit, model_index
 
@@ -42,40 +43,45 @@ _I = {name: i for i, name in enumerate(I_FIELDS)}
 
 
 def run_block(spec: SweepSpec, ks: list) -> list:
-    """[(k, record)] of flat points ks of ``spec``, in the order of ks.
+    """[(k, record)] of flat points ks of ``spec``, in the order of ks (run_satellites)."""
+    return list(zip(ks, run_satellites(spec.plan, [spec.satellite_at(k) for k in ks])))
+
+
+def run_satellites(plan: Plan, sats: list) -> list:
+    """The record of each satellite's run under ``plan``, in order.
 
     Every point runs in a compiled block, whatever its model (planar or 3-D,
     circular or free orbit) and air (uniform, per-body, NRLMSISE-00): the points are
     grouped by the model their orbit runs and by their air vector (equal for points
     that differ only in the satellite's other parameters), one compiled call per group.
+    A record does not depend on the other satellites of the call.
 
     Parameters
     ----------
-    spec : SweepSpec
-        The sweep.
-    ks : list of int
-        Flat grid points.
+    plan : Plan
+        How every run integrates.
+    sats : list of Satellite
+        The runs' satellites.
 
     Returns
     -------
-    list
-        (k, record) pairs; each record as point.run_point returns it.
+    list of dict
+        One record per satellite, as point.run_point returns it (point.VARIABLES).
     """
-    sats = [spec.satellite_at(k) for k in ks]
-    periods = float(spec.periods)
-    groups = {}  # (model, air vector bytes) -> (air vector, indices into ks)
+    periods = float(plan.periods)
+    groups = {}  # (model, air vector bytes) -> (air vector, indices into sats)
     for i, s in enumerate(sats):
-        model = model_for_orbit(spec.model, s.orbit)  # a free orbit runs the free twin
+        model = model_for_orbit(plan.model, s.orbit)  # a free orbit runs the free twin
         air = air_vector(s, periods * s.period)  # as simulate() builds it
         groups.setdefault((model, air.tobytes()), (air, []))[1].append(i)
     records = {}
     for (model, _), (air, idx) in groups.items():
-        records.update(zip(idx, _compiled([sats[i] for i in idx], spec, model, air)))
-    return [(k, records[i]) for i, k in enumerate(ks)]
+        records.update(zip(idx, _compiled([sats[i] for i in idx], plan, model, air)))
+    return [records[i] for i in range(len(sats))]
 
 
-def _sizes(spec: SweepSpec) -> tuple:
-    """(RK4 steps, adaptive output samples) of one point of ``spec``."""
+def _sizes(spec) -> tuple:
+    """(RK4 steps, adaptive output samples) of one point of a plan (or spec)."""
     return (max(1, round(spec.steps_per_period * spec.periods)),
             max(2, round(spec.samples_per_period * spec.periods)))
 
@@ -108,21 +114,21 @@ def _grid(t_end: float, n_out: int, refine: int, cache: dict) -> np.ndarray:
     return cache[key]
 
 
-def _compiled(sats: list, spec: SweepSpec, model: str, air: np.ndarray) -> list:
+def _compiled(sats: list, plan: Plan, model: str, air: np.ndarray) -> list:
     """The records of points whose satellites are ``sats``, all running ``model`` in the
     air vector ``air``, in one compiled call."""
     m = model_index(model)
     lay = get_model(model)
-    periods = float(spec.periods)  # as simulate() takes it
-    faithful = spec.method == "faithful"
+    periods = float(plan.periods)  # as simulate() takes it
+    faithful = plan.method == "faithful"
     for s in sats:  # what simulate() refuses, each point's run refuses here too
         check_scheme(s, "rk4" if faithful else "adaptive")
     n = len(sats)
     P = np.stack([parameter_vector(s, model) for s in sats])
     Y0 = np.stack([initial_state(m, initial_model_state(s, model), s.r0, s.r0 * s.omega)
                    for s in sats])
-    n_steps, n_out = _sizes(spec)
-    check_point_size(spec)  # the output-size guard simulate() applies to each point
+    n_steps, n_out = _sizes(plan)
+    check_point_size(plan)  # the output-size guard simulate() applies to each point
     if faithful:  # simulate._run_rk4: every step is a sample
         span = np.array([periods * s.period / n_steps for s in sats])
         T = np.empty((1, n_steps + 1))  # the RK4 loop writes its own times
@@ -135,25 +141,26 @@ def _compiled(sats: list, spec: SweepSpec, model: str, air: np.ndarray) -> list:
     cols = np.array([lay.state.index(c) for c in COL_FIELDS], dtype=np.int64)
     rec_f = np.empty((n, len(F_FIELDS)))
     rec_i = np.empty((n, len(I_FIELDS)), dtype=np.int64)
-    args = (air, faithful, T, Y0, P, span, n_steps, spec.rtol, spec.rtol * ATOL_PER_RTOL,
-            int(MAX_STEPS_PER_PERIOD * periods), EV, cols, float(spec.tol), SS_FRACTION, rec_f, rec_i)
+    args = (air, faithful, T, Y0, P, span, n_steps, plan.rtol, plan.rtol * ATOL_PER_RTOL,
+            int(MAX_STEPS_PER_PERIOD * periods), EV, cols, float(plan.tol), SS_FRACTION, rec_f, rec_i)
     specialised(sweep_block, m, args)(m, *args)  # releases the GIL
     amps = rk4_amplifications(sats, [s.period / FAITHFUL_STEPS_PER_PERIOD for s in sats],
                               model)
     # the run length outcome.run_orbits gives the per-point path: the orbits asked for
-    return [_record(rec_f[j], rec_i[j], amps[j], spec.tol, periods) for j in range(n)]
+    return [_record(rec_f[j], rec_i[j], amps[j], plan.tol, periods) for j in range(n)]
 
 
 def _record(f: np.ndarray, i: np.ndarray, amplification: float, tol: float,
             run_orbits: float) -> dict:
     status, nfev = int(i[_I["status"]]), int(i[_I["nfev"]])
+    end_time = float(f[_F["end_time"]])
     if not i[_I["counts"]]:
-        return record(status, nfev, amplification, classify(None), None)
+        return record(status, nfev, amplification, classify(None), None, end_time)
     m = PitchMetrics(mean_pitch=float(f[_F["mean_pitch"]]),
                      steady_state_pitch=float(f[_F["steady_state_pitch"]]),
                      settling_time=float(f[_F["settling_time"]]),
                      tumbled=bool(i[_I["tumbled"]]), upside_down=bool(i[_I["upside_down"]]))
-    measured = {name: float(f[_F[name]]) for name in F_FIELDS}
+    measured = {name: float(f[_F[name]]) for name in F_FIELDS if name != "end_time"}
     measured.update(tumbled=int(m.tumbled), upside_down=int(m.upside_down))
     return record(status, nfev, amplification, classify(m, tol=tol, run_orbits=run_orbits),
-                  measured)
+                  measured, end_time)

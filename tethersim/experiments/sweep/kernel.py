@@ -20,7 +20,8 @@ air, a free orbit) runs the per-point path instead.
 Layout of the outputs, per point j:
 
 ``rec_f[j]``  mean pitch, steady-state pitch, settling time, trail δx, trail δy,
-              largest family force on δx, δy, θ (NaN where not computed)
+              largest family force on δx, δy, θ (NaN where not computed), end time
+              (every point: its last sample)
 ``rec_i[j]``  status code (the index of the engine's status in
               tethersim.engine.result.STATUSES: ok, diverged, failed, or the stopping
               event's status, left-domain for a circular orbit),
@@ -44,7 +45,8 @@ from tethersim.engine.integrators.rk4 import rk4_run
 from tethersim.engine.result import STATUSES
 
 F_FIELDS = ("mean_pitch", "steady_state_pitch", "settling_time", "trail_delta_x",
-            "trail_delta_y", "max_force_delta_x", "max_force_delta_y", "max_force_theta")
+            "trail_delta_y", "max_force_delta_x", "max_force_delta_y", "max_force_theta",
+            "end_time")
 I_FIELDS = ("status", "counts", "tumbled", "upside_down", "nfev")
 # the state columns the block measures (cols)
 COL_FIELDS = ("delta_x", "delta_y", "theta")
@@ -111,6 +113,7 @@ def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
         counts = status == STATUS_OK and n >= 2 and _all_finite(out_y, n)
         for k in range(rec_f.shape[1]):
             rec_f[j, k] = math.nan
+        rec_f[j, 8] = t[n - 1]  # the last sample: the located time of a stopping event
         rec_i[j, 0] = status
         rec_i[j, 1] = 1 if counts else 0
         rec_i[j, 2] = 0
@@ -163,7 +166,7 @@ def sweep_block(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
     tol, ss_fraction : float
         Settling band [rad] and steady-state fraction (metrics.py).
     rec_f, rec_i : ndarray
-        Outputs (points, 8) float64 and (points, 5) int64: module docstring.
+        Outputs (points, 9) float64 and (points, 5) int64: module docstring.
     """
     literally(model)
     ns = Y0.shape[1]

@@ -13,7 +13,8 @@ from tethersim.analysis.outcome import outcome
 from tethersim.engine.linearise import rk4_amplification
 from tethersim.engine.result import STATUSES
 from tethersim.engine.simulate import FAITHFUL_STEPS_PER_PERIOD, simulate
-from tethersim.experiments.sweep.spec import ATOL_PER_RTOL, SweepSpec
+from tethersim.experiments.sweep.plan import ATOL_PER_RTOL
+from tethersim.experiments.sweep.spec import SweepSpec
 
 # (name, dtype, units, long name): the record of one point, in this order
 VARIABLES = (
@@ -32,6 +33,7 @@ VARIABLES = (
      "largest RK4 growth per thesis step (26.55 s at 200 km) over the initial linear modes; > 1: unstable"),
     ("status", "int8", "1", "run status: " + ", ".join(f"{i} {s}" for i, s in enumerate(STATUSES))),
     ("nfev", "int64", "1", "right-hand-side evaluations"),
+    ("end_time", "float64", "s", "when the run ended: its last sample, a stopping event's located time"),
 )
 NAMES = tuple(v[0] for v in VARIABLES)
 #: the engine's status names (tethersim.engine.result.STATUSES) and their stored codes
@@ -66,16 +68,18 @@ def run_point(spec: SweepSpec, k: int) -> dict:
                       settling_time=m.settling_time, tumbled=int(m.tumbled),
                       upside_down=int(m.upside_down), trail_delta_x=out.trail_delta_x,
                       trail_delta_y=out.trail_delta_y, max_force_delta_x=out.max_force[0],
-                      max_force_delta_y=out.max_force[1], max_force_theta=out.max_force[2]))
+                      max_force_delta_y=out.max_force[1], max_force_theta=out.max_force[2]),
+                  float(res.t[-1]))
 
 
 def record(status: int, nfev: int, amplification: float, stability_class: int,
-           measured: dict | None) -> dict:
+           measured: dict | None, end_time: float) -> dict:
     """One point's record: a run that does not count (outcome.py) keeps its class, status,
-    nfev and amplification only; ``measured`` holds the rest of a run that counts."""
+    nfev, amplification and end time only; ``measured`` holds the rest of a run that counts."""
     rec = dict.fromkeys(NAMES, math.nan)
     rec.update(tumbled=0, upside_down=0, status=status, nfev=nfev,
-               rk4_amplification=amplification, stability_class=stability_class)
+               rk4_amplification=amplification, stability_class=stability_class,
+               end_time=end_time)
     if measured is not None:
         rec.update(measured)
     return rec

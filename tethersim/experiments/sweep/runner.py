@@ -15,6 +15,7 @@ from contextlib import contextmanager
 
 from tqdm.auto import tqdm
 
+from tethersim.experiments.sweep.plan import Plan
 from tethersim.experiments.sweep.point import run_points
 from tethersim.experiments.sweep.spec import SweepSpec
 from tethersim.experiments.sweep.store import SweepStore
@@ -93,19 +94,63 @@ def _blocks(ks: list, size: int, workers: int = 1, minimum: int = 1) -> list:
     return out
 
 
+def run_plan(plan: Plan, sats: list, *, workers: int | None = None,
+             scheduler: str | None = None, dask_workers: int | None = None,
+             progress: bool | None = None, desc: str = "runs") -> list:
+    """Records of every satellite's run under ``plan``, in order: a plan of many.
+
+    The satellites run in compiled blocks (batch.run_satellites) on threads, or on a
+    Dask cluster (``scheduler``/``dask_workers``, as run_sweep); a record does not
+    depend on the block, thread or worker that ran it.  Ctrl-C cancels the queued blocks.
+
+    Parameters
+    ----------
+    plan : Plan
+        How every run integrates.
+    sats : list of Satellite
+        The runs.
+    workers : int, optional
+        Threads (default: every core).
+    scheduler, dask_workers : optional
+        A Dask scheduler's address, or a local cluster of that many worker processes.
+    progress : bool or None, optional
+        A progress bar (None: when the runs take over a second; False: none).
+    desc : str, optional
+        The bar's label.
+
+    Returns
+    -------
+    list of dict
+        One record per satellite (point.VARIABLES).
+    """
+    from tethersim.experiments.sweep.batch import run_satellites
+
+    sats = list(sats)
+    idx = list(range(len(sats)))
+    with executor(workers, scheduler, dask_workers) as (ex, minimum, n):
+        size = block_size(plan.periods, len(sats), n, minimum)
+        blocks = _blocks(idx, size, n, minimum)
+        futures = {ex.submit(run_satellites, plan, [sats[i] for i in b]): b for b in blocks}
+        out = [None] * len(sats)
+        with tqdm(total=len(sats), desc=desc, unit="run", disable=progress is False,
+                  delay=0 if progress else 1.0, leave=False) as bar:
+            try:
+                for fut in cf.as_completed(futures):
+                    for i, rec in zip(futures[fut], fut.result()):
+                        out[i] = rec
+                    bar.update(len(futures[fut]))
+            except BaseException:
+                for f in futures:  # Ctrl-C or an error: do not run the queued blocks
+                    f.cancel()
+                raise
+    return out
+
+
 def map_points(spec: SweepSpec, ks=None, workers: int | None = None) -> list:
     """Records of flat points ks (default: all) of ``spec``, in order, on threads; no store."""
     ks = list(range(spec.size)) if ks is None else list(ks)
-    spec_json = spec.to_json()
-    with executor(workers) as (ex, minimum, n):
-        size = block_size(spec.periods, len(ks), n, minimum)
-        futures = [ex.submit(run_points, spec_json, b) for b in _blocks(ks, size, n, minimum)]
-        try:
-            return [rec for f in futures for _, rec in f.result()]
-        except BaseException:
-            for f in futures:  # Ctrl-C or an error: do not run the queued points
-                f.cancel()
-            raise
+    return run_plan(spec.plan, [spec.satellite_at(k) for k in ks], workers=workers,
+                    progress=False)
 
 
 def run_sweep(spec: SweepSpec, out, *, workers: int | None = None, scheduler: str | None = None,
