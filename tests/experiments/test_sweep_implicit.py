@@ -61,7 +61,8 @@ def test_the_sweep_command_sweeps_real_tethers_with_method_implicit(tmp_path, ca
 
     argv = ["sweep", "satI", "--E1", "0.004,200000", "--set", "l10=30.83", "--set", "l20=28.92",
             "--periods", "0.02", "--rtol", "1e-6", "--workers", "1", "--quiet", "--no-plots"]
-    assert main([*argv, "--out", str(tmp_path / "a")]) == 2  # DOP853 refuses E1 = 2e5 N (a 1.5 mm Kevlar line)
+    # DOP853 refuses E1 = 2e5 N (a 1.5 mm Kevlar line)
+    assert main([*argv, "--out", str(tmp_path / "a")]) == 2
     assert "--method implicit" in capsys.readouterr().err
     assert main([*argv, "--method", "implicit", "--out", str(tmp_path / "b")]) == 0
     ds = ts.experiments.sweep.open_dataset(tmp_path / "b" / "sweep.zarr")
