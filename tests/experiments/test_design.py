@@ -129,3 +129,10 @@ def test_a_bad_design_variable_is_refused_in_one_line_naming_it(kw, names):
     with pytest.raises(ValueError, match=names) as exc:
         DesignSpec(SAT, budget=4, **kw)
     assert "\n" not in str(exc.value)
+
+
+def test_only_the_first_verify_designs_of_the_front_are_rerun(reference, tmp_path):
+    res = search(_spec(verify=1), tmp_path, workers=1, progress=False)
+    assert len(res["pareto"]) >= 2  # else this checks nothing
+    assert res["pareto"][0]["verified"] is not None
+    assert all(r["verified"] is None and r["respects_bound"] for r in res["pareto"][1:])

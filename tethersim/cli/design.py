@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from tethersim.analysis.metrics import SETTLING_TOL
 from tethersim.cli import options
 
 HELP = "multi-objective design search: settle before the orbit decays, hold the trim"
@@ -43,6 +44,8 @@ def add_parser(sub) -> None:
     p.add_argument("--rtol", type=options.rtol_float, default=1e-9,
                    help="tolerance of the search's runs (default 1e-9); re-verification "
                         "runs at rtol/100")
+    p.add_argument("--tol", type=options.positive_float, default=SETTLING_TOL, metavar="RAD",
+                   help=f"settling and trim band [rad] (default {SETTLING_TOL:g}, the thesis's)")
     p.add_argument("--safety", type=options.positive_float, default=1.5, metavar="F",
                    help="where breaking loads Fb1/Fb2 are set, every run uses them divided "
                         "by F (default 1.5)")
@@ -115,7 +118,7 @@ def run(args) -> int:
     spec = DesignSpec(sat, variables, choices, budget=args.budget, seed=args.seed,
                       population=args.population, periods=args.periods,
                       max_lifetime_h=args.max_lifetime, model=args.model, rtol=args.rtol,
-                      safety=args.safety, verify=args.verify)
+                      tol=args.tol, safety=args.safety, verify=args.verify)
     out = Path(args.out) if args.out else options.default_out(args, "design")
     preflight.check_files(out, ("pareto.csv", "designs.csv", "design.png"))
     preflight.check_subfolder(out, "store")
@@ -173,7 +176,8 @@ def _summary(spec, res) -> None:
         return
     for r in res["pareto"]:
         values = ", ".join(f"{n}={r[n]:.4g}" for n in spec.names)
-        verified = "verified" if r["verified"] else f"NOT verified ({r['fine_verdict']})"
+        verified = ("verified" if r["verified"] else r["fine_verdict"] if r["verified"] is None
+                    else f"NOT verified ({r['fine_verdict']})")
         print(f"  {values}: margin {r['margin_h']:.3g} h, worst |theta_ss| "
               f"{r['worst_theta_ss_rad']:.3g} rad, {verified}; trail bound "
               f"{r['bound_ratio']:.3g} <= settling/life {r['settle_over_life']:.3g}")

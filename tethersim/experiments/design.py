@@ -180,6 +180,7 @@ class DesignSpec:
 
     def to_json(self) -> str:
         d = asdict(self)
+        del d["verify"]  # how many to re-verify does not change what the store holds
         d["satellite"] = self.satellite.to_dict()
         d["satellite"]["initial"] = list(d["satellite"]["initial"])
         return json.dumps(d, sort_keys=True, default=list)

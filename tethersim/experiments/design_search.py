@@ -24,7 +24,14 @@ import numpy as np
 from tethersim.analysis.feasibility import verdict
 from tethersim.analysis.trail_bound import trail_bound
 from tethersim.engine.result import STATUSES
-from tethersim.experiments.design import REFUSED, SOLAR_CASES, DesignSpec, outcome_of_record, evaluate, objectives
+from tethersim.experiments.design import (
+    REFUSED,
+    SOLAR_CASES,
+    DesignSpec,
+    evaluate,
+    objectives,
+    outcome_of_record,
+)
 from tethersim.experiments.sweep.lock import StoreLock
 
 SPEC_FILE = "spec.json"
@@ -94,7 +101,8 @@ def search(spec: DesignSpec, out, *, workers=None, progress=None, stop_after=Non
     -------
     dict
         ``evaluations`` (rows in search order, each with ``F``, ``G``, ``key``), ``pareto``
-        (the non-dominated feasible rows, re-verified: ``verified``, ``fine_verdict``, and
+        (the non-dominated feasible rows, the first ``spec.verify`` re-verified:
+        ``verified`` (None past them), ``fine_verdict``, and
         the trail bound's ``bound_ratio``, ``settle_over_life``, ``respects_bound``),
         ``replayed`` (designs read from the store).
     """
@@ -136,8 +144,10 @@ def search(spec: DesignSpec, out, *, workers=None, progress=None, stop_after=Non
                 if stop_after is not None and gen >= stop_after:
                     raise KeyboardInterrupt
         front = pareto(rows)
-        for r in front:
-            r.update(verify_design(spec, store, r, workers=workers))
+        for i, r in enumerate(front):  # the first --verify designs of the front, in order
+            r.update(verify_design(spec, store, r, workers=workers) if i < spec.verify
+                     else {"verified": None, "fine_verdict": "not re-verified (--verify)",
+                           **bound_columns(spec, r)})
     finally:
         store.close()
     return {"evaluations": rows, "pareto": front, "replayed": replayed}

@@ -60,12 +60,14 @@ def plot_design(rows, pareto, path, tol: float, title: str = "") -> Path:
     if pareto:
         front = sorted(pareto, key=lambda r: r["margin_h"])
         ax.plot([r["margin_h"] for r in front], [r["worst_theta_ss_rad"] for r in front],
-                color="#1565c0", linewidth=1.2, zorder=3, label="Pareto set")
+                color="#1565c0", linewidth=1.2, zorder=3,
+                label="Pareto set (filled: verified by the finer run)")
         for r in front:
             ax.scatter(r["margin_h"], r["worst_theta_ss_rad"], s=60, zorder=4,
                        facecolor="#1565c0" if r.get("verified") else "none",
                        edgecolor="#1565c0", linewidth=1.4)
-    ax.axhline(tol, color="#616161", linestyle="--", linewidth=0.8)
+    ax.axhline(tol, color="#616161", linestyle="--", linewidth=0.8,
+               label=f"trim band {tol:g} rad")
     ax.axvline(0.0, color="#616161", linewidth=0.8)
     ax.set_xlabel("margin: usable life − settling time [h]")
     ax.set_ylabel("worst |θ_ss| over solar min/mean/max [rad]")
