@@ -136,3 +136,12 @@ def test_only_the_first_verify_designs_of_the_front_are_rerun(reference, tmp_pat
     assert len(res["pareto"]) >= 2  # else this checks nothing
     assert res["pareto"][0]["verified"] is not None
     assert all(r["verified"] is None and r["respects_bound"] for r in res["pareto"][1:])
+
+
+def test_a_choice_takes_only_its_values_and_a_repeated_design_runs_once(tmp_path):
+    spec = DesignSpec(SAT, variables=(("c1", 1e-3, 1e-1),), choices=(("A3", (6.0, 12.0)),),
+                      budget=8, population=4, periods=4, max_lifetime_h=6)
+    res = search(spec, tmp_path, workers=1, progress=False)
+    assert {r["A3"] for r in res["evaluations"]} == {6.0, 12.0}
+    lines = (tmp_path / "evaluations.jsonl").read_text().splitlines()
+    assert len(lines) == len({r["key"] for r in res["evaluations"]})

@@ -106,9 +106,13 @@ def run(args) -> int:
     from tethersim.cli.overrides import refuse
     from tethersim.experiments.design import FIXED, DesignSpec
     from tethersim.experiments.design_search import search
+    from tethersim.model.registry import BY_NAME
     from tethersim.output.plots.design import plot_design
     from tethersim.output.tables import write_table
-
+    if BY_NAME[args.model].orbit == "free":  # before options.satellite makes the orbit free
+        raise options.UsageError(f"--model {args.model}: design takes a circular-orbit model; "
+                                 f"it runs the trim on the held circular orbit and the life "
+                                 f"with the model's free twin")
     preflight.check_workers(args, "workers")
     refuse(args, FIXED, lambda n: "the design search sets it itself: drop it")
     variables, choices = parse_variables(args)

@@ -38,8 +38,10 @@ SPEC_FILE = "spec.json"
 EVALUATIONS_FILE = "evaluations.jsonl"
 
 
-def _key(x) -> str:
-    return json.dumps([float(v) for v in x])
+def _key(spec: DesignSpec, x) -> str:
+    """A design's identity: its values in edge units (two search vectors that pick the same
+    choices are one design, run once)."""
+    return json.dumps([v for _, v in sorted(spec.values(x).items())])
 
 
 class DesignStore:
@@ -124,9 +126,12 @@ def search(spec: DesignSpec, out, *, workers=None, progress=None, stop_after=Non
             while algorithm.has_next():
                 pop = algorithm.ask()
                 xs = [np.asarray(x, dtype=float) for x in pop.get("X")]
-                keys = [_key(x) for x in xs]
-                todo = [i for i, k in enumerate(keys) if k not in store.evaluated]
-                replayed += len(xs) - len(todo)
+                keys = [_key(spec, x) for x in xs]
+                first = {k: i for i, k in reversed(list(enumerate(keys)))}
+                todo = [i for k, i in first.items() if k not in store.evaluated]
+                todo.sort()
+                stored = sum(k in store.evaluated for k in keys)
+                replayed += stored
                 bar.update(len(xs) - len(todo))
                 new = evaluate(spec, [xs[i] for i in todo], workers=workers, progress=False)
                 for i, row in zip(todo, new):
@@ -138,7 +143,7 @@ def search(spec: DesignSpec, out, *, workers=None, progress=None, stop_after=Non
                 pop.set("F", np.array([e["F"] for e in entries], dtype=float))
                 pop.set("G", np.array([e["G"] for e in entries], dtype=float))
                 algorithm.tell(infills=pop)
-                rows += [{**e["row"], "key": e["key"], "F": e["F"], "G": e["G"]}
+                rows += [{**e["row"], "key": e["key"], "x": e["x"], "F": e["F"], "G": e["G"]}
                          for e in entries]
                 gen += 1
                 if stop_after is not None and gen >= stop_after:
@@ -181,8 +186,7 @@ def verify_design(spec: DesignSpec, store: DesignStore, row: dict, workers=None)
     if row["key"] in store.verified:
         return store.verified[row["key"]]["columns"]
     from tethersim.experiments.sweep.runner import run_plan
-    x = json.loads(row["key"])
-    sat = spec.design(x)
+    sat = spec.design(row["x"])
     fs = spec.feasibility(sat)
     h, a3 = fs.points()[0]
     circ_plan, free_plan = spec.plans(fs.check_rtol)
@@ -215,7 +219,7 @@ def bound_columns(spec: DesignSpec, row: dict) -> dict:
     if row["verdict"] == REFUSED or not row["trail_m"] > 0:
         return {"bound_ratio": math.nan, "epsilon": math.nan, "settle_over_life": math.nan,
                 "respects_bound": None}
-    b = trail_bound(spec.design(json.loads(row["key"])), row["trail_m"], spec.tol)
+    b = trail_bound(spec.design(row["x"]), row["trail_m"], spec.tol)
     ratio = row["settling_h"] / row["life_h"] if row["life_h"] > 0 else math.inf
     return {"bound_ratio": b.ratio, "epsilon": b.epsilon, "decay_life_h": b.decay_life / 3600,
             "settle_min_h": b.settle_min / 3600, "settle_over_life": ratio,
