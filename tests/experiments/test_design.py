@@ -145,3 +145,31 @@ def test_a_choice_takes_only_its_values_and_a_repeated_design_runs_once(tmp_path
     assert {r["A3"] for r in res["evaluations"]} == {6.0, 12.0}
     lines = (tmp_path / "evaluations.jsonl").read_text().splitlines()
     assert len(lines) == len({r["key"] for r in res["evaluations"]})
+
+
+def test_a_design_that_settles_only_in_vallados_air_is_reported_not_verified(tmp_path):
+    """Soft dampers settle SatI at 200 km in about 1.6-2 h: inside the usable life in
+    Vallado's air, past it in solar-maximum MSIS air (denser: the balloon is lost sooner)."""
+    spec = DesignSpec(SAT, variables=(("c1", 1.5e-3, 2.2e-3),), budget=8, population=4,
+                      periods=4, max_lifetime_h=6, seed=5, tol=0.3)
+    res = search(spec, tmp_path, workers=1, progress=False)
+    late = [r for r in res["pareto"] if r["fine_life_h"] < r["settling_h"]]
+    assert late  # else this checks nothing
+    for r in late:
+        assert r["verdict"] == "feasible" and r["settling_h"] < r["life_h"]
+        assert r["verified"] is False and r["fine_verdict"] == LOST
+        assert r["fine_worst_case"] == "max"
+
+
+def test_no_design_reason_names_the_shortfall_of_each_failure():
+    rows = [dict(verdict="trim lost as the air varies", worst_theta_ss_rad=w, theta_ss_min_rad=0.1,
+                 theta_ss_max_rad=0.1 + w, trail_m=29.0, x=[1e-3], settling_h=1.0, life_h=2.0)
+            for w in (0.2, 0.4, 0.9)]
+    rows += [dict(verdict=LOST, worst_theta_ss_rad=0.01, theta_ss_min_rad=0.0,
+                  theta_ss_max_rad=0.0, trail_m=29.0, x=[1e-3], settling_h=s, life_h=2.0)
+             for s in (3.0, math.nan)]
+    text = no_design_reason(DesignSpec(SAT, variables=(("c1", 1e-3, 1e-2),)), rows)
+    assert "3 trim lost as the air varies, 2 balloon lost before settling" in text
+    assert "median 0.4 rad against the 0.05 rad band, moving 0.4 rad" in text
+    assert "life median 2 h against settling median 3 h" in text  # the NaN left out
+    assert "forbids 0 of 5" in text and "\n" not in text

@@ -227,7 +227,8 @@ def bound_columns(spec: DesignSpec, row: dict) -> dict:
 
 
 def no_design_reason(spec: DesignSpec, rows: list) -> str:
-    """Why no design qualified: the verdicts' tally and what the trail bound says of them."""
+    """Why no design qualified: the verdicts' tally, what the trail bound says of them, and
+    the measured shortfall of the commonest failures (one line)."""
     tally = {}
     for r in rows:
         tally[r["verdict"]] = tally.get(r["verdict"], 0) + 1
@@ -244,5 +245,30 @@ def no_design_reason(spec: DesignSpec, rows: list) -> str:
     else:
         why = (f"the trail bound (settling / life >= {min(ratios):.3g} .. {max(ratios):.3g}) "
                f"forbids {over} of {len(ratios)}; the others fail on their damping and trim, "
-               f"not on physics (docs/design.md)")
-    return f"no design qualifies ({parts}): {why}"
+               f"not on the orbit's momentum (docs/design.md)")
+    return f"no design qualifies ({parts}): {why}{_shortfall(spec, rows)}"
+
+
+def _shortfall(spec: DesignSpec, rows: list) -> str:
+    """Medians of what the failed designs missed by: the trim and its swing over the solar
+    cycle, or the usable life against the settling time."""
+    from tethersim.analysis.feasibility import LOST, REENTERS, TRIM_LOST
+    out = []
+    trim = [r for r in rows if r["verdict"] == TRIM_LOST]
+    if trim:
+        worst = _median([r["worst_theta_ss_rad"] for r in trim])
+        swing = _median([abs(r["theta_ss_max_rad"] - r["theta_ss_min_rad"]) for r in trim])
+        out.append(f"trim: worst |theta_ss| median {worst:.3g} rad against the {spec.tol:g} rad "
+                   f"band, moving {swing:.3g} rad from solar min to max")
+    early = [r for r in rows if r["verdict"] in (LOST, REENTERS)]
+    if early:
+        life = _median([r["life_h"] for r in early])
+        settle = _median([r["settling_h"] for r in early])
+        out.append(f"life median {life:.3g} h against settling median {settle:.3g} h")
+    return "; " + "; ".join(out) if out else ""
+
+
+def _median(values) -> float:
+    """Median of the finite values (NaN if none: a run that never settled has no time)."""
+    finite = [v for v in values if math.isfinite(v)]
+    return float(np.median(finite)) if finite else math.nan
