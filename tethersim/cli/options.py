@@ -179,8 +179,8 @@ def add_integrator(parser, *, rtol: float = 1e-10, fixed_step: bool = True) -> N
     rtol : float
         The command's default DOP853 relative tolerance.
     fixed_step : bool
-        False for commands that only choose between the converged and the
-        faithful scheme (sweep).
+        False for commands whose runs are adaptive, implicit or faithful, never
+        free-standing RK4 (sweep).
     """
     from tethersim.engine.simulate import FAITHFUL_STEPS_PER_PERIOD, STEPS_PER_PERIOD
 
@@ -197,6 +197,10 @@ def add_integrator(parser, *, rtol: float = 1e-10, fixed_step: bool = True) -> N
                             f"implicit: number of output samples")
         g.add_argument("--locate-switches", action="store_true",
                        help="RK4: split steps at taut/slack switches (not with --faithful)")
+    else:  # a sweep's points: converged DOP853, or Radau for real tethers
+        g.add_argument("--method", choices=("adaptive", "implicit"), default=None,
+                       help="adaptive DOP853 (default, converged) or implicit Radau IIA "
+                            "(stiff, real tethers: docs/tethers.md)")
     g.add_argument("--rtol", type=rtol_float, default=rtol,
                    help=f"relative tolerance of the adaptive and implicit schemes (default "
                         f"{rtol:g})")
