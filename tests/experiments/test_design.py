@@ -173,3 +173,18 @@ def test_no_design_reason_names_the_shortfall_of_each_failure():
     assert "median 0.4 rad against the 0.05 rad band, moving 0.4 rad" in text
     assert "life median 2 h against settling median 3 h" in text  # the NaN left out
     assert "forbids 0 of 5" in text and "\n" not in text
+
+
+@pytest.mark.slow
+def test_a_real_tether_the_explicit_plan_refuses_runs_with_the_implicit_method(tmp_path):
+    """Steel-stiff 1 mm^2 lines (2e5 N, axial period ~0.08 s on the balloon) at the trail's
+    lengths: refused by DOP853, run by Radau."""
+    kevlar = SAT.replace(E1=2e5, E2=2e5, Fb1=1500.0, Fb2=1500.0, l10=30.83, l20=28.92)
+    kw = dict(variables=(("c1", 1e-4, 1e-3),), budget=2, population=2, periods=1,
+              max_lifetime_h=0.3, rtol=1e-6, verify=0)
+    refused = search(DesignSpec(kevlar, **kw), tmp_path / "a", workers=1, progress=False)
+    assert all(r["verdict"] == REFUSED and "implicit" in r["reason"]
+               for r in refused["evaluations"])
+    ran = search(DesignSpec(kevlar, method="implicit", **kw), tmp_path / "i", workers=1,
+                 progress=False)
+    assert all(r["verdict"] in VERDICTS for r in ran["evaluations"])

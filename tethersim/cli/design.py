@@ -44,6 +44,10 @@ def add_parser(sub) -> None:
     p.add_argument("--rtol", type=options.rtol_float, default=1e-9,
                    help="tolerance of the search's runs (default 1e-9); re-verification "
                         "runs at rtol/100")
+    p.add_argument("--method", choices=("adaptive", "implicit"), default="adaptive",
+                   help="scheme of every run: adaptive (DOP853, default; a design with a "
+                        "tether too stiff for it is recorded 'refused') or implicit (Radau "
+                        "IIA: real fibre tethers, docs/tethers.md; seconds per orbit)")
     p.add_argument("--tol", type=options.positive_float, default=SETTLING_TOL, metavar="RAD",
                    help=f"settling and trim band [rad] (default {SETTLING_TOL:g}, the thesis's)")
     p.add_argument("--safety", type=options.positive_float, default=1.5, metavar="F",
@@ -122,7 +126,8 @@ def run(args) -> int:
     spec = DesignSpec(sat, variables, choices, budget=args.budget, seed=args.seed,
                       population=args.population, periods=args.periods,
                       max_lifetime_h=args.max_lifetime, model=args.model, rtol=args.rtol,
-                      tol=args.tol, safety=args.safety, verify=args.verify)
+                      method=args.method, tol=args.tol, safety=args.safety,
+                      verify=args.verify)
     out = Path(args.out) if args.out else options.default_out(args, "design")
     preflight.check_files(out, ("pareto.csv", "designs.csv", "design.png"))
     preflight.check_subfolder(out, "store")

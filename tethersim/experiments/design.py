@@ -14,8 +14,9 @@ the worst |θ_ss| [rad] across the nominal and solar runs.  Constraints: the ver
 ``feasible`` (settles before the life ends, trim inside the band in all three airs);
 where breaking loads are set, every run uses them divided by ``safety``, so a design
 whose tether tension comes within that factor of its strength breaks and is infeasible.
-A design the plan cannot run (a tether too stiff for the explicit schemes, an impossible
-satellite) is recorded infeasible with the reason, not run.
+A design the plan cannot run (a tether too stiff for the explicit scheme: run the search
+with method "implicit"; an impossible satellite) is recorded infeasible with the reason,
+not run.
 """
 from __future__ import annotations
 
@@ -30,7 +31,7 @@ from tethersim.analysis.metrics import SETTLING_TOL, PitchMetrics
 from tethersim.analysis.outcome import Outcome
 from tethersim.engine.result import STATUSES
 from tethersim.experiments.feasibility import ATLAS_FIELDS, SOLAR_CASES, FeasibilitySpec, solar_scales
-from tethersim.experiments.sweep.plan import Plan
+from tethersim.experiments.sweep.plan import SCHEMES, Plan
 from tethersim.model import params
 from tethersim.model.constants import MU_EARTH, R_EARTH
 from tethersim.model.satellite import Satellite, SatelliteError
@@ -68,6 +69,9 @@ class DesignSpec:
         Thesis model (the free run uses its free twin).
     rtol : float
         Tolerance of the search's runs (the re-verification runs at rtol / 100).
+    method : str
+        Plan method of every run (tethersim.experiments.sweep.plan.METHODS): "adaptive"
+        (DOP853; refuses tethers too stiff for it) or "implicit" (Radau: real tethers).
     tol : float
         Settling and trim band [rad].
     safety : float
@@ -86,6 +90,7 @@ class DesignSpec:
     max_lifetime_h: float = 240.0
     model: str = "derived"
     rtol: float = 1e-9
+    method: str = "adaptive"
     tol: float = SETTLING_TOL
     safety: float = 1.5
     verify: int = 10
@@ -121,7 +126,8 @@ class DesignSpec:
                              f"({self.budget})")
         from tethersim.engine.guards import check_runs
         check_runs(self.budget, 2 + len(SOLAR_CASES), "design search", "--budget")
-        Plan(periods=self.periods, model=self.model, rtol=self.rtol, tol=self.tol)
+        Plan(periods=self.periods, method=self.method, model=self.model, rtol=self.rtol,
+             tol=self.tol)
         self.feasibility(self.satellite)  # the preset itself: atlas fields, sizes, rtol
 
     @property
@@ -175,8 +181,8 @@ class DesignSpec:
         r = self.rtol if rtol is None else rtol
         period = 2 * math.pi * math.sqrt((R_EARTH + self.lowest_altitude()) ** 3 / MU_EARTH)
         free_periods = self.max_lifetime_h * 3600 / period
-        return (Plan(periods=self.periods, model=self.model, rtol=r, tol=self.tol),
-                Plan(periods=free_periods, model=self.model, rtol=r, tol=self.tol))
+        kw = dict(method=self.method, model=self.model, rtol=r, tol=self.tol)
+        return Plan(periods=self.periods, **kw), Plan(periods=free_periods, **kw)
 
     def to_json(self) -> str:
         d = asdict(self)
@@ -240,7 +246,7 @@ def build_runs(spec: DesignSpec, x) -> tuple:
         h, a3 = fs.points()[0]
         circ = [fs.circular(h, a3)] + [fs.circular(h, a3, k) for _, k in solar_scale_items(h)]
         free = fs.free(h, a3)
-        check_scheme(sat, "adaptive")  # plans run explicit schemes only
+        check_scheme(sat, SCHEMES[spec.method])  # a stiff tether needs the implicit scheme
     except (SatelliteError, ValueError) as exc:
         return None, str(exc)
     return circ, free
