@@ -98,6 +98,14 @@ def test_a_tether_within_the_safety_factor_of_its_strength_makes_the_design_infe
     assert all("safety factor" in r["reason"] and max(r["G"]) > 0
                for r in rows[0.05]["evaluations"])
     assert not any(r["reason"] for r in rows[1000.0]["evaluations"])
+    # the reported designs' margin against the real load: above 1 - 1/safety, since their
+    # runs held at the load divided by the safety factor
+    front = rows[1000.0]["pareto"]
+    assert front
+    for r in front:
+        assert 1 - 1 / 1.5 < r["tension_margin"] < 1
+        assert r["tension_margin"] == pytest.approx(
+            1 - max(r["peak_tension_1_N"], r["peak_tension_2_N"]) / 1000.0)
 
 
 def _rec(status="ok", settling=math.nan, theta=0.0, end=0.0):

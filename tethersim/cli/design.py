@@ -166,7 +166,9 @@ VERIFY_COLUMNS = (
     ("epsilon", "trail strength epsilon [1]"), ("decay_life_h", "bound: decay life [h]"),
     ("settle_min_h", "bound: fastest settling [h]"),
     ("bound_ratio", "bound: settling/life >= [1]"), ("settle_over_life", "settling/life [1]"),
-    ("respects_bound", "respects the bound"))
+    ("respects_bound", "respects the bound"), ("peak_tension_1_N", "peak tension 1 [N]"),
+    ("peak_tension_2_N", "peak tension 2 [N]"),
+    ("tension_margin", "tension margin 1 - peak/breaking load [1]"))
 
 
 def _columns(spec) -> tuple:

@@ -208,9 +208,41 @@ def verify_design(spec: DesignSpec, store: DesignStore, row: dict, workers=None)
                    run_s=spec.periods * period, cap_s=cap, lost=lost and math.isfinite(life))
     columns = {"fine_verdict": fine, "verified": fine == row["verdict"],
                "fine_life_h": min(life, cap) / 3600, "fine_worst_case": worst,
-               "check_rtol": fs.check_rtol, **bound_columns(spec, row)}
+               "check_rtol": fs.check_rtol, **bound_columns(spec, row),
+               **tension_columns(spec, row)}
     store.put({"key": row["key"], "verify": True, "columns": columns})
     return columns
+
+
+def tension_columns(spec: DesignSpec, row: dict) -> dict:
+    """Peak tether tensions [N] of a design over its circular runs (nominal and the three
+    solar airs) and its tension margin, 1 − peak / breaking load (the real load, not the
+    one divided by ``safety`` the search runs with); NaN where no breaking load is set.
+
+    The plan's records carry no tension, so the reported designs are run again with their
+    trajectories (simulate(), the search's scheme and tolerance).
+    """
+    from tethersim.engine.simulate import simulate
+    from tethersim.experiments.design import solar_scale_items
+    from tethersim.experiments.sweep.plan import ATOL_PER_RTOL, SCHEMES
+    from tethersim.model import params
+    strong = params.with_values(spec.satellite, spec.values(row["x"]))
+    loads = (strong.Fb1, strong.Fb2)
+    if not any(loads):
+        return {"peak_tension_1_N": math.nan, "peak_tension_2_N": math.nan,
+                "tension_margin": math.nan}
+    fs = spec.feasibility(spec.design(row["x"]))
+    h, a3 = fs.points()[0]
+    peak = np.zeros(2)
+    for sat in [fs.circular(h, a3)] + [fs.circular(h, a3, k) for _, k in solar_scale_items(h)]:
+        res = simulate(sat, spec.periods, method=SCHEMES[spec.method], model=spec.model,
+                       rtol=spec.rtol, atol=spec.rtol * ATOL_PER_RTOL, progress=False)
+        if res.status == "interrupted":  # Ctrl-C: not a result
+            raise KeyboardInterrupt
+        peak = np.maximum(peak, res.tether_tensions().max(axis=0))
+    margin = min(1 - p / fb for p, fb in zip(peak, loads) if fb)
+    return {"peak_tension_1_N": float(peak[0]), "peak_tension_2_N": float(peak[1]),
+            "tension_margin": float(margin)}
 
 
 def bound_columns(spec: DesignSpec, row: dict) -> dict:
