@@ -8,6 +8,7 @@ store under ``--out``.
 """
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 from tethersim.analysis.metrics import SETTLING_TOL
@@ -189,6 +190,8 @@ def _summary(spec, res) -> None:
         values = ", ".join(f"{n}={r[n]:.4g}" for n in spec.names)
         verified = ("verified" if r["verified"] else r["fine_verdict"] if r["verified"] is None
                     else f"NOT verified ({r['fine_verdict']})")
+        tension = r.get("tension_margin", math.nan)
+        strength = f", tension margin {tension:.3g}" if math.isfinite(tension) else ""
         print(f"  {values}: margin {r['margin_h']:.3g} h, worst |theta_ss| "
-              f"{r['worst_theta_ss_rad']:.3g} rad, {verified}; trail bound "
+              f"{r['worst_theta_ss_rad']:.3g} rad{strength}, {verified}; trail bound "
               f"{r['bound_ratio']:.3g} <= settling/life {r['settle_over_life']:.3g}")
