@@ -42,9 +42,10 @@ def add_parser(sub) -> None:
     options.add_periods(p, help="orbits per circular run (default 50: three days)")
     p.add_argument("--max-lifetime", type=options.positive_float, default=240.0, metavar="H",
                    help="cap on the free run [h] (default 240)")
-    p.add_argument("--rtol", type=options.rtol_float, default=1e-9,
-                   help="tolerance of the search's runs (default 1e-9); re-verification "
-                        "runs at rtol/100")
+    p.add_argument("--rtol", type=options.rtol_float, default=None,
+                   help="tolerance of the search's runs (default: the plans' CLASS_RTOL, "
+                        "enough for a verdict, docs/tolerances.md); re-verification runs at "
+                        "rtol/100")
     p.add_argument("--method", choices=("adaptive", "implicit"), default="adaptive",
                    help="scheme of every run: adaptive (DOP853, default; a design with a "
                         "tether too stiff for it is recorded 'refused') or implicit (Radau "
@@ -111,6 +112,7 @@ def run(args) -> int:
     from tethersim.cli.overrides import refuse
     from tethersim.experiments.design import FIXED, DesignSpec
     from tethersim.experiments.design_search import search
+    from tethersim.experiments.sweep.plan import CLASS_RTOL
     from tethersim.model.registry import BY_NAME
     from tethersim.output.plots.design import plot_design
     from tethersim.output.tables import write_table
@@ -126,7 +128,8 @@ def run(args) -> int:
     sat = options.satellite(args)
     spec = DesignSpec(sat, variables, choices, budget=args.budget, seed=args.seed,
                       population=args.population, periods=args.periods,
-                      max_lifetime_h=args.max_lifetime, model=args.model, rtol=args.rtol,
+                      max_lifetime_h=args.max_lifetime, model=args.model,
+                      rtol=CLASS_RTOL if args.rtol is None else args.rtol,
                       method=args.method, tol=args.tol, safety=args.safety,
                       verify=args.verify)
     out = Path(args.out) if args.out else options.default_out(args, "design")

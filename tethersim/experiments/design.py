@@ -31,7 +31,7 @@ from tethersim.analysis.metrics import SETTLING_TOL, PitchMetrics
 from tethersim.analysis.outcome import Outcome
 from tethersim.engine.result import STATUSES
 from tethersim.experiments.feasibility import ATLAS_FIELDS, SOLAR_CASES, FeasibilitySpec, solar_scales
-from tethersim.experiments.sweep.plan import SCHEMES, Plan
+from tethersim.experiments.sweep.plan import CLASS_RTOL, SCHEMES, Plan
 from tethersim.model import params
 from tethersim.model.constants import MU_EARTH, R_EARTH
 from tethersim.model.satellite import Satellite, SatelliteError
@@ -68,7 +68,9 @@ class DesignSpec:
     model : str
         Thesis model (the free run uses its free twin).
     rtol : float
-        Tolerance of the search's runs (the re-verification runs at rtol / 100).
+        Tolerance of the search's runs (default: the plans' CLASS_RTOL for runs that only
+        need a verdict, docs/tolerances.md); the reported designs are re-verified at
+        rtol / 100.
     method : str
         Plan method of every run (tethersim.experiments.sweep.plan.METHODS): "adaptive"
         (DOP853; refuses tethers too stiff for it) or "implicit" (Radau: real tethers).
@@ -89,7 +91,7 @@ class DesignSpec:
     periods: float = 50.0
     max_lifetime_h: float = 240.0
     model: str = "derived"
-    rtol: float = 1e-9
+    rtol: float = CLASS_RTOL
     method: str = "adaptive"
     tol: float = SETTLING_TOL
     safety: float = 1.5
