@@ -265,8 +265,10 @@ def judge(spec: DesignSpec, circ_recs: list, free_rec: dict, period: float) -> d
     v = verdict(life, nominal, trims, spec.tol, run_s=spec.periods * period, cap_s=cap,
                 lost=lost and math.isfinite(life))
     settle = nominal.metrics.settling_time if nominal.metrics else math.nan
-    pitches = [abs(o.metrics.steady_state_pitch) if o.counts and o.metrics else math.pi
-               for o in (nominal, *trims)]
+    # a run without a finite trim counts as the worst trim there is (π): never NaN in F
+    pitches = [abs(o.metrics.steady_state_pitch)
+               if o.counts and o.metrics and math.isfinite(o.metrics.steady_state_pitch)
+               else math.pi for o in (nominal, *trims)]
     shown_life = min(life, cap)
     margin = shown_life - (settle if math.isfinite(settle) else spec.periods * period)
     # a tether that breaks in the operating airs (the circular runs) fails the design; in
