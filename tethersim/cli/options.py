@@ -140,6 +140,17 @@ def models(args) -> tuple:
         raise UsageError(f"--{exc}") from None
 
 
+def add_start(parser) -> None:
+    """``--start MODE``: the satellite's initial state, its equilibrium, or auto
+    (tethersim.engine.start)."""
+    from tethersim.engine.start import START_MODES
+    parser.add_argument("--start", choices=START_MODES, default="auto",
+                        help="where the run starts: given (the satellite's initial state), "
+                             "equilibrium (its steady configuration, rates zero), or auto "
+                             "(default: equilibrium when a tether is stiff, a real line; "
+                             "else given); docs/tethers.md")
+
+
 def add_quiet(parser) -> None:
     """``--quiet``: no progress bars or progress lines."""
     parser.add_argument("--quiet", action="store_true", help="no progress bars")

@@ -31,6 +31,9 @@ MATERIALS = {
 # material damping of such lines: loss factor of order 0.01-0.05 (Cosmo & Lorenzini,
 # Tethers in Space Handbook, 3rd ed., 1997); the low end, as the data sheets give none
 LOSS_FACTOR = 0.01
+# the largest failure strain (strength / E) of the table's fibres: no real line stretches
+# further before it breaks (engine/start.py refuses a start of a stiff line beyond it)
+MAX_FAILURE_STRAIN = max(m.strength / m.E for m in MATERIALS.values())
 KNOCKDOWN_RANGE = (0.1, 1.0)
 DIAMETER_RANGE = (1e-5, 0.1)  # m: a 10 µm filament to a 10 cm rope
 
