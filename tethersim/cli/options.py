@@ -147,7 +147,7 @@ def add_start(parser) -> None:
     parser.add_argument("--start", choices=START_MODES, default="auto",
                         help="where the run starts: given (the satellite's initial state), "
                              "equilibrium (its steady configuration, rates zero), or auto "
-                             "(default: equilibrium when a tether is stiff, a real line; "
+                             "(default: equilibrium when a tether is a real line, EA >= 100 N; "
                              "else given); docs/tethers.md")
 
 

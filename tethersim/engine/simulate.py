@@ -118,7 +118,7 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
         linearised system supports.
     start : {"auto", "given", "equilibrium"}, optional
         The satellite's ``initial`` state, its equilibrium in this model (rates
-        zero), or (default) the equilibrium for stiff (real) tethers, else the
+        zero), or (default) the equilibrium for real lines (EA >= 100 N), else the
         given state; a given state far from any physical one is refused
         (tethersim.engine.start).  The result's ``satellite.initial`` is where
         the run started, ``start`` says which.

@@ -14,11 +14,10 @@ resolves simulate()'s ``start``:
     (engine/steady.py; a free orbit starts at the equilibrium of the orbit held
     circular at its altitude).
 ``"auto"`` (the default)
-    ``"equilibrium"`` when a tether is stiff (a real line: its axial period under
-    the ``T_TETHER_MIN`` the explicit schemes resolve,
-    tethersim.model.plausibility.stiff_tethers), else ``"given"``; so the thesis's
-    tethers start where the thesis started them, to the last bit.  A stiff
-    satellite without an equilibrium to find starts from its given state if that
+    ``"equilibrium"`` when a tether is a real line (EA >= ``REAL_TETHER_EA``, 100 N:
+    tethersim.model.materials.real_tethers), else ``"given"``; so the thesis's
+    tethers (EA 0.004-0.06 N) start where the thesis started them, to the last bit.
+    A real-line satellite without an equilibrium to find starts from its given state if that
     passes :func:`check_given_start` (the result's ``start`` says "given").
 
 The resolved start becomes the run's satellite (its ``initial`` is the state the
@@ -49,8 +48,8 @@ def resolved_mode(sat: Satellite, start: str) -> str:
     """``"given"`` or ``"equilibrium"``: what ``start`` means for ``sat`` (module docstring)."""
     if check_start_mode(start) != "auto":
         return start
-    from tethersim.model.plausibility import stiff_tethers
-    return "equilibrium" if stiff_tethers(sat) else "given"
+    from tethersim.model.materials import real_tethers
+    return "equilibrium" if real_tethers(sat) else "given"
 
 
 def start_satellite(sat: Satellite, model: str, start: str = "auto") -> tuple:
@@ -140,9 +139,9 @@ def check_given_start(sat: Satellite, model: str) -> None:
     """Refuse a given start far from any physical state, in one line.
 
     Far means: a tether's spring tension E (λ − l0) / l0 at or beyond its breaking
-    load Fb (it would break at t = 0), or a stiff tether (a real line,
-    tethersim.model.plausibility.stiff_tethers) stretched beyond the largest
-    failure strain of the fibres in tethersim.model.materials.
+    load Fb (it would break at t = 0), or a real line (EA >= 100 N,
+    tethersim.model.materials.real_tethers) stretched beyond the largest failure
+    strain of the fibres in tethersim.model.materials.
 
     Raises
     ------
@@ -152,10 +151,9 @@ def check_given_start(sat: Satellite, model: str) -> None:
     """
     from tethersim.engine.bodies import bodies_from_states
     from tethersim.model.inputs import initial_model_state
-    from tethersim.model.materials import MAX_FAILURE_STRAIN
-    from tethersim.model.plausibility import stiff_tethers
+    from tethersim.model.materials import MAX_FAILURE_STRAIN, real_tethers
 
-    stiff = stiff_tethers(sat)
+    stiff = real_tethers(sat)
     if not (sat.Fb1 or sat.Fb2 or stiff):
         return  # nothing to judge: the thesis's tethers start where the thesis put them
     y = initial_model_state(sat, model)

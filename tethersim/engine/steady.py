@@ -100,22 +100,32 @@ def steady_coordinates(sat: Satellite, model: str, guess) -> tuple:
     tol = residual_tolerance(sat)
     g = np.array(guess, float)
     q, res, why = _powell(f, jac, g, n)
-    if res <= tol:
-        return q, res
     names = mdl.state[:n]
     planar = [names.index(k) for k in ("delta_x", "delta_y", "theta")]
+    ith = planar[2]
+    # Powell's steps may leap to a root half a turn away (a stiff line's valley throws
+    # them): such a root is kept only when the scan finds none nearer the guess's pitch
+    if res <= tol and _turn(q[ith] - g[ith]) <= math.pi / 2:
+        return q, res
     start = _stiff_start(sat, f, jac, g, planar)
     if start is not None:
         q2, res2, why2 = _powell(f, jac, start, n)
-        if res2 <= tol:
+        if res2 <= tol and (res > tol or _turn(q2[ith] - g[ith]) < _turn(q[ith] - g[ith])):
             return q2, res2
         if res2 < res:
             q, res, why = q2, res2, why2
+    if res <= tol:
+        return q, res
     if sat.CD == 0:  # the trailing equilibrium is drag against the tethers' pull
         why = ("CD = 0: without drag nothing holds the balloon trailing in the wake, so "
                "there is no trailing equilibrium to find (" + why + ")")
     raise NoEquilibrium(f"no equilibrium found from guess {tuple(float(x) for x in g)}: {why} "
                         f"(residual {res:.3g})")
+
+
+def _turn(angle: float) -> float:
+    """|angle| wrapped to [0, π]."""
+    return abs(math.remainder(angle, 2 * math.pi))
 
 
 def _powell(f, jac, g, n: int) -> tuple:

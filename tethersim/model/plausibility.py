@@ -143,8 +143,7 @@ def _stiff_modulus(sat, l0: float) -> float:
 def stiff_tethers(sat) -> tuple:
     """The tethers (1, 2) whose axial period is under ``T_TETHER_MIN``: real lines.
 
-    What the explicit schemes cannot resolve (:func:`stiffness_problems`) and what
-    makes a run start at its equilibrium by default (tethersim.engine.start): a
+    What the explicit schemes cannot resolve (:func:`stiffness_problems`): a
     fibre line (docs/tethers.md) oscillates axially in a fraction of a second,
     the thesis's tethers in about a minute.
     """
