@@ -128,6 +128,8 @@ def loads_summary(res: SimResult) -> dict:
     # what the loads could see: a bounce shorter than this is missed (module docstring)
     d = {"tether loads sampled every [s]": float(np.median(np.diff(run.t)))
          if run.t.size > 1 else math.nan}
+    # the integrator's own count (both tethers), which sees every bounce the grid misses
+    d["taut/slack switches located"] = res.n_switches
     for ld in tether_loads(res):
         j = ld.tether
         d[f"tether {j} peak tension [N]"] = ld.peak

@@ -164,9 +164,10 @@ def _stiff_start(sat, f, jac, g, planar) -> np.ndarray | None:
                 return jac(qq)[np.ix_(balloon, balloon)]
             # finite differences first: the analytic Jacobian's kink where a line
             # goes slack sends hybr astray more often; then the Jacobian
-            for jj in (None, jb):
-                sol = root(fb, np.asarray(cand, float), jac=jj, method="hybr",
-                           options={"xtol": 1e-14})
+            for jj, how in ((None, "hybr"), (jb, "hybr"), (jb, "lm")):
+                sol = root(fb, np.asarray(cand, float), jac=jj, method=how,
+                           options={"xtol": 1e-14} if how == "hybr" else
+                           {"xtol": 1e-15, "ftol": 1e-15})
                 r = float(np.max(np.abs(fb(sol.x))))
                 if best is None or r < best[1]:
                     best = (sol.x.copy(), r)
@@ -187,11 +188,12 @@ def _stiff_start(sat, f, jac, g, planar) -> np.ndarray | None:
         qq = balanced(th, near)
         states.append(qq)
         resid.append(np.nan if qq is None else f(qq)[ith])
-        near = None if qq is None else qq[balloon]
+        near = near if qq is None else qq[balloon]  # a failed pitch keeps the last balance
     roots = []
-    for k in range(SCAN_POINTS):
-        r0, r1 = resid[k], resid[k + 1]
-        if not (np.isfinite(r0) and np.isfinite(r1)) or np.sign(r0) == np.sign(r1):
+    ok = [k for k in range(SCAN_POINTS + 1) if np.isfinite(resid[k])]
+    for k, k1 in zip(ok, ok[1:]):  # brackets across a pitch whose balance failed too
+        r0, r1 = resid[k], resid[k1]
+        if np.sign(r0) == np.sign(r1):
             continue
         cache = {}
 
@@ -202,7 +204,7 @@ def _stiff_start(sat, f, jac, g, planar) -> np.ndarray | None:
             cache[th] = qq
             return f(qq)[ith]
         try:
-            th = brentq(torque, grid[k], grid[k + 1], xtol=1e-14, rtol=4 * np.finfo(float).eps)
+            th = brentq(torque, grid[k], grid[k1], xtol=1e-14, rtol=4 * np.finfo(float).eps)
         except _Unbalanced:
             continue
         stable = r0 > 0 > r1  # the torque restores: θ̈ falls through zero as θ grows

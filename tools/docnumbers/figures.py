@@ -174,3 +174,8 @@ from tools.docnumbers import orbit_notes as _notes  # noqa: E402
 
 QUANTITIES.update(_notes.QUANTITIES)
 FIGURES += _notes.FIGURES
+
+from tools.docnumbers import figures_real as _real  # noqa: E402
+
+QUANTITIES.update(_real.QUANTITIES)
+FIGURES += _real.FIGURES
