@@ -35,6 +35,7 @@ def add_parser(sub) -> None:
                         "at most --periods orbits")
     options.add_integrator(p)
     options.add_model(p, "; see docs/errata.md")
+    options.add_atol(p)
     options.add_start(p)
     options.add_out(p, "results/<satellite>, e.g. results/satI")
     p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
@@ -78,7 +79,7 @@ def run(args) -> int:
     preflight.check_files(out, ("timeseries.csv", "timeseries.nc", "summary.json", *plots))
     record = options.claim_folder(out, args, sat)
     res = simulate(sat, periods=args.periods, steps=how.steps, method=how.method,
-                   model=args.model, rtol=how.rtol, locate_switches=how.locate,
+                   model=args.model, rtol=how.rtol, atol=args.atol, locate_switches=how.locate,
                    samples=how.samples, check=not args.no_check,
                    progress=options.progress(args), start=args.start)
     options.interrupted_early(res)

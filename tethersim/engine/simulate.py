@@ -38,7 +38,7 @@ from tethersim.engine.integrators.rk4 import rk4_run
 from tethersim.engine.integrators.select import specialised
 from tethersim.engine.linearise import rk4_amplification
 from tethersim.engine.result import SimResult
-from tethersim.engine.start import check_start_mode, start_satellite
+from tethersim.engine.start import atol_floor, atol_hint, check_start_mode, start_satellite
 from tethersim.model.inputs import air_vector, initial_model_state, parameter_vector
 from tethersim.model.registry import DEFAULT_MODEL, model_for_orbit, model_index
 from tethersim.model.satellite import Satellite
@@ -214,9 +214,10 @@ def estimate_error(run: SimResult) -> SimResult:
         A copy of ``run`` whose error_estimate holds |final state - final state
         of the rerun| in every generalized coordinate of the model, in its
         layout order (``SimResult.errors`` names them): RK4 reruns at half the
-        step, the adaptive method at rtol/100 and atol/100.  ``run`` itself (unchanged) when it did
-        not end with status "ok", when the rerun fails, or when it has no
-        record of its length (``periods``).
+        step, the adaptive method at rtol/100 and atol/100 (real lines: at least the
+        atol their force's rounding allows, tethersim.engine.start.atol_floor).
+        ``run`` itself (unchanged) when it did not end with status "ok", when the
+        rerun fails, or when it has no record of its length (``periods``).
     """
     if run.status != "ok" or run.periods is None:
         return run
@@ -225,8 +226,8 @@ def estimate_error(run: SimResult) -> SimResult:
                         run.locate_switches, False, False)
     else:
         fine = _run_adaptive(run.satellite, run.periods, run.t.size - 1, run.model,
-                             run.rtol / 100, run.atol / 100, run.locate_switches, False,
-                             scheme=run.method)
+                             run.rtol / 100, max(run.atol / 100, atol_floor(run.satellite)),
+                             run.locate_switches, False, scheme=run.method)
     return _with_error(run, fine)
 
 
@@ -367,7 +368,7 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
                 if st != STATUS_OK:
                     status = "diverged" if st == 1 else "failed"
                     message = {1: "state became non-finite", 2: "step size became too small",
-                               3: "too many steps"}[st] + f" at t = {t:.6g} s"
+                               3: "too many steps"}[st] + f" at t = {t:.6g} s" + atol_hint(sat, atol)
                     break
                 if t >= t_end:
                     break

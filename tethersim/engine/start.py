@@ -34,6 +34,7 @@ from tethersim.model.registry import get_model
 from tethersim.model.satellite import Satellite
 
 START_MODES = ("auto", "given", "equilibrium")
+REAL_LINE_ATOL = 1e-10  # the smallest atol a real line's run meets near rest (atol_floor)
 HINT = "start at the satellite's equilibrium: start='equilibrium' (--start equilibrium)"
 
 
@@ -173,3 +174,19 @@ def check_given_start(sat: Satellite, model: str) -> None:
                              f"{l0:g} m), strain {100 * strain:.4g} %, beyond the "
                              f"{100 * MAX_FAILURE_STRAIN:.3g} % at which the most extensible "
                              f"fibre of tethersim.model.materials breaks; {HINT}")
+
+
+def atol_floor(sat: Satellite) -> float:
+    """The smallest atol a run of ``sat`` can meet near rest: ``REAL_LINE_ATOL`` for real
+    lines (their force is known to its rounding level only, EA/l0 x λ x 1e-16, ~1e-11
+    m/s² on the balloon: more than a smaller atol allows a step), else 0."""
+    from tethersim.model.materials import real_tethers
+    return REAL_LINE_ATOL if real_tethers(sat) else 0.0
+
+
+def atol_hint(sat: Satellite, atol: float) -> str:
+    """Why a run may exhaust its steps (appended to "too many steps"), or ""."""
+    if atol >= atol_floor(sat):
+        return ""
+    return (f"; real lines near rest need atol >= {REAL_LINE_ATOL:g}, their force's rounding "
+            f"level (atol=..., --atol; docs/tethers.md)")

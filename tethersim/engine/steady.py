@@ -9,7 +9,8 @@ Soft tethers (the thesis's rubber bands) are solved as always: Powell's hybrid
 method from the guess.  A stiff line (a real fibre, EA ~ 1e4-1e5 N) makes that
 fail: its spring is ~1e10 times stiffer than the gravity-gradient and drag
 torques that fix the pitch, and the Newton steps wander between the line's
-narrow valley and the pitch's flat one.  The fallback separates the two scales:
+narrow valley and the pitch's flat one.  For real lines (EA >= 100 N,
+tethersim.model.materials.real_tethers) a fallback separates the two scales:
 
 * for a fixed pitch θ, the balloon's own balance (its two equations: tethers,
   drag, tidal force) is solved for (δx, δy), from the previous θ's answer and
@@ -33,6 +34,7 @@ from scipy.optimize import brentq, root
 
 from tethersim.engine.jacobian import jacobian
 from tethersim.model.inputs import parameter_vector
+from tethersim.model.materials import real_tethers
 from tethersim.model.registry import KERNELS, MODELS, get_model
 from tethersim.model.satellite import Satellite
 
@@ -103,11 +105,14 @@ def steady_coordinates(sat: Satellite, model: str, guess) -> tuple:
     names = mdl.state[:n]
     planar = [names.index(k) for k in ("delta_x", "delta_y", "theta")]
     ith = planar[2]
-    # Powell's steps may leap to a root half a turn away (a stiff line's valley throws
-    # them): such a root is kept only when the scan finds none nearer the guess's pitch
-    if res <= tol and _turn(q[ith] - g[ith]) <= math.pi / 2:
+    # the fallback is for real lines only: the thesis's tethers keep the answers (and the
+    # refusals) they always had.  Powell's steps may leap to a root half a turn away (a
+    # stiff line's valley throws them): such a root is kept only when the scan finds none
+    # nearer the guess's pitch
+    real = bool(real_tethers(sat))
+    if res <= tol and (not real or _turn(q[ith] - g[ith]) <= math.pi / 2):
         return q, res
-    start = _stiff_start(sat, f, jac, g, planar)
+    start = _stiff_start(sat, f, jac, g, planar) if real else None
     if start is not None:
         q2, res2, why2 = _powell(f, jac, start, n)
         if res2 <= tol and (res > tol or _turn(q2[ith] - g[ith]) < _turn(q[ith] - g[ith])):
