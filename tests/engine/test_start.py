@@ -151,3 +151,22 @@ def test_the_command_line_takes_the_start(tmp_path, capsys):
     assert "--start: invalid choice: 'rest'" in capsys.readouterr().err
     assert main([*argv, "--start", "equilibrium", "--out", str(tmp_path / "b")]) == 0
     assert "start                            equilibrium" in capsys.readouterr().out
+
+
+def test_a_real_line_at_rest_under_the_default_atol_is_told_the_atol_it_needs():
+    """At rest a real line's force is known to its rounding level only (~1e-11 m/s² on the
+    balloon), which an atol of 1e-12 does not allow a step: the failure says what does."""
+    sat = _dyneema()
+    kw = dict(periods=0.01, method="implicit", rtol=1e-6, progress=False,
+              model="objective-damper")
+    failed = ts.simulate(sat, **kw)
+    assert failed.status == "failed"
+    assert failed.message.endswith("real lines near rest need atol >= 1e-10, their force's "
+                                   "rounding level (atol=..., --atol; docs/tethers.md)")
+    assert ts.simulate(sat, atol=1e-10, **kw).status == "ok"
+
+
+def test_the_command_line_takes_the_atol_in_its_range(tmp_path, capsys):
+    argv = ["run", "satI", "--periods", "0.01", "--no-plots", "--no-check", "--quiet"]
+    assert main([*argv, "--atol", "1", "--out", str(tmp_path / "a")]) == 2
+    assert "allowed range 1e-20 <= atol <= 0.001, got 1" in capsys.readouterr().err
