@@ -91,6 +91,16 @@ def rtol_float(text: str) -> float:
     return v
 
 
+def atol_float(text: str) -> float:
+    """An absolute tolerance in the engine's ATOL_RANGE (argparse ``type``)."""
+    from tethersim.engine.arguments import ATOL_RANGE
+    v = positive_float(text)
+    if not ATOL_RANGE[0] <= v <= ATOL_RANGE[1]:
+        raise argparse.ArgumentTypeError(f"allowed range {ATOL_RANGE[0]:g} <= atol <= "
+                                         f"{ATOL_RANGE[1]:g}, got {text}")
+    return v
+
+
 # --- option groups ---------------------------------------------------------------------------
 def add_satellite(parser, *, optional_default: str | None = None, note: str = "") -> None:
     """The positional satellite: a preset name or a .toml path."""
@@ -138,6 +148,25 @@ def models(args) -> tuple:
         return parse_models(names)
     except ValueError as exc:
         raise UsageError(f"--{exc}") from None
+
+
+def add_atol(parser) -> None:
+    """``--atol X``: the adaptive and implicit schemes' absolute tolerance (run only)."""
+    parser.add_argument("--atol", type=atol_float, default=1e-12,
+                        help="absolute tolerance of the adaptive and implicit schemes [m, rad, "
+                             "m/s, rad/s] (default 1e-12); real lines at rest need 1e-10 or "
+                             "more (their force's rounding level: docs/tethers.md)")
+
+
+def add_start(parser) -> None:
+    """``--start MODE``: the satellite's initial state, its equilibrium, or auto
+    (tethersim.engine.start)."""
+    from tethersim.engine.start import START_MODES
+    parser.add_argument("--start", choices=START_MODES, default="auto",
+                        help="where the run starts: given (the satellite's initial state), "
+                             "equilibrium (its steady configuration, rates zero), or auto "
+                             "(default: equilibrium when a tether is a real line, EA >= 100 N; "
+                             "else given); docs/tethers.md")
 
 
 def add_quiet(parser) -> None:

@@ -31,8 +31,23 @@ MATERIALS = {
 # material damping of such lines: loss factor of order 0.01-0.05 (Cosmo & Lorenzini,
 # Tethers in Space Handbook, 3rd ed., 1997); the low end, as the data sheets give none
 LOSS_FACTOR = 0.01
+# the largest failure strain (strength / E) of the table's fibres: no real line stretches
+# further before it breaks (engine/start.py refuses a start of a stiff line beyond it)
+MAX_FAILURE_STRAIN = max(m.strength / m.E for m in MATERIALS.values())
+# EA [N] from which a tether is a real line, not a rubber band: 100 N is a modulus of
+# 100 MPa on the thesis's 1 mm^2, ten times the stiffest rubber and 1/750 of the softest
+# fibre of the table (a 0.1 mm Dyneema line has EA ~ 900 N; the thesis's tethers
+# 0.004-0.06 N).  Such a line barely stretches, so a run starts at its equilibrium by
+# default (tethersim.engine.start) and a start that strains it past MAX_FAILURE_STRAIN
+# is refused.
+REAL_TETHER_EA = 100.0
 KNOCKDOWN_RANGE = (0.1, 1.0)
 DIAMETER_RANGE = (1e-5, 0.1)  # m: a 10 µm filament to a 10 cm rope
+
+
+def real_tethers(sat) -> tuple:
+    """The tethers (1, 2) of ``sat`` whose EA is at least :data:`REAL_TETHER_EA`."""
+    return tuple(j for j, ea in ((1, sat.E1), (2, sat.E2)) if ea >= REAL_TETHER_EA)
 
 
 def material(name: str) -> Material:

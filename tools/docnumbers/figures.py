@@ -179,3 +179,8 @@ from tools.docnumbers import figures_tolerance as _tolerance  # noqa: E402
 
 QUANTITIES.update(_tolerance.QUANTITIES)
 FIGURES += _tolerance.FIGURES
+
+from tools.docnumbers import figures_real as _real  # noqa: E402
+
+QUANTITIES.update(_real.QUANTITIES)
+FIGURES += _real.FIGURES
