@@ -34,6 +34,7 @@ from tethersim.experiments.feasibility import ATLAS_FIELDS, SOLAR_CASES, Feasibi
 from tethersim.experiments.sweep.plan import CLASS_RTOL, SCHEMES, Plan
 from tethersim.model import params
 from tethersim.model.constants import MU_EARTH, R_EARTH
+from tethersim.model.registry import model_for_orbit
 from tethersim.model.satellite import Satellite, SatelliteError
 
 PENALTY = 1e6  # objective of a design that did not run: worse than any that did
@@ -242,6 +243,7 @@ def build_runs(spec: DesignSpec, x) -> tuple:
     """(circular satellites, free satellite) of design ``x``, or (None, reason) when the
     design cannot run in a plan."""
     from tethersim.engine.arguments import check_scheme
+    from tethersim.engine.start import check_given_start, resolved_mode
     try:
         sat = spec.design(x)
         fs = spec.feasibility(sat)
@@ -249,8 +251,14 @@ def build_runs(spec: DesignSpec, x) -> tuple:
         circ = [fs.circular(h, a3)] + [fs.circular(h, a3, k) for _, k in solar_scale_items(h)]
         free = fs.free(h, a3)
         check_scheme(sat, SCHEMES[spec.method])  # a stiff tether needs the implicit scheme
+        # a start the plan would refuse (a tether beyond its breaking load), refused here
+        for s in (*circ, free):
+            if resolved_mode(s, "auto") == "given":
+                check_given_start(s, model_for_orbit(spec.model, s.orbit))
     except (SatelliteError, ValueError) as exc:
-        return None, str(exc)
+        weak = " (breaking loads divided by the safety factor)" if "breaking load" in str(
+            exc) and spec.safety > 1 else ""
+        return None, f"{exc}{weak}"
     return circ, free
 
 
