@@ -1,0 +1,147 @@
+"""Monte Carlo: the same seed gives the same store at any thread count and after an
+interruption; each input draws from its own stream; a sample's rows match its own runs."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import tethersim as ts
+from tethersim.experiments.mc import MCInterrupted, MCSpec, run_mc
+from tethersim.experiments.mc.inputs import observed_days, sample_satellites, unit_draws
+from tethersim.experiments.mc.run import ROWS_FILE
+from tethersim.experiments.sweep.plan import ATOL_PER_RTOL
+
+SAT = ts.load_preset("satI")
+
+
+def _spec(**kw):
+    # 2 orbits (about 3 h) of settling and a free run capped at 4 h: SatI loses its
+    # balloon within that, so each sample is two short runs
+    return MCSpec(SAT, **{"n": 8, "seed": 11, "periods": 2.0, "max_lifetime_h": 4.0, **kw})
+
+
+@pytest.fixture(scope="module")
+def threaded(tmp_path_factory):
+    out = tmp_path_factory.mktemp("mc1")
+    rows = run_mc(_spec(), out, workers=1, progress=False)
+    return out, rows
+
+
+def test_same_seed_gives_identical_store_at_1_and_2_threads(threaded, tmp_path):
+    out1, rows = threaded
+    run_mc(_spec(), tmp_path, workers=2, progress=False)
+    assert (tmp_path / ROWS_FILE).read_bytes() == (out1 / ROWS_FILE).read_bytes()
+    assert [r["i"] for r in rows] == list(range(8))
+
+
+def test_interrupted_then_resumed_store_is_identical(threaded, tmp_path):
+    out1, _ = threaded
+    with pytest.raises(MCInterrupted, match="resumes"):
+        run_mc(_spec(), tmp_path, workers=2, progress=False, stop_after=3)
+    kept = (tmp_path / ROWS_FILE).read_text().splitlines()
+    assert 3 <= len(kept) < 8
+    run_mc(_spec(), tmp_path, workers=1, progress=False)
+    assert (tmp_path / ROWS_FILE).read_bytes() == (out1 / ROWS_FILE).read_bytes()
+
+
+def test_a_cut_line_reruns_its_sample(threaded, tmp_path):
+    out1, _ = threaded
+    lines = (out1 / ROWS_FILE).read_text().splitlines(keepends=True)
+    (tmp_path / "spec.json").write_text((out1 / "spec.json").read_text())
+    (tmp_path / ROWS_FILE).write_text("".join(lines[:4]) + lines[4][:30])
+    run_mc(_spec(), tmp_path, workers=1, progress=False)
+    assert (tmp_path / ROWS_FILE).read_bytes() == (out1 / ROWS_FILE).read_bytes()
+
+
+def test_another_spec_in_the_same_folder_is_refused(threaded):
+    out1, _ = threaded
+    with pytest.raises(ValueError, match="other settings"):
+        run_mc(_spec(seed=12), out1, workers=1, progress=False)
+
+
+def test_changing_one_inputs_band_leaves_the_others_draws_unchanged():
+    base = _spec()
+    other = _spec(ranges=(("CD", 0.5, 0.6), ("theta0", -1.0, 1.0)))
+    a = sample_satellites(SAT, base.inputs, base.units("sample"))
+    b = sample_satellites(SAT, other.inputs, other.units("sample"))
+    for (va, *_), (vb, *_) in zip(a, b):
+        assert va["CD"] != vb["CD"] and va["theta0"] != vb["theta0"]
+        assert {k: v for k, v in va.items() if k not in ("CD", "theta0")} == \
+               {k: v for k, v in vb.items() if k not in ("CD", "theta0")}
+
+
+def test_an_inputs_stream_does_not_depend_on_the_table_or_on_n():
+    ins = _spec().inputs
+    full = unit_draws(ins, 50, seed=5)
+    # a table of fewer inputs in another order: each column is its own input's stream
+    assert np.array_equal(unit_draws(ins[::-3], 50, seed=5), full[:, ::-3])
+    assert np.array_equal(unit_draws(ins, 20, seed=5), full[:20])  # larger n keeps the first
+    assert not np.array_equal(unit_draws(ins, 50, seed=6), full)
+
+
+def test_samples_carry_their_drawn_values_and_the_tables_daily_air():
+    spec = _spec(n=64)
+    first = np.datetime64(spec.inputs[0].low)
+    last = np.datetime64(spec.inputs[0].high) + np.timedelta64(1, "D")
+    for vals, circ, free in sample_satellites(SAT, spec.inputs, spec.units("sample")):
+        for k in ("CD", "A3", "E1", "E2", "c1", "c2"):
+            assert getattr(circ, k) == getattr(free, k) == vals[k]
+        lo, hi = {i.name: (i.low, i.high) for i in spec.inputs}["A3"]
+        assert lo * SAT.A3 <= vals["A3"] <= hi * SAT.A3
+        assert circ.initial[2] == pytest.approx(vals["theta0"])
+        assert abs(vals["theta0"] - SAT.initial[2]) <= math.radians(15) + 1e-12
+        assert first <= np.datetime64(vals["epoch"]) < last
+        assert circ.epoch == free.epoch == vals["epoch"]
+        assert circ.f107 is None and circ.atmosphere == free.atmosphere == "nrlmsise00"
+        assert (circ.orbit, circ.density_mode) == ("circular", "uniform")
+        assert (free.orbit, free.density_mode) == ("free", "per-body")
+
+
+def test_the_epoch_span_leaves_room_for_the_longest_run_in_observed_days():
+    spec = _spec(max_lifetime_h=100.0)
+    last_run_day = np.datetime64(spec.inputs[0].high) + np.timedelta64(1 + 5, "D")
+    assert last_run_day <= np.datetime64(observed_days()[1])
+
+
+def test_a_rows_outcomes_are_those_of_its_own_runs(threaded):
+    _, rows = threaded
+    spec = _spec()
+    (vals, circ, free), = sample_satellites(SAT, spec.inputs, spec.units("sample")[[2]])
+    # simulate() as a sweep point's definition calls it (sweep/point.py run_point)
+    kw = dict(method="adaptive", model=spec.model, rtol=spec.rtol,
+              atol=spec.rtol * ATOL_PER_RTOL, check=False, progress=False)
+    periods = spec.free_plans[0].periods
+    f = ts.simulate(free, periods, samples=round(100 * periods), **kw)
+    row = rows[2]
+    assert row["free_status"] == f.status != "ok"  # SatI loses its balloon within 4 h
+    # the plan of many's end_time of a left-domain stop is its last output sample, within
+    # one output step of simulate()'s located time (a discrepancy of the block kernel on
+    # main, reported; exact for runs without a stopping event: test_sweep_plan.py)
+    step = spec.free_plans[0].periods * SAT.period / round(100 * periods)
+    assert abs(row["lifetime_s"] - float(f.event_time)) <= step
+    c = ts.outcome(ts.simulate(circ, spec.periods, samples=round(100 * spec.periods), **kw))
+    assert row["class"] == c.class_name
+    assert row["tumbled"] == bool(c.metrics.tumbled)
+
+
+def test_bad_specs_are_refused_in_one_line():
+    for kw, match in ((dict(n=0), "n = 0"), (dict(sobol=3), "power of two"),
+                      (dict(max_lifetime_h=1.0), "max_lifetime_h = 1.0"),
+                      (dict(ranges=(("CD", 2.0, 1.0),)), "range of CD"),
+                      (dict(ranges=(("foo", 1.0, 2.0),)), "unknown input"),
+                      (dict(ranges=(("epoch", "1950-01-01", "1960-01-01"),)), "allowed days")):
+        with pytest.raises(ValueError, match=match) as e:
+            _spec(**kw)
+        assert "\n" not in str(e.value)
+    with pytest.raises(ValueError, match="f107"):
+        MCSpec(SAT.replace(f107=150.0, f107a=150.0, ap=4.0), n=2, seed=0)
+
+
+@pytest.mark.slow
+def test_local_dask_cluster_gives_the_same_store_as_threads(threaded, tmp_path):
+    pytest.importorskip("distributed")
+    out1, _ = threaded
+    run_mc(_spec(), tmp_path, dask_workers=2, progress=False)
+    assert (tmp_path / ROWS_FILE).read_bytes() == (out1 / ROWS_FILE).read_bytes()
