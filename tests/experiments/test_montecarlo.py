@@ -145,3 +145,19 @@ def test_local_dask_cluster_gives_the_same_store_as_threads(threaded, tmp_path):
     out1, _ = threaded
     run_mc(_spec(), tmp_path, dask_workers=2, progress=False)
     assert (tmp_path / ROWS_FILE).read_bytes() == (out1 / ROWS_FILE).read_bytes()
+
+
+def test_epoch_days_left_out_are_exactly_those_msis_refuses():
+    from tethersim.experiments.mc.inputs import usable_days
+    first, last = "2001-01-01", "2006-12-31"  # two radio-burst days inside
+    kept = set(usable_days(first, last).astype(np.int64).astype("datetime64[s]")
+               .astype("datetime64[D]"))
+    every = np.arange(np.datetime64(first), np.datetime64(last) + 1)
+    left_out = [d for d in every if d not in kept]
+    assert 1 <= len(left_out) < 10
+    for d in left_out:
+        with pytest.raises(ValueError, match="f107|ap"):
+            SAT.replace(atmosphere="nrlmsise00", epoch=f"{d}T12:00:00")
+    for d in every[::97]:  # and a spread of kept days load
+        if d in kept:
+            SAT.replace(atmosphere="nrlmsise00", epoch=f"{d}T12:00:00")

@@ -15,6 +15,7 @@ i-th number of each stream, so a larger n keeps the first samples.
 """
 from __future__ import annotations
 
+import functools
 import math
 import zlib
 from dataclasses import dataclass
@@ -73,8 +74,10 @@ class Input:
         """The input's values [SI; epoch: seconds since 1970] at unit numbers ``u``."""
         u = np.asarray(u, dtype=float)
         if self.kind == "epoch":
-            lo, hi = epoch_seconds(self.low), epoch_seconds(self.high) + 86400
-            return np.floor(lo + u * (hi - lo))  # whole seconds: the epoch is stored so
+            # uniform over the time of the span's usable days, laid end to end
+            days = usable_days(str(self.low), str(self.high))
+            t = np.minimum(np.floor(u * days.size * 86400.0), days.size * 86400.0 - 1)
+            return days[(t // 86400).astype(np.int64)] + t % 86400  # whole seconds
         if self.kind == "logscale":
             return nominal * np.exp(math.log(self.low) + u * math.log(self.high / self.low))
         if self.kind == "scale":
@@ -89,6 +92,33 @@ def epoch_seconds(day: str) -> float:
         return float(np.datetime64(str(day), "D").astype("datetime64[s]").astype(np.int64))
     except ValueError:
         raise ValueError(f"epoch day {day!r}: must be an ISO date, e.g. 1996-05-01") from None
+
+
+@functools.lru_cache(maxsize=8)
+def usable_days(first: str, last: str) -> np.ndarray:
+    """Start [s since 1970] of every day from ``first`` to ``last`` (ISO, both included)
+    whose table indices NRLMSISE-00 accepts as an epoch (tethersim.model.air.model's
+    F10.7 60-400 sfu, Ap 0-400): a few days of a radio burst (F10.7 > 400) or a reading
+    below 60 sfu are left out (9 of the 14 500 days from 1986-09-01 to 2026-06-30)."""
+    from tethersim.model.air.indices import bundled_table, indices_for_day
+    from tethersim.model.air.model import AP_RANGE, F107_RANGE
+    t = bundled_table()
+    days = np.arange(np.datetime64(first, "D"), np.datetime64(last, "D") + 1)
+    k = np.searchsorted(t["days"], days)
+
+    def out(v, lo, hi):
+        return (v < lo) | (v > hi)
+    # candidates: a value out of range on the day or the day before (f107 is the previous
+    # day's flux); each is then checked as an epoch reads it
+    f = t["f107_obs"]
+    suspect = (out(f[k], *F107_RANGE) | out(f[k - 1], *F107_RANGE)
+               | out(t["f107a_obs"][k], *F107_RANGE) | out(t["ap"][k], *AP_RANGE))
+    keep = np.ones(days.size, bool)
+    for j in np.nonzero(suspect)[0]:
+        d = indices_for_day(days[j])
+        keep[j] = not (out(d.f107, *F107_RANGE) or out(d.f107a, *F107_RANGE)
+                       or out(d.ap, *AP_RANGE))
+    return days[keep].astype("datetime64[s]").astype(np.int64).astype(float)
 
 
 def iso(seconds: float) -> str:
