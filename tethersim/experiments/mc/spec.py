@@ -26,7 +26,7 @@ from tethersim.experiments.mc.inputs import default_inputs, observed_days, with_
 from tethersim.experiments.sweep.plan import DEFAULT_RTOL, Plan
 from tethersim.model.satellite import Satellite
 
-FIRST_STAGE_H = 24.0
+FIRST_STAGE_H = 6.0  # SatI-like designs lose the balloon within hours: one or two days of grid
 MAX_SAMPLES = 100_000  # a store's samples (and Sobol' rows): the rows live in memory
 PARTS = ("sample", "sobol")
 # satellite fields the Monte Carlo sets per sample: a design that sets them is refused
