@@ -55,6 +55,7 @@ def test_mc_with_sobol_writes_the_index_plot(cli, tmp_path):
     (["--range", "CD"], "--range CD: expected NAME=LOW:HIGH"),
     (["--range", "epoch=1900-01-01:1990-01-01"], "allowed days"),
     (["--set", "epoch=2003-01-01T00:00:00"], "epoch"),
+    (["--set", "atmosphere=vallado"], "atmosphere"),
     (["--model", "free"], "--model free"),
     (["--workers", "1", "--dask-workers", "2"], "alternatives"),
 ])

@@ -109,7 +109,7 @@ def run(args) -> int:
         raise options.UsageError("--workers, --dask-workers and --scheduler are alternatives: "
                                  "give one")
     preflight.check_workers(args, "workers", "dask_workers")
-    refuse(args, [{"density_mode": "density"}.get(f, f) for f in OWN_FIELDS],
+    refuse(args, [*OWN_FIELDS, "atmosphere", "density"],
            lambda n: f"the Monte Carlo sets {n} per sample (held circular and free orbit, "
                      f"drawn epoch, the table's daily indices): drop it")
     ranges = tuple(_range(t) for t in args.range)

@@ -164,6 +164,8 @@ class MCSpec:
 def _check_own_fields(sat: Satellite) -> None:
     defaults = {f.name: f.default for f in fields(Satellite)}
     given = [f for f in OWN_FIELDS if getattr(sat, f) != defaults[f]]
+    if not sat.density_auto:  # the density follows each run's orbit
+        given.append("density_mode")
     if given:
         raise ValueError(f"mc: {', '.join(f'{f} = {getattr(sat, f)!r}' for f in given)}: the "
                          f"Monte Carlo sets these per sample (held circular orbit and free "

@@ -14,11 +14,13 @@ def _ecdf(ax, hours, censored_at: float, label: str, color: str) -> None:
     x = np.sort(np.asarray(hours, dtype=float))
     n = x.size
     finite = x[np.isfinite(x)]
-    if finite.size:
-        ax.step(np.r_[finite, censored_at], np.r_[np.arange(1, finite.size + 1),
-                                                  finite.size] / n,
+    censored = finite.size < n
+    if finite.size:  # with censored samples the curve runs on flat to the censoring line
+        ends = np.r_[finite, censored_at] if censored else finite
+        ax.step(ends, np.r_[np.arange(1, finite.size + 1), finite.size][:ends.size] / n,
                 where="post", color=color, label=label)
-    ax.axvline(censored_at, color="0.6", ls=":", lw=1)
+    if censored or not finite.size:
+        ax.axvline(censored_at, color="0.6", ls=":", lw=1)
 
 
 def plot_distributions(rows, path, *, run_h: float, cap_h: float, title: str = "") -> Path:
@@ -77,7 +79,7 @@ def plot_sobol(sobol: dict, path, title: str = "") -> Path:
             err = np.array([sobol[output][k][f"{kind}_conf"] for k in names])
             ax.bar(x + off, np.nan_to_num(v), 0.4, yerr=np.nan_to_num(err), color=color,
                    label="first-order S1" if kind == "S1" else "total ST", capsize=2)
-        ax.set_xticks(x, names, fontsize=8)
+        ax.set_xticks(x, names, fontsize=8, rotation=20)
         ax.axhline(0, color="0.4", lw=0.6)
         ax.set_ylabel("index")
         ax.set_title(output + ("" if np.isfinite([sobol[output][k]["S1"] for k in names]).any()
