@@ -174,3 +174,8 @@ from tools.docnumbers import orbit_notes as _notes  # noqa: E402
 
 QUANTITIES.update(_notes.QUANTITIES)
 FIGURES += _notes.FIGURES
+
+from tools.docnumbers import figures_mc as _mc  # noqa: E402
+
+QUANTITIES.update(_mc.QUANTITIES)
+FIGURES += _mc.FIGURES
