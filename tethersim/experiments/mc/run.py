@@ -45,7 +45,7 @@ class MCInterrupted(KeyboardInterrupt):
 
     def __init__(self, out: Path, done: int, total: int):
         super().__init__(f"mc interrupted: {done} of {total} samples are in {out}; the same "
-                         f"command resumes from them")
+                         f"Monte Carlo resumes from them")
 
 
 @lru_cache(maxsize=4)
