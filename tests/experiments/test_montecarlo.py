@@ -131,6 +131,8 @@ def test_bad_specs_are_refused_in_one_line():
                       (dict(max_lifetime_h=1.0), "max_lifetime_h = 1.0"),
                       (dict(ranges=(("CD", 2.0, 1.0),)), "range of CD"),
                       (dict(ranges=(("foo", 1.0, 2.0),)), "unknown input"),
+                      (dict(ranges=(("CD", 1.0, 3.0),)), "range of CD = 1.0:3.0: at its high end"),
+                      (dict(ranges=(("theta0", 0.0, 200.0),)), "range of theta0"),
                       (dict(ranges=(("epoch", "1950-01-01", "1960-01-01"),)), "allowed days")):
         with pytest.raises(ValueError, match=match) as e:
             _spec(**kw)

@@ -94,7 +94,25 @@ class MCSpec:
         from tethersim.experiments.sweep.batch import check_point_size
         check_point_size(self.circular_plan, "periods")
         check_point_size(self.free_plans[-1], "max_lifetime_h")
-        _ = self.inputs  # checks the bands and the epoch span
+        self._check_band_ends()
+
+    def _check_band_ends(self) -> None:
+        """Refuse a band whose end makes a satellite the model refuses (implausible CD,
+        a pitch past 180 deg, ...), before any run: each input at its band's ends, the
+        others mid-band (every band maps u monotonically)."""
+        from tethersim.experiments.mc.inputs import sample_satellites
+        d = len(self.inputs)
+        for j, inp in enumerate(self.inputs):
+            if inp.kind == "epoch":  # its days are the usable ones by construction
+                continue
+            for end, u in (("low", 0.0), ("high", 1.0)):
+                row = np.full((1, d), 0.5)
+                row[0, j] = u
+                try:
+                    sample_satellites(self.satellite, self.inputs, row)
+                except ValueError as exc:
+                    raise ValueError(f"range of {inp.name} = {inp.low}:{inp.high}: at its "
+                                     f"{end} end, {exc}") from None
 
     @cached_property
     def inputs(self) -> tuple:
