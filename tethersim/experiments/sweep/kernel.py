@@ -100,20 +100,25 @@ def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
             status = (STATUS_OK if st == 0 else EVENT_STATUS[slot] if st == RK4_EVENT
                       else STATUS_NONFINITE)
             t = out_t
+            t_stop = out_t[n - 1]  # the RK4 loop writes a stopping event's time itself
         else:  # simulate._run_adaptive, progress=False, circular orbit: one call
             t = T[j]
             for i in range(counters.shape[0]):
                 counters[i] = 0
-            _, _, n, st, slot = dop853_run(model, air, 0.0, span[j], y, 0.0, p, pw, ev, rtol,
-                                           atol, locate, t, out_y, one, max_steps, counters,
-                                           math.inf)
+            t_stop, _, n, st, slot = dop853_run(model, air, 0.0, span[j], y, 0.0, p, pw, ev,
+                                                rtol, atol, locate, t, out_y, one, max_steps,
+                                                counters, math.inf)
+            if st != DOP853_EVENT:
+                t_stop = t[n - 1]
             nfev = counters[0]
             status = (STATUS_OK if st == 0 else STATUS_NONFINITE if st == 1
                       else EVENT_STATUS[slot] if st == DOP853_EVENT else STATUS_FAILED)
         counts = status == STATUS_OK and n >= 2 and _all_finite(out_y, n)
         for k in range(rec_f.shape[1]):
             rec_f[j, k] = math.nan
-        rec_f[j, 8] = t[n - 1]  # the last sample: the located time of a stopping event
+        # the run's end: a stopping event's located time (simulate appends that sample
+        # after the grid's last one before it), else the last sample
+        rec_f[j, 8] = t_stop
         rec_i[j, 0] = status
         rec_i[j, 1] = 1 if counts else 0
         rec_i[j, 2] = 0
