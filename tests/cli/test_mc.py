@@ -1,4 +1,7 @@
-"""``tethersim mc``: outputs, resume, the summary's counts, and one-line refusals."""
+"""``tethersim mc``: outputs, resume, the summary's counts, and one-line refusals.
+
+The refusals come before any run (fast tier); the runs compile the free-orbit block
+(slow tier)."""
 from __future__ import annotations
 
 import csv
@@ -18,6 +21,7 @@ def done(tmp_path_factory):
     return out, text
 
 
+@pytest.mark.slow
 def test_mc_writes_samples_summary_and_plots(done):
     out, text = done
     for name in ("samples.csv", "summary.csv", "distributions.png", "store/rows.jsonl"):
@@ -30,6 +34,7 @@ def test_mc_writes_samples_summary_and_plots(done):
     assert "P(tumbles)" in text and "P50 lifetime_h" in text
 
 
+@pytest.mark.slow
 def test_mc_rerun_resumes_to_the_same_samples(done, cli):
     out, _ = done
     before = (out / "samples.csv").read_bytes()
@@ -38,6 +43,7 @@ def test_mc_rerun_resumes_to_the_same_samples(done, cli):
     assert (out / "samples.csv").read_bytes() == before
 
 
+@pytest.mark.slow
 def test_mc_with_sobol_writes_the_index_plot(cli, tmp_path):
     code, text, err = cli(["mc", "satI", *FAST[:-2], "--n", "2", "--sobol", "2", "--range",
                            "CD=0.9:1.1", "--out", str(tmp_path)])
@@ -65,6 +71,7 @@ def test_mc_bad_input_is_one_line_naming_the_option(cli, tmp_path, extra, words)
     assert words in err and err.count("\n") == 1 and err.startswith("tethersim: error:")
 
 
+@pytest.mark.slow
 def test_mc_refuses_another_spec_in_the_same_store(done, cli):
     out, _ = done
     code, _, err = cli(["mc", "satI", *FAST, "--seed", "5", "--out", str(out)])

@@ -8,6 +8,7 @@ from tethersim.experiments.sweep.plan import ATOL_PER_RTOL, Plan
 from tethersim.experiments.sweep.runner import run_plan
 
 
+@pytest.mark.slow  # compiles the free-orbit block
 @pytest.mark.parametrize("hours", [3.0, 4.0])
 def test_end_time_of_a_stopped_free_run_is_the_located_event_time(hours):
     sat = ts.load_preset("satI").replace(orbit="free")  # loses its balloon within 3 h
