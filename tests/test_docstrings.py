@@ -17,7 +17,7 @@ import tethersim
 PUBLIC = sorted(n for n in tethersim.__all__
                 if inspect.isfunction(getattr(tethersim, n)) or inspect.isclass(getattr(tethersim, n)))
 # classes whose fields are documented as Attributes (records), not Parameters
-RECORDS = {"Satellite", "SimResult", "Outcome", "Equilibrium", "SweepSpec"}
+RECORDS = {"Satellite", "SimResult", "Outcome", "Equilibrium", "SweepSpec", "Plan"}
 # exceptions and warnings are documented by a sentence
 PLAIN = {"SatelliteError", "RK4StepWarning"}
 

@@ -61,3 +61,16 @@ def test_a_stiff_tether_or_damper_loads_and_the_explicit_run_says_why_not(change
         ts.simulate(sat, periods=0.01, progress=False)
     line = one_line(str(e.value))
     assert all(text in line for text in expected), line
+
+
+def test_a_real_tether_is_not_listed_implausible_unless_an_explicit_run_was_allowed_it():
+    """Plausible input is what the model represents; what an explicit scheme cannot
+    resolve is the run's limit, listed in an allowed explicit run's summary only."""
+    from tethersim.analysis.summary import implausible_summary
+
+    sat = _kevlar()
+    assert sat.implausible == ()
+    allowed = sat.replace(allow_implausible=True)
+    assert implausible_summary(allowed, "implicit") == {}
+    line = implausible_summary(allowed, "adaptive")["implausible inputs (allowed)"]
+    assert "tether 1 would oscillate" in line

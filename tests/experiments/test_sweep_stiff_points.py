@@ -1,5 +1,5 @@
-"""A sweep runs the explicit schemes: a point whose tether they cannot step (a real fibre
-line, docs/tethers.md) is refused in one line before any store or run."""
+"""A point whose tether an explicit scheme cannot step (a real fibre line, docs/tethers.md)
+is refused in one line before any store or run; the implicit scheme sweeps it."""
 from __future__ import annotations
 
 import pytest
@@ -18,7 +18,7 @@ def test_a_sweep_refuses_a_point_too_stiff_for_its_scheme_before_any_run(method)
     line = one_line(str(e.value))
     assert line.startswith(f"sweep point E1 = 70000 N/mm^2 is too stiff for the sweep's {method} "
                            f"scheme: E1 = 70000 N/mm^2: tether 1 would oscillate")
-    assert "tethersim run --method implicit" in line
+    assert "the implicit scheme (--method implicit)" in line
 
 
 def test_allowing_implausible_input_lets_the_sweep_run_it_slowly():

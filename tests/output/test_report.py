@@ -9,6 +9,7 @@ import subprocess
 
 import pytest
 
+from tethersim.experiments.sweep.plan import CLASS_RTOL
 from tethersim.output.report import MAPS, build_report
 
 
@@ -57,7 +58,7 @@ def test_report_sweeps_are_stored_and_resumable(report):
     assert len(stores) == 2 * len(MAPS)  # converged + faithful per map
     # beside each store only its writer lock and the holder's name (sweep/lock.py)
     assert set(entries) - set(stores) <= {s + e for s in stores for e in (".lock", ".lock.json")}
-    assert all(s.endswith("_3x3_2orbits.zarr") for s in stores)
+    assert all(s.endswith(f"_3x3_2orbits_rtol{CLASS_RTOL:g}.zarr") for s in stores)
 
 
 def test_report_refuses_a_bad_grid(tmp_path):

@@ -69,7 +69,7 @@ def run_summary(res: SimResult, out: Outcome | None = None) -> dict:
         **({"event": res.event, "event time [s]": res.event_time} if res.event else {}),
         **out_of_plane_summary(res),
         **orbit_summary(res, out),
-        **implausible_summary(res.satellite),
+        **implausible_summary(res.satellite, res.method),
     }
 
 
@@ -128,7 +128,8 @@ def orbit_summary(res: SimResult, out: Outcome) -> dict:
     return d
 
 
-def implausible_summary(sat) -> dict:
-    """The plausibility violations a run was allowed (``allow_implausible``), if any."""
-    found = sat.implausible if sat.allow_implausible else ()
+def implausible_summary(sat, method: str) -> dict:
+    """The plausibility violations a run with ``method`` was allowed, if any."""
+    from tethersim.model.plausibility import allowed_problems
+    found = allowed_problems(sat, method)
     return {"implausible inputs (allowed)": "; ".join(found)} if found else {}

@@ -152,6 +152,11 @@ def add_overrides(parser) -> None:
                              "in N/mm^2, altitude in km, else SI); repeatable")
     parser.add_argument("--scale", action="append", metavar="NAME=FACTOR", default=[],
                         help="multiply a parameter, e.g. --scale c1=10 --scale c2=10; repeatable")
+    parser.add_argument("--tethers", metavar="MATERIAL:DIAMETER_MM[:KNOCKDOWN]", default=None,
+                        help="both tethers made of a real line (after --set, so rest lengths "
+                             "set there count): E1, E2 = EA, c1, c2 from its loss factor, Fb1, "
+                             "Fb2 = breaking load; materials: docs/tethers.md, e.g. "
+                             "--tethers kevlar49:1")
     parser.add_argument("--allow-implausible", action="store_true",
                         help="run values outside the plausible ranges (docs/limits.md); "
                              "the summary lists them")
@@ -179,8 +184,8 @@ def add_integrator(parser, *, rtol: float = 1e-10, fixed_step: bool = True) -> N
     rtol : float
         The command's default DOP853 relative tolerance.
     fixed_step : bool
-        False for commands that only choose between the converged and the
-        faithful scheme (sweep).
+        False for commands whose runs are adaptive, implicit or faithful, never
+        free-standing RK4 (sweep).
     """
     from tethersim.engine.simulate import FAITHFUL_STEPS_PER_PERIOD, STEPS_PER_PERIOD
 
@@ -197,6 +202,10 @@ def add_integrator(parser, *, rtol: float = 1e-10, fixed_step: bool = True) -> N
                             f"implicit: number of output samples")
         g.add_argument("--locate-switches", action="store_true",
                        help="RK4: split steps at taut/slack switches (not with --faithful)")
+    else:  # a sweep's points: converged DOP853, or Radau for real tethers
+        g.add_argument("--method", choices=("adaptive", "implicit"), default=None,
+                       help="adaptive DOP853 (default, converged) or implicit Radau IIA "
+                            "(stiff, real tethers: docs/tethers.md)")
     g.add_argument("--rtol", type=rtol_float, default=rtol,
                    help=f"relative tolerance of the adaptive and implicit schemes (default "
                         f"{rtol:g})")
@@ -223,8 +232,32 @@ def satellite(args):
     sat = resolve(args.satellite, getattr(args, "allow_implausible", False))
     sat = apply_overrides(sat, getattr(args, "set", None) or (),
                           getattr(args, "scale", None) or ())
+    if getattr(args, "tethers", None):
+        sat = _with_tethers(sat, args)
     from tethersim.cli.orbit import orbit_of_models
     return orbit_of_models(args, sat)
+
+
+def _with_tethers(sat, args):
+    """``--tethers MATERIAL:DIAMETER_MM[:KNOCKDOWN]`` applied to ``sat`` (one-line errors)."""
+    from tethersim.cli.overrides import refuse
+    from tethersim.model.materials import MATERIALS, with_tethers
+    refuse(args, ("E1", "E2", "c1", "c2", "Fb1", "Fb2"),
+           "--tethers sets it from the material; give one or the other")
+    parts = args.tethers.split(":")
+    usage = (f"--tethers {args.tethers!r}: expected MATERIAL:DIAMETER_MM[:KNOCKDOWN], "
+             f"e.g. kevlar49:1 (materials: {', '.join(MATERIALS)})")
+    if len(parts) not in (2, 3):
+        raise UsageError(usage)
+    try:
+        numbers = [float(x) for x in parts[1:]]
+    except ValueError:
+        raise UsageError(usage) from None
+    try:
+        return with_tethers(sat, parts[0], numbers[0] * 1e-3, knockdown=numbers[1]
+                            if len(numbers) > 1 else 1.0)
+    except ValueError as exc:
+        raise UsageError(f"--tethers: {exc}") from None
 
 
 @dataclass(frozen=True)

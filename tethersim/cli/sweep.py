@@ -112,7 +112,7 @@ def run(args) -> int:
                                  "give one")
     preflight.check_workers(args, "workers", "dask_workers")
     how = options.integrator(args)
-    method = "faithful" if how.faithful else "adaptive"
+    method = "faithful" if how.faithful else how.method  # adaptive or implicit
     # every refusal before the spec (whose points' check takes a while on a large grid),
     # the folder and the store: a refused sweep leaves nothing that blocks the rerun
     check_point_size(SimpleNamespace(periods=args.periods, method=method,

@@ -97,3 +97,47 @@ def tether_parameters(name: str, diameter: float, l0: float, mass: float,
             "breaking_load": knockdown * mat.strength * area,
             "mass_per_length": mat.density * area,
             "axial_period": 2 * math.pi * math.sqrt(mass / k)}
+
+
+def with_tethers(sat, name: str, diameter: float, tethers=(1, 2), knockdown: float = 1.0,
+                 loss_factor: float = LOSS_FACTOR):
+    """``sat`` with tethers made of a real line: E_j, c_j and Fb_j of each tether j.
+
+    The rest lengths stay the satellite's (set them first); the damping is taken at the
+    axial frequency of the balloon's reduced mass against the boom on each line.
+
+    Parameters
+    ----------
+    sat : tethersim.Satellite
+        The satellite.
+    name : str
+        A key of :data:`MATERIALS`.
+    diameter : float
+        Line diameter [m].
+    tethers : tuple of int, optional
+        Which tethers (1, 2 or both).
+    knockdown, loss_factor : float, optional
+        As :func:`tether_parameters`.
+
+    Returns
+    -------
+    tethersim.Satellite
+        A copy with ``E1``/``E2`` = EA [N], ``c1``/``c2`` and ``Fb1``/``Fb2`` set.
+
+    Examples
+    --------
+    >>> import tethersim as ts
+    >>> sat = ts.with_tethers(ts.load_preset("satI"), "kevlar49", 1e-3)
+    >>> round(sat.E1), round(sat.Fb2)
+    (87965, 2356)
+    """
+    if not tethers or any(j not in (1, 2) for j in tethers):
+        raise ValueError(f"tethers = {tethers!r}: allowed 1, 2 or both")
+    boom = sat.m1 + sat.m2
+    mass = sat.m3 * boom / (sat.m3 + boom)  # the balloon against the boom
+    changes = {}
+    for j in sorted(set(tethers)):
+        t = tether_parameters(name, diameter, sat.l10 if j == 1 else sat.l20, mass,
+                              knockdown, loss_factor)
+        changes.update({f"E{j}": t["EA"], f"c{j}": t["c"], f"Fb{j}": t["breaking_load"]})
+    return sat.replace(**changes)

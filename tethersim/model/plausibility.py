@@ -153,15 +153,17 @@ def _rate_problems(sat, reach_limit: float) -> list:
     return out
 
 
-def problems(sat, stiffness: bool = True) -> list:
+def problems(sat, method: str = "implicit") -> list:
     """Every plausibility violation of ``sat``, one line each.
 
     Parameters
     ----------
     sat : tethersim.model.satellite.Satellite
         A satellite that passed its hard checks.
-    stiffness : bool, optional
-        Include :func:`stiffness_problems` (what the explicit schemes cannot resolve).
+    method : str, optional
+        The scheme of a run: an explicit one (``"adaptive"``, ``"rk4"``) adds
+        :func:`stiffness_problems` (what it cannot resolve); the default, the implicit
+        scheme, resolves every tether, so a real fibre line is plausible.
 
     Returns
     -------
@@ -170,7 +172,13 @@ def problems(sat, stiffness: bool = True) -> list:
         altitude in km), the plausible range and why; empty if plausible.
     """
     return (_table_problems(sat) + _cross_problems(sat)
-            + (stiffness_problems(sat) if stiffness else []))
+            + (stiffness_problems(sat) if method != "implicit" else []))
+
+
+def allowed_problems(sat, method: str) -> list:
+    """The violations a run of ``sat`` with ``method`` was allowed (``allow_implausible``),
+    for its summary and files; empty when it does not allow any."""
+    return problems(sat, method) if getattr(sat, "allow_implausible", False) else []
 
 
 def check(sat, where: str = "") -> None:
@@ -191,7 +199,7 @@ def check(sat, where: str = "") -> None:
     if getattr(sat, "allow_implausible", False):
         return
     # stiff tethers are refused by the scheme that cannot integrate them (simulate), not here
-    found = problems(sat, stiffness=False)
+    found = problems(sat)
     if found:
         from .satellite import SatelliteError
         raise SatelliteError(f"{where}{found[0]}; {HINT}")

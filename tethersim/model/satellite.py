@@ -271,7 +271,11 @@ class Satellite:
 
     @property
     def implausible(self) -> tuple:
-        """Plausibility violations allowed by ``allow_implausible`` (empty if none)."""
+        """Plausibility violations allowed by ``allow_implausible`` (empty if none).
+
+        A tether too stiff for the explicit schemes is not one (the implicit scheme
+        integrates it); a run with an explicit scheme lists it too
+        (plausibility.allowed_problems)."""
         from . import plausibility
         return tuple(plausibility.problems(self))
 

@@ -232,6 +232,7 @@ def section_maps(page: Page, grid: int, periods: float, workers, progress) -> li
     from tethersim.analysis.predict import agreement, predicted_map
     from tethersim.experiments.sweep import SweepSpec, run_sweep
     from tethersim.experiments.sweep.analysis import band_slope, class_counts, differences
+    from tethersim.experiments.sweep.plan import CLASS_RTOL
     from tethersim.output.plots.sweep import plot_stability_map
 
     body, summary = [], []
@@ -241,10 +242,11 @@ def section_maps(page: Page, grid: int, periods: float, workers, progress) -> li
         name = f"{ms.sat}_{axes[0][0]}_{axes[1][0]}"
         data = {}
         for method in ("adaptive", "faithful"):
-            spec = SweepSpec(sat, axes, periods=periods, method=method)
+            # a map asks for classes: the class tolerance (docs/tolerances.md)
+            spec = SweepSpec(sat, axes, periods=periods, method=method, rtol=CLASS_RTOL)
             # the settings in the name: a report with another grid starts its own stores
             store = run_sweep(spec, page.out / "sweeps" / f"{name}_{method}_{grid}x{grid}"
-                              f"_{periods:g}orbits.zarr",
+                              f"_{periods:g}orbits_rtol{CLASS_RTOL:g}.zarr",
                               workers=workers, progress=progress)
             data[method] = store.dataset()
         ds, fa = data["adaptive"], data["faithful"]
@@ -261,7 +263,7 @@ def section_maps(page: Page, grid: int, periods: float, workers, progress) -> li
             other_label="faithful RK4 differs",
             band_slope=slope if math.isfinite(slope) else None,
             title=f"{sat.name}: {axes[1][0]} vs {axes[0][0]} (thesis Fig {ms.figure}), "
-                  f"{periods:g} orbits, DOP853")
+                  f"{periods:g} orbits, DOP853 rtol {CLASS_RTOL:g}")
         counts = class_counts(ds)
         if axes[0][0] == "c1":
             nom = max(sat.c1, sat.c2)
@@ -283,7 +285,9 @@ def section_maps(page: Page, grid: int, periods: float, workers, progress) -> li
         body.append(page.img(path, f"{sat.name} {axes[1][0]} vs {axes[0][0]}: classes (left, "
                                    f"black line: predicted stable region), steady pitch (right)"))
     page.add("Stability maps (thesis Figs 5.13, 5.21-5.23, 5.27-5.28)",
-             f"<p>{grid} x {grid} grids of {periods:g}-orbit runs; classes as docs/metrics.md. "
+             f"<p>{grid} x {grid} grids of {periods:g}-orbit runs (DOP853 at rtol {CLASS_RTOL:g}, "
+             "the tolerance at which classes have converged: docs/tolerances.md); classes as "
+             "docs/metrics.md. "
              "Predicted: from the equilibrium near θ = 0 and the eigenvalues of the generated "
              "Jacobian (tethersim.analysis.predict). Faithful: the thesis's fixed RK4 step (26.55 s).</p>"
              + _table(("satellite", "thesis figure", "axes", "classes (converged)",

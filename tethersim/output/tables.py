@@ -20,6 +20,7 @@ from pathlib import Path
 import numpy as np
 
 from tethersim.engine.result import SimResult
+from tethersim.model.plausibility import allowed_problems
 from tethersim.output.files import replacing
 
 ORBIT_COLUMNS = ("X", "Y", "VX", "VY")
@@ -143,7 +144,7 @@ def _series(res: SimResult, attrs: dict | None = None) -> tuple:
     """(columns, global attributes) of a run's time series: [(name, values, units)] with
     ``t`` first, and the run's and satellite's metadata; what to_xarray and write_netcdf hold."""
     columns = _columns(res)
-    found = res.satellite.implausible if res.satellite.allow_implausible else ()
+    found = allowed_problems(res.satellite, res.method)
     meta = {"satellite": res.satellite.name, "model": res.model, "method": res.method,
             "label": res.label, "status": res.status, "message": res.message,
             # the stopping limit that ended the run, and its located time (engine/events.py)

@@ -175,6 +175,11 @@ from tools.docnumbers import orbit_notes as _notes  # noqa: E402
 QUANTITIES.update(_notes.QUANTITIES)
 FIGURES += _notes.FIGURES
 
+from tools.docnumbers import figures_tolerance as _tolerance  # noqa: E402
+
+QUANTITIES.update(_tolerance.QUANTITIES)
+FIGURES += _tolerance.FIGURES
+
 from tools.docnumbers import figures_mc as _mc  # noqa: E402
 
 QUANTITIES.update(_mc.QUANTITIES)

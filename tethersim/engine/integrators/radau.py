@@ -45,6 +45,7 @@ from tethersim.engine.integrators.steps import initial_step
 N_COUNTERS = 7  # nfev, accepted, rejected, switches, steps, Jacobians, LU factorisations
 
 
+@njit(cache=True)
 def carry_size(n: int) -> int:
     """Length of the float array radau_run keeps between calls for a state of length n."""
     return 8 + n * n + 4 * n

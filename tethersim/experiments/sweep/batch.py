@@ -31,8 +31,14 @@ from tethersim.engine.simulate import (
     METRIC_SAMPLES_PER_PERIOD,
     refined_grid,
 )
-from tethersim.experiments.sweep.kernel import COL_FIELDS, F_FIELDS, I_FIELDS, sweep_block
-from tethersim.experiments.sweep.plan import ATOL_PER_RTOL, Plan
+from tethersim.experiments.sweep.kernel import (
+    COL_FIELDS,
+    F_FIELDS,
+    I_FIELDS,
+    sweep_block,
+    sweep_block_implicit,
+)
+from tethersim.experiments.sweep.plan import ATOL_PER_RTOL, SCHEMES, Plan
 from tethersim.experiments.sweep.point import record
 from tethersim.experiments.sweep.spec import SweepSpec
 from tethersim.model.inputs import air_vector, initial_model_state, parameter_vector
@@ -122,7 +128,7 @@ def _compiled(sats: list, plan: Plan, model: str, air: np.ndarray) -> list:
     periods = float(plan.periods)  # as simulate() takes it
     faithful = plan.method == "faithful"
     for s in sats:  # what simulate() refuses, each point's run refuses here too
-        check_scheme(s, "rk4" if faithful else "adaptive")
+        check_scheme(s, SCHEMES[plan.method])
     n = len(sats)
     P = np.stack([parameter_vector(s, model) for s in sats])
     Y0 = np.stack([initial_state(m, initial_model_state(s, model), s.r0, s.r0 * s.omega)
@@ -141,9 +147,14 @@ def _compiled(sats: list, plan: Plan, model: str, air: np.ndarray) -> list:
     cols = np.array([lay.state.index(c) for c in COL_FIELDS], dtype=np.int64)
     rec_f = np.empty((n, len(F_FIELDS)))
     rec_i = np.empty((n, len(I_FIELDS)), dtype=np.int64)
-    args = (air, faithful, T, Y0, P, span, n_steps, plan.rtol, plan.rtol * ATOL_PER_RTOL,
-            int(MAX_STEPS_PER_PERIOD * periods), EV, cols, float(plan.tol), SS_FRACTION, rec_f, rec_i)
-    specialised(sweep_block, m, args)(m, *args)  # releases the GIL
+    tolerances = (plan.rtol, plan.rtol * ATOL_PER_RTOL, int(MAX_STEPS_PER_PERIOD * periods))
+    measure = (EV, cols, float(plan.tol), SS_FRACTION, rec_f, rec_i)
+    if plan.method == "implicit":  # its own entry: the explicit blocks do not carry Radau
+        args = (air, T, Y0, P, span, *tolerances, *measure)
+        specialised(sweep_block_implicit, m, args)(m, *args)  # releases the GIL
+    else:
+        args = (air, faithful, T, Y0, P, span, n_steps, *tolerances, *measure)
+        specialised(sweep_block, m, args)(m, *args)  # releases the GIL
     amps = rk4_amplifications(sats, [s.period / FAITHFUL_STEPS_PER_PERIOD for s in sats],
                               model)
     # the run length outcome.run_orbits gives the per-point path: the orbits asked for

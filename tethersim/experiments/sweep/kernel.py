@@ -40,6 +40,8 @@ from tethersim.engine.events import EVENTS
 from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.dop853 import STATUS_EVENT as DOP853_EVENT
 from tethersim.engine.integrators.dop853 import dop853_run
+from tethersim.engine.integrators.radau import N_COUNTERS as RADAU_COUNTERS
+from tethersim.engine.integrators.radau import carry_size, radau_run
 from tethersim.engine.integrators.rk4 import STATUS_EVENT as RK4_EVENT
 from tethersim.engine.integrators.rk4 import rk4_run
 from tethersim.engine.result import STATUSES
@@ -70,6 +72,40 @@ def _all_finite(Y, n):
 
 
 @njit(cache=True, nogil=True)
+def _measure(j, model, air, p, t, out_y, n, status, nfev, end_time, cols, tol, ss_fraction,
+             rec_f, rec_i, buf, pm):
+    """Point j's record from its run (n rows of out_y at times t): outcome.py's rule, the
+    pitch metrics, the trail and the force peaks of a run that counts."""
+    ix, iy, ith = cols[0], cols[1], cols[2]
+    counts = status == STATUS_OK and n >= 2 and _all_finite(out_y, n)
+    for k in range(rec_f.shape[1]):
+        rec_f[j, k] = math.nan
+    rec_f[j, 8] = end_time
+    rec_i[j, 0] = status
+    rec_i[j, 1] = 1 if counts else 0
+    rec_i[j, 2] = 0
+    rec_i[j, 3] = 0
+    rec_i[j, 4] = nfev
+    if not counts:
+        return
+    threshold = pitch_metrics_into(t, out_y, n, ith, tol, ss_fraction, buf, pm)
+    rec_f[j, 0], rec_f[j, 1], rec_f[j, 2] = pm[0], pm[1], pm[2]
+    rec_i[j, 2] = 1 if pm[3] != 0.0 else 0
+    rec_i[j, 3] = 1 if pm[4] != 0.0 else 0
+    rec_f[j, 3] = window_mean(t, out_y, n, ix, threshold, buf)
+    rec_f[j, 4] = window_mean(t, out_y, n, iy, threshold, buf)
+    peaks = _family_force_peaks(model, air, t, out_y[:n], p)  # uniform air: p's densities
+    rec_f[j, 5], rec_f[j, 6], rec_f[j, 7] = peaks[ix], peaks[iy], peaks[ith]
+
+
+@njit(cache=True, nogil=True)
+def _adaptive_status(st, slot):
+    """The record's status code of an adaptive (DOP853 or Radau) run's loop status."""
+    return (STATUS_OK if st == 0 else STATUS_NONFINITE if st == 1
+            else EVENT_STATUS[slot] if st == DOP853_EVENT else STATUS_FAILED)
+
+
+@njit(cache=True, nogil=True)
 def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_steps, EV,
                 cols, tol, ss_fraction, rec_f, rec_i, out_t, out_y, pw, counters, buf, pm):
     # every array is borrowed here, once (integrators/borrow.py)
@@ -79,7 +115,6 @@ def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
     pw, counters = borrow(pw), borrow(counters)
     buf, pm = borrow(buf), borrow(pm)
     ns = Y0.shape[1]
-    ix, iy, ith = cols[0], cols[1], cols[2]
     # the loops' flags and first row as run-time values: a constant would be typed as a
     # literal and compile a second copy of each loop (same arithmetic, twice the compile)
     locate = not faithful  # DOP853 locates the switches, the thesis's RK4 does not
@@ -100,7 +135,7 @@ def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
             status = (STATUS_OK if st == 0 else EVENT_STATUS[slot] if st == RK4_EVENT
                       else STATUS_NONFINITE)
             t = out_t
-            t_stop = out_t[n - 1]  # the RK4 loop writes a stopping event's time itself
+            end_time = t[n - 1]  # a located stop is the last row (rk4_run)
         else:  # simulate._run_adaptive, progress=False, circular orbit: one call
             t = T[j]
             for i in range(counters.shape[0]):
@@ -108,32 +143,40 @@ def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
             t_stop, _, n, st, slot = dop853_run(model, air, 0.0, span[j], y, 0.0, p, pw, ev,
                                                 rtol, atol, locate, t, out_y, one, max_steps,
                                                 counters, math.inf)
-            if st != DOP853_EVENT:
-                t_stop = t[n - 1]
             nfev = counters[0]
-            status = (STATUS_OK if st == 0 else STATUS_NONFINITE if st == 1
-                      else EVENT_STATUS[slot] if st == DOP853_EVENT else STATUS_FAILED)
-        counts = status == STATUS_OK and n >= 2 and _all_finite(out_y, n)
-        for k in range(rec_f.shape[1]):
-            rec_f[j, k] = math.nan
-        # the run's end: a stopping event's located time (simulate appends that sample
-        # after the grid's last one before it), else the last sample
-        rec_f[j, 8] = t_stop
-        rec_i[j, 0] = status
-        rec_i[j, 1] = 1 if counts else 0
-        rec_i[j, 2] = 0
-        rec_i[j, 3] = 0
-        rec_i[j, 4] = nfev
-        if not counts:
-            continue
-        threshold = pitch_metrics_into(t, out_y, n, ith, tol, ss_fraction, buf, pm)
-        rec_f[j, 0], rec_f[j, 1], rec_f[j, 2] = pm[0], pm[1], pm[2]
-        rec_i[j, 2] = 1 if pm[3] != 0.0 else 0
-        rec_i[j, 3] = 1 if pm[4] != 0.0 else 0
-        rec_f[j, 3] = window_mean(t, out_y, n, ix, threshold, buf)
-        rec_f[j, 4] = window_mean(t, out_y, n, iy, threshold, buf)
-        peaks = _family_force_peaks(model, air, t, out_y[:n], p)  # uniform air: p's densities
-        rec_f[j, 5], rec_f[j, 6], rec_f[j, 7] = peaks[ix], peaks[iy], peaks[ith]
+            status = _adaptive_status(st, slot)
+            # a located stop is not a row of the grid (simulate appends it)
+            end_time = t_stop if st == DOP853_EVENT else t[n - 1]
+        _measure(j, model, air, p, t, out_y, n, status, nfev, end_time, cols, tol,
+                 ss_fraction, rec_f, rec_i, buf, pm)
+
+
+@njit(cache=True, nogil=True)
+def _implicit_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, tol,
+                   ss_fraction, rec_f, rec_i, out_y, pw, counters, carry, buf, pm):
+    air, T, Y0, P, span, EV, cols = (borrow(air), borrow(T), borrow(Y0), borrow(P),
+                                     borrow(span), borrow(EV), borrow(cols))
+    rec_f, rec_i, out_y, pw = borrow(rec_f), borrow(rec_i), borrow(out_y), borrow(pw)
+    counters, carry, buf, pm = borrow(counters), borrow(carry), borrow(buf), borrow(pm)
+    ns = Y0.shape[1]
+    one = np.int64(1)
+    for j in range(P.shape[0]):
+        y, p, ev, t = Y0[j], P[j], EV[j], T[j]
+        for i in range(p.shape[0]):
+            pw[i] = p[i]
+        for i in range(ns):
+            out_y[0, i] = y[i]
+        for i in range(counters.shape[0]):
+            counters[i] = 0
+        for i in range(carry.shape[0]):
+            carry[i] = 0.0
+        # simulate._run_adaptive(scheme="implicit"): the switches located, one call
+        t_stop, _, n, st, slot = radau_run(model, air, 0.0, span[j], y, 0.0, p, pw, ev, rtol,
+                                           atol, True, t, out_y, one, max_steps, counters,
+                                           carry, math.inf)
+        end_time = t_stop if st == DOP853_EVENT else t[n - 1]
+        _measure(j, model, air, p, t, out_y, n, _adaptive_status(st, slot), counters[0],
+                 end_time, cols, tol, ss_fraction, rec_f, rec_i, buf, pm)
 
 
 # nogil: the sweep's threads run blocks side by side
@@ -184,3 +227,25 @@ def sweep_block(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
     pm = np.empty(N_PITCH)
     _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_steps, EV,
                 cols, tol, ss_fraction, rec_f, rec_i, out_t, out_y, pw, counters, buf, pm)
+
+
+@njit(cache=True, nogil=True)
+def sweep_block_implicit(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, tol,
+                         ss_fraction, rec_f, rec_i):
+    """:func:`sweep_block` with the implicit scheme (Radau IIA, for stiff tethers).
+
+    Its own compiled entry, so that the blocks of the explicit schemes do not carry
+    (and compile) the Radau loop.  Arguments as :func:`sweep_block` without
+    ``faithful`` and ``n_steps``; ``T`` is each point's output grid.
+    """
+    literally(model)
+    ns = Y0.shape[1]
+    rows = T.shape[1]
+    out_y = np.empty((rows, ns))
+    pw = np.empty(P.shape[1])
+    counters = np.zeros(RADAU_COUNTERS, dtype=np.int64)
+    carry = np.zeros(carry_size(ns))
+    buf = np.empty(rows)
+    pm = np.empty(N_PITCH)
+    _implicit_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, tol,
+                   ss_fraction, rec_f, rec_i, out_y, pw, counters, carry, buf, pm)

@@ -21,9 +21,16 @@ from tethersim.engine.simulate import (
 )
 from tethersim.model.registry import DEFAULT_MODEL, model_index
 
-METHODS = ("adaptive", "faithful")
+METHODS = ("adaptive", "faithful", "implicit")
+#: the engine scheme (simulate's method) of each plan method
+SCHEMES = {"adaptive": "adaptive", "faithful": "rk4", "implicit": "implicit"}
 SAMPLES_PER_PERIOD = 100  # adaptive output grid for the metrics
 DEFAULT_RTOL = 1e-9
+# runs that only need a class or a verdict (maps, searches): chosen by the convergence study
+# of docs/tolerances.md (no class changes on its grids, with two decades to spare; checked
+# by tests/experiments/test_sweep_convergence.py); runs whose numbers are reported keep
+# DEFAULT_RTOL
+CLASS_RTOL = 1e-6
 ATOL_PER_RTOL = 1e-2  # atol = rtol x this: states are O(1) rad and O(10) m
 # per-orbit counts: RK4 steps up to the engine's step budget; output samples up to 50x the
 # metrics grid (more adds nothing the metrics use, and multiplies the store)
@@ -41,8 +48,9 @@ class Plan:
         Orbits per run (thesis: 50, about three days, p. 5-6); a run stopped by an
         event (re-entry, a limit of the model's domain) ends at the located time.
     method : str
-        "adaptive" (DOP853 at rtol) or "faithful" (the thesis's fixed RK4 step,
-        ``steps_per_period`` per orbit, switches not located).
+        "adaptive" (DOP853 at rtol), "faithful" (the thesis's fixed RK4 step,
+        ``steps_per_period`` per orbit, switches not located) or "implicit" (Radau IIA
+        at rtol: real, stiff tethers; docs/tethers.md).
     model : str
         Model name (a satellite on a free orbit runs the model's free twin).
     rtol : float

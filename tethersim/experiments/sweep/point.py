@@ -13,7 +13,7 @@ from tethersim.analysis.outcome import outcome
 from tethersim.engine.linearise import rk4_amplification
 from tethersim.engine.result import STATUSES
 from tethersim.engine.simulate import FAITHFUL_STEPS_PER_PERIOD, simulate
-from tethersim.experiments.sweep.plan import ATOL_PER_RTOL
+from tethersim.experiments.sweep.plan import ATOL_PER_RTOL, SCHEMES
 from tethersim.experiments.sweep.spec import SweepSpec
 
 # (name, dtype, units, long name): the record of one point, in this order
@@ -54,8 +54,9 @@ def run_point(spec: SweepSpec, k: int) -> dict:
                        locate_switches=False, check=False, progress=False, step_warning=False)
     else:
         n_out = max(2, round(spec.samples_per_period * spec.periods))
-        res = simulate(sat, spec.periods, method="adaptive", model=spec.model, rtol=spec.rtol,
-                       atol=spec.rtol * ATOL_PER_RTOL, samples=n_out, check=False, progress=False)
+        res = simulate(sat, spec.periods, method=SCHEMES[spec.method], model=spec.model,
+                       rtol=spec.rtol, atol=spec.rtol * ATOL_PER_RTOL, samples=n_out,
+                       check=False, progress=False)
     if res.status == "interrupted":  # Ctrl-C in the calling thread: stop, do not record
         raise KeyboardInterrupt
     thesis_step = sat.period / FAITHFUL_STEPS_PER_PERIOD
@@ -69,7 +70,8 @@ def run_point(spec: SweepSpec, k: int) -> dict:
                       upside_down=int(m.upside_down), trail_delta_x=out.trail_delta_x,
                       trail_delta_y=out.trail_delta_y, max_force_delta_x=out.max_force[0],
                       max_force_delta_y=out.max_force[1], max_force_theta=out.max_force[2]),
-                  float(res.t[-1]))
+                  # the last sample of the metrics grid: a located stop's time (simulate)
+                  float((res.fine_t if res.fine_t is not None else res.t)[-1]))
 
 
 def record(status: int, nfev: int, amplification: float, stability_class: int,

@@ -122,6 +122,15 @@ def run_plan(plan: Plan, sats: list, *, workers: int | None = None,
     -------
     list of dict
         One record per satellite (point.VARIABLES).
+
+    Examples
+    --------
+    >>> import tethersim as ts
+    >>> sat = ts.load_preset("satI")
+    >>> recs = ts.run_plan(ts.Plan(periods=1), [sat, sat.replace(A3=6.0)], workers=1,
+    ...                    progress=False)
+    >>> [r["end_time"] == sat.period for r in recs]
+    [True, True]
     """
     from tethersim.experiments.sweep.batch import run_satellites
 

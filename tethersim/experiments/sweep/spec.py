@@ -157,13 +157,14 @@ class SweepSpec:
         except SatelliteError as exc:
             raise SatelliteError(f"sweep point {self._where(k)} is not a valid satellite: "
                                  f"{exc}") from None
-        # a sweep runs the explicit schemes: a tether too stiff for them (a real fibre line,
-        # docs/tethers.md) is refused here, before any store, not in the middle of the run
-        stiff = [] if sat.allow_implausible else plausibility.stiffness_problems(sat)
+        # a tether too stiff for an explicit scheme (a real fibre line, docs/tethers.md) is
+        # refused here, before any store, not in the middle of the run
+        stiff = ([] if sat.allow_implausible or self.method == "implicit"
+                 else plausibility.stiffness_problems(sat))
         if stiff:
             raise SatelliteError(f"sweep point {self._where(k)} is too stiff for the sweep's "
                                  f"{self.method} scheme: {stiff[0]}; run such a tether with "
-                                 f"`tethersim run --method implicit`")
+                                 f"the implicit scheme (--method implicit)")
 
     def _where(self, k: int) -> str:
         return ", ".join(f"{n} = {v:g} {params.unit(n)}" for n, v in self.values_at(k).items())
