@@ -86,3 +86,21 @@ def test_local_dask_cluster_gives_the_same_store_as_threads(threaded, tmp_path):
     assert (tmp_path / ROWS_FILE).read_bytes() == (out1 / ROWS_FILE).read_bytes()
 
 
+
+
+def test_a_life_past_the_first_stage_is_that_of_one_run_to_the_cap(tmp_path):
+    # at 260 km SatI keeps its balloon for hours: lives end in the second stage or capped
+    spec = MCSpec(SAT.replace(altitude=260e3), n=4, seed=2, periods=2.0, max_lifetime_h=12.0)
+    assert len(spec.free_plans) == 2
+    rows = run_mc(spec, tmp_path, workers=2, progress=False)
+    late = [r for r in rows if r["lifetime_s"] > spec.free_plans[0].periods * SAT.period]
+    assert late
+    for r in late[:2]:
+        (_, _, free), = sample_satellites(spec.satellite, spec.inputs,
+                                          spec.units("sample")[[r["i"]]])
+        periods = spec.free_plans[-1].periods
+        res = ts.simulate(free, periods, method="adaptive", model=spec.model, rtol=spec.rtol,
+                          atol=spec.rtol * ATOL_PER_RTOL, samples=round(100 * periods),
+                          check=False, progress=False)
+        assert r["free_status"] == res.status
+        assert r["lifetime_s"] == float(res.t[-1])  # the cap itself when capped
