@@ -30,6 +30,7 @@ from tethersim.cli import (
     feasibility,
     forces,
     headlines,
+    mc,
     options,
     report,
     run,
@@ -41,14 +42,14 @@ from tethersim.cli import (
 
 # in the order of `tethersim --help`
 COMMANDS = (run, validate, show, equilibrium, compare, forces, sweep, tune, report, headlines,
-            feasibility, design)
+            feasibility, design, mc)
 # the options that set a command's run sizes: simulate()'s size refusal, which names its
 # own arguments, names these instead (a command without --steps never blames --steps)
 SIZE_OPTIONS = {"run": "--periods/--steps", "compare": "--periods/--steps",
                 "forces": "--periods/--steps", "validate": "--periods", "sweep": "--periods",
                 "tune": "--periods", "report": "--periods", "headlines": "--periods",
                 "feasibility": "--periods/--max-lifetime",
-                "design": "--periods/--max-lifetime"}
+                "design": "--periods/--max-lifetime", "mc": "--periods/--max-lifetime"}
 
 
 def build_parser() -> options.Parser:
