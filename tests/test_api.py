@@ -342,7 +342,9 @@ def test_timeseries_csv_round_trips_exactly(short_run, tmp_path):
     header = path.read_text().splitlines()[0]
     assert header.startswith("t [s],delta_x [m],delta_y [m],theta [rad]")
     data = np.loadtxt(path, delimiter=",", skiprows=1)
-    np.testing.assert_array_equal(data, np.column_stack([short_run.t, short_run.states]))
+    # the model's states, then the COM orbit of the circular run (its closed form)
+    np.testing.assert_array_equal(data, np.column_stack([short_run.t, short_run.states,
+                                                         short_run.orbit]))
 
 
 def test_rk4_run_step_and_sample_count():
