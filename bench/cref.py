@@ -97,7 +97,7 @@ def rhs_c_body(model, length_defs):
         tq, _ = codegen._sum_families(model, j + 1)
         lam = TETHER_LENGTHS[j]
         c.append(f"{i1}const double {lam} = {cp.doprint(codegen._prepare(length_defs[lam]))};")
-        c.append(f"{i1}if ({codegen._gate(j)}) {{")
+        c.append(f"{i1}if ({codegen.gate(j)}) {{")
         bc, bp, n = _c_block(qnames, tq, f"t{j + 1}_", i2, op="+=")
         c += bc + [f"{i1}}}"]
         blocks.append(((qnames, tq, f"t{j + 1}_", i2, "+="), bp))

@@ -90,7 +90,8 @@ def test_adaptive_and_rk4_agree_on_nominal_runs(preset):
 
 
 def test_orbit_stays_circular_two_body(sat):
-    """Eq 3.9 from Table 4.3's circular state: |R| = r0 to integrator accuracy."""
+    """Eq 3.9 from Table 4.3's circular state: |R| = r0 (the closed form since issue 22;
+    tests/engine/test_held_circle.py checks it against an integration of Eq 3.9)."""
     r = simulate(sat, periods=2, method="adaptive", samples=50, check=False)
     radius = np.hypot(r.orbit[:, 0], r.orbit[:, 1])
     assert np.max(np.abs(radius / sat.r0 - 1)) < 1e-9
