@@ -13,7 +13,7 @@ integer *literal* and resolves to that model's generated kernel, so each model
 gets its own specialised loop and no branch on the model runs per evaluation.
 A loop obtains the literal with ``numba.literally(model)`` (integrators/rk4.py,
 dop853.py).  Everything a loop needs to know about a model's layout — its
-state size, whether its orbit is the held circle, where the densities and μ sit in
+state size, whether its orbit is the held circle, where the densities and ω sit in
 its parameter vector, its tether margins and body radii — comes from the
 generated module, so a model that `make derive` adds gets its loop with no
 edit here.
