@@ -22,6 +22,9 @@ with gcc -O3.  Results go to stdout (table at the end) and bench/results.json.
      driver vs run_sweep at 5 and 50 orbits, 1 and 2 threads, and run_sweep through
      the per-point path (bench/csweep.py); `--only sweep` runs this section alone
   8. `tethersim report` wall time (not with --quick)
+  9. against heyoka.py (bench/peers.py, when heyoka is installed: the [bench] extra):
+     single runs at equal accuracy (work-precision, three cases) and sweep throughput
+     against its SIMD batches; `--only peers` runs this section alone
 """
 from __future__ import annotations
 
@@ -612,6 +615,19 @@ def bench_cli(rep: Report, q):
 
 
 # --------------------------------------------------------------------------- main
+def bench_peers(rep: Report, q) -> None:
+    """heyoka.py at equal accuracy (bench/peers.py), if it is installed."""
+    try:
+        import heyoka  # noqa: F401
+    except ImportError as exc:
+        rep.notes.append(f"heyoka figures skipped: {exc} (make bench installs the [bench] extra)")
+        return
+    import peers
+    log("heyoka.py: single runs at equal accuracy, then sweeps against its SIMD batches")
+    peers.bench_single(rep, q, log)
+    peers.bench_sweep(rep, q, log)
+
+
 def machine_info():
     cpu = ""
     try:
@@ -698,7 +714,7 @@ def main(argv=None) -> int:
     ap.add_argument("--json", default=str(HERE / "results.json"), help="where to write results")
     ap.add_argument("--skip-slow", action="store_true",
                     help="skip the subprocess figures (make derive, CLI, report)")
-    ap.add_argument("--only", choices=("sweep", "report", "3d", "cli"), default=None,
+    ap.add_argument("--only", choices=("sweep", "report", "3d", "cli", "peers"), default=None,
                     help="run one section only (sweep throughput, the report's wall time, "
                          "the 3-D model against its C port, or the CLI's cold and warm runs)")
     args = ap.parse_args(argv)
@@ -731,6 +747,8 @@ def main(argv=None) -> int:
             bench3d.bench_3d(rep, q, log)
         elif args.only == "cli":
             bench_cli(rep, q)
+        elif args.only == "peers":
+            bench_peers(rep, q)
         else:
             sweep_bench.bench_report(rep, q, REPO)
         print_table(rep, clock() - t_start, "(not written with --only)")
@@ -762,6 +780,7 @@ def main(argv=None) -> int:
     sweep_bench.bench_sweep(rep, q)
     import csweep
     csweep.bench_csweep(rep, S, q, log)
+    bench_peers(rep, q)
     if not args.skip_slow:
         bench_derive(rep, q)
         bench_cli(rep, q)

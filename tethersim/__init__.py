@@ -17,7 +17,7 @@ from tethersim.engine.result import SimResult
 from tethersim.engine.simulate import RK4StepWarning, simulate
 from tethersim.generated.layout import FAMILIES, PARAMETERS, STATE
 from tethersim.model.inputs import air_vector, parameter_vector
-from tethersim.model.materials import MATERIALS, tether_parameters
+from tethersim.model.materials import MATERIALS, tether_parameters, with_tethers
 from tethersim.model.options import air_density
 from tethersim.model.presets import load, load_preset
 from tethersim.model.registry import DEFAULT_MODEL, KERNELS, NAMES, get_model
@@ -30,7 +30,7 @@ __all__ = ["Satellite", "SatelliteError", "SimResult", "RK4StepWarning", "Outcom
            "write_netcdf", "write_table", "accelerations", "generalized_forces", "parameters",
            "MODELS", "FAMILIES", "STATE", "PARAMETERS", "__version__", "find_equilibrium",
            "Equilibrium", "SweepSpec", "run_sweep", "Plan", "run_plan", "bodies", "body_accelerations",
-           "air_density", "MATERIALS", "tether_parameters"]
+           "air_density", "MATERIALS", "tether_parameters", "with_tethers"]
 from tethersim._version import __version__  # noqa: E402
 
 MODELS = NAMES  # every generated model (tethersim.model.registry)

@@ -13,7 +13,8 @@ from tests.cli.conftest import call
 
 QUICK = ["--periods", "0.05", "--quiet", "--no-check"]
 DATA = {"timeseries.csv", "timeseries.nc", "summary.json"}
-PLANAR_RUN_FILES = DATA | {"theta.png", "delta_x.png", "delta_y.png", "overview.png"}
+PLANAR_RUN_FILES = DATA | {"theta.png", "delta_x.png", "delta_y.png", "overview.png",
+                            "tensions.png"}  # issue 21: the tethers' tensions
 
 
 def _run(out, *extra, plots=False):

@@ -46,9 +46,10 @@ def test_run_csv_header_has_si_units_and_data_parse(satI_run):
     header = path.read_text().splitlines()[0].split(",")
     assert header[:7] == ["t [s]", "delta_x [m]", "delta_y [m]", "theta [rad]",
                           "delta_x_dot [m/s]", "delta_y_dot [m/s]", "theta_dot [rad/s]"]
-    assert header[7:] == ["X [m]", "Y [m]", "VX [m/s]", "VY [m/s]"]
+    assert header[7:11] == ["X [m]", "Y [m]", "VX [m/s]", "VY [m/s]"]
+    assert header[11:] == ["tension_1 [N]", "tension_2 [N]"]  # issue 21: the tethers' loads
     data = np.loadtxt(path, delimiter=",", skiprows=1)
-    assert data.shape[1] == 11
+    assert data.shape[1] == 13
     assert data[0, 0] == 0.0
     assert data[0, 3] == pytest.approx(math.pi / 6)  # θ0 = π/6 rad (Table 4.2), not degrees
     assert data[-1, 0] == pytest.approx(0.5 * 5309.64, rel=1e-4)  # period ≈ 5310 s (facts.md)

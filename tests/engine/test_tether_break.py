@@ -46,10 +46,13 @@ def test_an_unbreakable_tether_never_breaks_and_changes_no_step():
     np.testing.assert_array_equal(with_limit.states, without.states)
 
 
-def test_a_start_beyond_the_breaking_load_stops_before_any_step():
+def test_a_start_beyond_the_breaking_load_is_refused_before_any_step():
+    """Issue 21 item 4: such a start is no physical state (the line would have broken
+    before t = 0): refused in one line that points at the equilibrium start."""
     t0 = _tensions(SAT, ts.simulate(SAT, 1e-4, progress=False).states[0])
-    res = ts.simulate(SAT.replace(Fb2=0.5 * t0[1]), periods=0.1, progress=False)
-    assert res.status == "tether-broke" and res.event_time == 0.0 and res.n_accepted == 0
+    with pytest.raises(ValueError, match=r"tether 2 starts stretched to .* at or beyond its "
+                                         r"breaking load Fb2 = .*--start equilibrium"):
+        ts.simulate(SAT.replace(Fb2=0.5 * t0[1]), periods=0.1, progress=False)
 
 
 def test_a_breaking_load_survives_a_preset_round_trip_and_zero_is_unbreakable():

@@ -17,11 +17,11 @@ def test_3d_run_writes_roll_yaw_and_delta_z_plots(tmp_path):
     res = tethersim.simulate(sat, periods=0.2, model="3d", progress=False)
     names = [p.name for p in plot_result(res, tmp_path)]
     assert names == ["theta.png", "delta_x.png", "delta_y.png", "roll.png", "yaw.png",
-                     "delta_z.png", "overview.png"]
+                     "delta_z.png", "overview.png", "tensions.png"]
     assert all((tmp_path / n).stat().st_size > 10_000 for n in names)
 
 
 def test_planar_run_writes_only_the_planar_plots(tmp_path):
     res = tethersim.simulate(tethersim.load_preset("satI"), periods=0.2, progress=False)
     assert [p.name for p in plot_result(res, tmp_path)] == [
-        "theta.png", "delta_x.png", "delta_y.png", "overview.png"]
+        "theta.png", "delta_x.png", "delta_y.png", "overview.png", "tensions.png"]

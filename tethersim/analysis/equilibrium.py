@@ -14,25 +14,20 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import root
 
 from tethersim.analysis.metrics import SETTLING_TOL, wrap
 from tethersim.engine.bodies import bodies_from_states
 from tethersim.engine.domain import state_violation
-from tethersim.engine.jacobian import jacobian
 from tethersim.engine.linearise import attitude_jacobian, rk4_max_step
-from tethersim.model.inputs import parameter_vector
-from tethersim.model.registry import DEFAULT_MODEL, KERNELS, MODELS, get_model
+from tethersim.engine.steady import CIRCULAR, RESIDUAL_TOL, NoEquilibrium, steady_coordinates
+from tethersim.model.registry import DEFAULT_MODEL, get_model
 from tethersim.model.satellite import Satellite
 
-RESIDUAL_TOL = 1e-10  # largest |acceleration| accepted at an equilibrium [SI]
 NEUTRAL_TOL = 1e-10  # |λ| [1/s] below which a mode is neutral (a cyclic coordinate)
-# circular-orbit models, planar and 3-D (a free orbit's anomaly has no equilibrium)
-CIRCULAR = tuple(m.name for m in MODELS if m.orbit == "circular")
-
-
-class NoEquilibrium(RuntimeError, ValueError):
-    """No equilibrium exists or none was found; a one-line message (a ValueError for the CLI)."""
+# CIRCULAR: the circular-orbit models, planar and 3-D (a free orbit's anomaly has no
+# equilibrium); RESIDUAL_TOL, NoEquilibrium: engine/steady.py, the solver
+__all__ = ["CIRCULAR", "RESIDUAL_TOL", "NEUTRAL_TOL", "NoEquilibrium", "Equilibrium",
+           "find_equilibrium", "format_equilibrium"]
 
 
 @dataclass(frozen=True)
@@ -149,6 +144,14 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
         model from zero), or every coordinate of the model in its order;
         default the initial offset and θ = 0.
 
+    Notes
+    -----
+    Stiff, real tethers (EA ~ 1e4-1e5 N) are solved too: when Powell's method
+    from the guess fails, the balloon's balance is solved at each pitch and the
+    statically stable pitch nearest the guess's is refined
+    (tethersim.engine.steady).  As EA grows the balloon goes to the apex of the
+    triangle of the rest lengths over the attachment points (docs/real-tethers.md).
+
     Returns
     -------
     Equilibrium
@@ -158,7 +161,9 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
     ------
     NoEquilibrium
         If no tether holds the balloon, or the solver finds no state with all
-        accelerations below ``RESIDUAL_TOL`` (a RuntimeError and a ValueError).
+        accelerations below the residual tolerance (``RESIDUAL_TOL``, or for
+        stiff lines the rounding level of their force:
+        tethersim.engine.steady.residual_tolerance); a RuntimeError and a ValueError.
     ValueError
         A satellite on a free orbit (one line): the equilibrium is that of the
         orbit held circular at ``altitude``; a free orbit decays and has none.
@@ -183,14 +188,13 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
         raise ValueError(f"orbit = {sat.orbit!r}: the equilibrium is that of the orbit held "
                          f"circular at altitude {sat.altitude / 1e3:g} km (a free orbit decays "
                          f"and has none); use orbit = 'circular' (drop --set orbit=free)")
-    m, n = mdl.index, mdl.n_coordinates
+    n = mdl.n_coordinates
     names = mdl.state[:n]
     if sat.E1 == 0 and sat.E2 == 0:
         # nothing holds the balloon against drag: the root finder would wander off
         raise NoEquilibrium("E1 = E2 = 0 N/mm^2: no tether holds the balloon, so drag carries "
                             "it away and there is no equilibrium; allowed range for an "
                             "equilibrium: E1 > 0 or E2 > 0")
-    p = parameter_vector(sat, model)
     guess = _checked_guess(guess, n)
     if guess is not None and len(guess) == n:
         g = np.array(guess, float)
@@ -198,31 +202,7 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
         start = dict(zip(("delta_x", "delta_y", "theta"),
                          guess if guess is not None else (sat.initial[0], sat.initial[1], 0.0)))
         g = np.array([float(start.get(k, 0.0)) for k in names])
-    d = np.empty(2 * n)
-    J = np.empty((2 * n, 2 * n))
-
-    def f(q):
-        KERNELS[m].rhs(0.0, np.concatenate([q, np.zeros(n)]), p, d)
-        return d[n:].copy()
-
-    def jac(q):
-        jacobian(m, 0.0, np.concatenate([q, np.zeros(n)]), p, J)
-        return J[n:, :n].copy()
-
-    sol = root(f, g, jac=jac, method="hybr", options={"xtol": 1e-14})
-    if n > 3 and float(np.max(np.abs(f(sol.x)))) > RESIDUAL_TOL:
-        # a neutral coordinate (yaw of a boom symmetric about its axis) makes the
-        # Jacobian singular: Levenberg-Marquardt still converges
-        sol = root(f, g, jac=jac, method="lm", options={"xtol": 1e-15, "ftol": 1e-15})
-    q = sol.x
-    res = float(np.max(np.abs(f(q))))
-    if not sol.success and res > RESIDUAL_TOL:
-        why = " ".join(str(sol.message).split())  # scipy's message spans lines
-        if sat.CD == 0:  # the trailing equilibrium is drag against the tethers' pull
-            why = ("CD = 0: without drag nothing holds the balloon trailing in the wake, so "
-                   "there is no trailing equilibrium to find (" + why + ")")
-        raise NoEquilibrium(f"no equilibrium found from guess {tuple(float(x) for x in g)}: {why} "
-                           f"(residual {res:.3g})")
+    q, res = steady_coordinates(sat, model, g)
     i_th = names.index("theta")
     q[i_th] = float(wrap(q[i_th]))
     if "psi" in names:

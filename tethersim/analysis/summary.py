@@ -8,6 +8,7 @@ import numpy as np
 from tethersim.analysis.classify import UNDECIDED
 from tethersim.analysis.metrics import min_run_orbits, steady_state_mean, wrap
 from tethersim.analysis.outcome import Outcome, finite_prefix, outcome
+from tethersim.analysis.tethers import loads_summary
 from tethersim.engine.result import SimResult
 
 
@@ -54,6 +55,8 @@ def run_summary(res: SimResult, out: Outcome | None = None) -> dict:
         "settling time [h]": m.settling_time / 3600 if m else nan,
         "largest tension tether 1 [N]": float(tension[0]),
         "largest tension tether 2 [N]": float(tension[1]),
+        # peak, snap, safety factor and slack on the metrics grid (analysis/tethers.py)
+        **loads_summary(res),
         "largest force on dx [N]": float(peak[biggest[0], 0]),
         "largest force on dx: family": lay.families[biggest[0]],
         "largest force on dy [N]": float(peak[biggest[1], 1]),
@@ -65,6 +68,8 @@ def run_summary(res: SimResult, out: Outcome | None = None) -> dict:
         "final delta_x [m]": float(res.x[n - 1]),
         "final delta_y [m]": float(res.y[n - 1]),
         "status": res.status,
+        # where it started: the satellite's initial state, or its equilibrium (engine/start.py)
+        "start": res.start,
         # the stopping limit that ended the run, and its located time (engine/events.py)
         **({"event": res.event, "event time [s]": res.event_time} if res.event else {}),
         **out_of_plane_summary(res),

@@ -25,10 +25,12 @@ import warnings
 from tethersim._version import __version__
 from tethersim.cli import (
     compare,
+    design,
     equilibrium,
     feasibility,
     forces,
     headlines,
+    mc,
     options,
     report,
     run,
@@ -40,13 +42,14 @@ from tethersim.cli import (
 
 # in the order of `tethersim --help`
 COMMANDS = (run, validate, show, equilibrium, compare, forces, sweep, tune, report, headlines,
-            feasibility)
+            feasibility, design, mc)
 # the options that set a command's run sizes: simulate()'s size refusal, which names its
 # own arguments, names these instead (a command without --steps never blames --steps)
 SIZE_OPTIONS = {"run": "--periods/--steps", "compare": "--periods/--steps",
                 "forces": "--periods/--steps", "validate": "--periods", "sweep": "--periods",
                 "tune": "--periods", "report": "--periods", "headlines": "--periods",
-                "feasibility": "--periods/--max-lifetime"}
+                "feasibility": "--periods/--max-lifetime",
+                "design": "--periods/--max-lifetime", "mc": "--periods/--max-lifetime"}
 
 
 def build_parser() -> options.Parser:

@@ -91,6 +91,16 @@ def rtol_float(text: str) -> float:
     return v
 
 
+def atol_float(text: str) -> float:
+    """An absolute tolerance in the engine's ATOL_RANGE (argparse ``type``)."""
+    from tethersim.engine.arguments import ATOL_RANGE
+    v = positive_float(text)
+    if not ATOL_RANGE[0] <= v <= ATOL_RANGE[1]:
+        raise argparse.ArgumentTypeError(f"allowed range {ATOL_RANGE[0]:g} <= atol <= "
+                                         f"{ATOL_RANGE[1]:g}, got {text}")
+    return v
+
+
 # --- option groups ---------------------------------------------------------------------------
 def add_satellite(parser, *, optional_default: str | None = None, note: str = "") -> None:
     """The positional satellite: a preset name or a .toml path."""
@@ -140,6 +150,25 @@ def models(args) -> tuple:
         raise UsageError(f"--{exc}") from None
 
 
+def add_atol(parser) -> None:
+    """``--atol X``: the adaptive and implicit schemes' absolute tolerance (run only)."""
+    parser.add_argument("--atol", type=atol_float, default=1e-12,
+                        help="absolute tolerance of the adaptive and implicit schemes [m, rad, "
+                             "m/s, rad/s] (default 1e-12); real lines at rest need 1e-10 or "
+                             "more (their force's rounding level: docs/tethers.md)")
+
+
+def add_start(parser) -> None:
+    """``--start MODE``: the satellite's initial state, its equilibrium, or auto
+    (tethersim.engine.start)."""
+    from tethersim.engine.start import START_MODES
+    parser.add_argument("--start", choices=START_MODES, default="auto",
+                        help="where the run starts: given (the satellite's initial state), "
+                             "equilibrium (its steady configuration, rates zero), or auto "
+                             "(default: equilibrium when a tether is a real line, EA >= 100 N; "
+                             "else given); docs/tethers.md")
+
+
 def add_quiet(parser) -> None:
     """``--quiet``: no progress bars or progress lines."""
     parser.add_argument("--quiet", action="store_true", help="no progress bars")
@@ -152,6 +181,11 @@ def add_overrides(parser) -> None:
                              "in N/mm^2, altitude in km, else SI); repeatable")
     parser.add_argument("--scale", action="append", metavar="NAME=FACTOR", default=[],
                         help="multiply a parameter, e.g. --scale c1=10 --scale c2=10; repeatable")
+    parser.add_argument("--tethers", metavar="MATERIAL:DIAMETER_MM[:KNOCKDOWN]", default=None,
+                        help="both tethers made of a real line (after --set, so rest lengths "
+                             "set there count): E1, E2 = EA, c1, c2 from its loss factor, Fb1, "
+                             "Fb2 = breaking load; materials: docs/tethers.md, e.g. "
+                             "--tethers kevlar49:1")
     parser.add_argument("--allow-implausible", action="store_true",
                         help="run values outside the plausible ranges (docs/limits.md); "
                              "the summary lists them")
@@ -227,6 +261,9 @@ def satellite(args):
     sat = resolve(args.satellite, getattr(args, "allow_implausible", False))
     sat = apply_overrides(sat, getattr(args, "set", None) or (),
                           getattr(args, "scale", None) or ())
+    if getattr(args, "tethers", None):
+        from tethersim.cli.overrides import with_tethers_option
+        sat = with_tethers_option(sat, args)
     from tethersim.cli.orbit import orbit_of_models
     return orbit_of_models(args, sat)
 

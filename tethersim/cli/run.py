@@ -1,6 +1,6 @@
 """``tethersim run``: simulate one satellite; write time series, plots and a summary.
 
-Writes timeseries.csv, timeseries.nc (NetCDF), the theta/delta_x/delta_y/overview
+Writes timeseries.csv, timeseries.nc (NetCDF), the theta/delta_x/delta_y/overview/tensions
 PNGs and summary.json into ``results/<satellite>/`` (or ``--out``).  summary.json
 also records whose results the folder holds, so a run of another satellite (or
 other --set/--scale, or another model) into the same folder is refused unless
@@ -24,7 +24,7 @@ def add_parser(sub) -> None:
     p = sub.add_parser(
         "run", help=HELP,
         description="Simulate a satellite; write timeseries.csv, timeseries.nc (NetCDF), "
-                    "theta/delta_x/delta_y/overview PNGs and summary.json.")
+                    "theta/delta_x/delta_y/overview/tensions PNGs and summary.json.")
     options.add_satellite(p)
     options.add_periods(p, default=None,
                         help=f"orbits to simulate (default {PERIODS:g}); with --until reentry "
@@ -35,6 +35,8 @@ def add_parser(sub) -> None:
                         "at most --periods orbits")
     options.add_integrator(p)
     options.add_model(p, "; see docs/errata.md")
+    options.add_atol(p)
+    options.add_start(p)
     options.add_out(p, "results/<satellite>, e.g. results/satI")
     p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     p.add_argument("--no-check", action="store_true",
@@ -62,7 +64,7 @@ def run(args) -> int:
     from tethersim.cli import preflight
     from tethersim.engine.simulate import simulate
     from tethersim.output.plots.run import FILE_NAMES as PLOT_NAMES
-    from tethersim.output.plots.run import plot_result
+    from tethersim.output.plots.run import TENSIONS_FILE, plot_result
     from tethersim.output.tables import write_netcdf, write_timeseries
 
     sat = options.satellite(args)
@@ -73,13 +75,13 @@ def run(args) -> int:
     out = Path(args.out) if args.out else options.default_out(args)
     preflight.check_run_size(args, how, "--periods/--steps", check=not args.no_check)
     plots = () if args.no_plots else (
-        "overview.png", "altitude.png", *(f"{n}.png" for n in PLOT_NAMES.values()))
+        "overview.png", "altitude.png", TENSIONS_FILE, *(f"{n}.png" for n in PLOT_NAMES.values()))
     preflight.check_files(out, ("timeseries.csv", "timeseries.nc", "summary.json", *plots))
     record = options.claim_folder(out, args, sat)
     res = simulate(sat, periods=args.periods, steps=how.steps, method=how.method,
-                   model=args.model, rtol=how.rtol, locate_switches=how.locate,
+                   model=args.model, rtol=how.rtol, atol=args.atol, locate_switches=how.locate,
                    samples=how.samples, check=not args.no_check,
-                   progress=options.progress(args))
+                   progress=options.progress(args), start=args.start)
     options.interrupted_early(res)
     write_timeseries(res, out / "timeseries.csv")
     write_netcdf(res, out / "timeseries.nc")

@@ -126,6 +126,10 @@ class SimResult:
         the output grid asked for is coarser; the output is every k-th of them.
         Metrics (:func:`tethersim.outcome`) use these, so they do not depend on
         the output sampling.  None when the output grid is the metrics grid.
+    start : str
+        ``"given"``: the run started from ``satellite.initial`` as set;
+        ``"equilibrium"``: from the satellite's equilibrium (simulate's
+        ``start``), which ``satellite.initial`` then holds.
 
     The series of any state by name: ``res.series("theta")``; shortcuts ``x``,
     ``y``, ``theta``, ``xdot``, ``ydot``, ``thetadot`` (δx, δy, θ and rates).
@@ -155,6 +159,8 @@ class SimResult:
     # the integrator's dense output on the metrics grid when the output grid is coarser
     fine_t: np.ndarray | None = field(default=None, repr=False)
     fine_states: np.ndarray | None = field(default=None, repr=False)
+    # "given" (Satellite.initial as set) or "equilibrium" (engine/start.py): where it started
+    start: str = "given"
 
     # --- arrays --------------------------------------------------------------
     @property
@@ -291,10 +297,14 @@ class SimResult:
         return family_forces_series(self.layout.index, self.air, self.t, self.states,
                                     self.parameters)
 
+    def tether_margins(self) -> np.ndarray:
+        """λ_j − l_j0 [m] of tethers 1 and 2 (n, 2): taut when positive (the model's kernel)."""
+        return tether_margin_series(self.layout.index, self.states, self.parameters)
+
     def tether_tensions(self) -> np.ndarray:
         """Spring tension of tethers 1 and 2 (n, 2) [N], zero while slack (Eqs 3.35-3.36)."""
         s = self.satellite
-        g = tether_margin_series(self.layout.index, self.states, self.parameters)
+        g = self.tether_margins()
         return np.column_stack([s.E1 * np.maximum(g[:, 0] / s.l10, 0),
                                 s.E2 * np.maximum(g[:, 1] / s.l20, 0)])
 

@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 import time
 import warnings
+from dataclasses import replace
 
 import numpy as np
 from tqdm.auto import tqdm
@@ -36,6 +37,7 @@ from tethersim.engine.integrators.rk4 import rk4_run
 from tethersim.engine.integrators.select import specialised
 from tethersim.engine.linearise import rk4_amplification
 from tethersim.engine.result import SimResult
+from tethersim.engine.start import atol_floor, atol_hint, check_start_mode, start_satellite
 from tethersim.model.inputs import air_vector, initial_model_state, parameter_vector
 from tethersim.model.registry import DEFAULT_MODEL, model_for_orbit, model_index
 from tethersim.model.satellite import Satellite
@@ -75,7 +77,8 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
              method: str = "adaptive", model: str = DEFAULT_MODEL, *,
              rtol: float = 1e-10, atol: float = 1e-12, locate_switches: bool | None = None,
              samples: int | None = None, check: bool = False,
-             progress: bool | None = None, step_warning: bool = True) -> SimResult:
+             progress: bool | None = None, step_warning: bool = True,
+             start: str = "auto") -> SimResult:
     """Integrate a satellite for ``periods`` orbits with one model.
 
     Parameters
@@ -112,6 +115,12 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
     step_warning : bool, optional
         RK4: warn (``RK4StepWarning``) when the step exceeds what the
         linearised system supports.
+    start : {"auto", "given", "equilibrium"}, optional
+        The satellite's ``initial`` state, its equilibrium in this model (rates
+        zero), or (default) the equilibrium for real lines (EA >= 100 N), else the
+        given state; a given state far from any physical one is refused
+        (tethersim.engine.start).  The result's ``satellite.initial`` is where
+        the run started, ``start`` says which.
 
     Returns
     -------
@@ -151,29 +160,33 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
                         f"(the method's default)")
     if method not in METHODS:
         raise ValueError(f"method = {method!r}: allowed values {', '.join(METHODS)}")
+    check_start_mode(start)
     check_scheme(sat, method)
     model = model_for_orbit(model, sat.orbit)  # orbit = "free": the model's free twin
+    # the run's own satellite: its initial state is where the run starts (engine/start.py)
+    sat, start = start_satellite(sat, model, start)
     if method == "rk4":
         steps = check_positive("steps", steps if steps is not None
                                 else max(1, round(STEPS_PER_PERIOD * periods)), integer=True)
         locate = False if locate_switches is None else bool(locate_switches)
         run = _run_rk4(sat, periods, steps, model, locate, progress, step_warning)
-        return estimate_error(run) if check else run
-    rtol = check_range("rtol", rtol, RTOL_RANGE)
-    atol = check_range("atol", atol, ATOL_RANGE)
-    if samples is not None:
-        n_out = check_positive("samples", samples, integer=True)
-    elif steps is not None:
-        n_out = check_positive("steps", steps, integer=True)
     else:
-        n_out = max(2, round(SAMPLES_PER_PERIOD * periods))
-    locate = True if locate_switches is None else bool(locate_switches)
-    # the metrics are computed on a grid fine enough for the pitch and tether modes
-    # (METRIC_SAMPLES_PER_PERIOD), whatever output the caller asked for: the output is
-    # every refine-th sample of it, exactly the grid asked for (docs/metrics.md)
-    refine = max(1, math.ceil(METRIC_SAMPLES_PER_PERIOD * periods / n_out))
-    run = _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress, refine,
-                        scheme=method)
+        rtol = check_range("rtol", rtol, RTOL_RANGE)
+        atol = check_range("atol", atol, ATOL_RANGE)
+        if samples is not None:
+            n_out = check_positive("samples", samples, integer=True)
+        elif steps is not None:
+            n_out = check_positive("steps", steps, integer=True)
+        else:
+            n_out = max(2, round(SAMPLES_PER_PERIOD * periods))
+        locate = True if locate_switches is None else bool(locate_switches)
+        # the metrics are computed on a grid fine enough for the pitch and tether modes
+        # (METRIC_SAMPLES_PER_PERIOD), whatever output the caller asked for: the output is
+        # every refine-th sample of it, exactly the grid asked for (docs/metrics.md)
+        refine = max(1, math.ceil(METRIC_SAMPLES_PER_PERIOD * periods / n_out))
+        run = _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress, refine,
+                            scheme=method)
+    run = replace(run, start=start) if start != "given" else run
     return estimate_error(run) if check else run
 
 
@@ -200,9 +213,10 @@ def estimate_error(run: SimResult) -> SimResult:
         A copy of ``run`` whose error_estimate holds |final state - final state
         of the rerun| in every generalized coordinate of the model, in its
         layout order (``SimResult.errors`` names them): RK4 reruns at half the
-        step, the adaptive method at rtol/100 and atol/100.  ``run`` itself (unchanged) when it did
-        not end with status "ok", when the rerun fails, or when it has no
-        record of its length (``periods``).
+        step, the adaptive method at rtol/100 and atol/100 (real lines: at least the
+        atol their force's rounding allows, tethersim.engine.start.atol_floor).
+        ``run`` itself (unchanged) when it did not end with status "ok", when the
+        rerun fails, or when it has no record of its length (``periods``).
     """
     if run.status != "ok" or run.periods is None:
         return run
@@ -211,13 +225,12 @@ def estimate_error(run: SimResult) -> SimResult:
                         run.locate_switches, False, False)
     else:
         fine = _run_adaptive(run.satellite, run.periods, run.t.size - 1, run.model,
-                             run.rtol / 100, run.atol / 100, run.locate_switches, False,
-                             scheme=run.method)
+                             run.rtol / 100, max(run.atol / 100, atol_floor(run.satellite)),
+                             run.locate_switches, False, scheme=run.method)
     return _with_error(run, fine)
 
 
 def _with_error(run: SimResult, fine: SimResult) -> SimResult:
-    from dataclasses import replace
     if fine.status != "ok":
         return run
     # every generalized coordinate (the 3-D layout's θ is the fifth, φ and ψ beside it; a
@@ -354,7 +367,7 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
                 if st != STATUS_OK:
                     status = "diverged" if st == 1 else "failed"
                     message = {1: "state became non-finite", 2: "step size became too small",
-                               3: "too many steps"}[st] + f" at t = {t:.6g} s"
+                               3: "too many steps"}[st] + f" at t = {t:.6g} s" + atol_hint(sat, atol)
                     break
                 if t >= t_end:
                     break

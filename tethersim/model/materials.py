@@ -31,8 +31,23 @@ MATERIALS = {
 # material damping of such lines: loss factor of order 0.01-0.05 (Cosmo & Lorenzini,
 # Tethers in Space Handbook, 3rd ed., 1997); the low end, as the data sheets give none
 LOSS_FACTOR = 0.01
+# the largest failure strain (strength / E) of the table's fibres: no real line stretches
+# further before it breaks (engine/start.py refuses a start of a stiff line beyond it)
+MAX_FAILURE_STRAIN = max(m.strength / m.E for m in MATERIALS.values())
+# EA [N] from which a tether is a real line, not a rubber band: 100 N is a modulus of
+# 100 MPa on the thesis's 1 mm^2, ten times the stiffest rubber and 1/750 of the softest
+# fibre of the table (a 0.1 mm Dyneema line has EA ~ 900 N; the thesis's tethers
+# 0.004-0.06 N).  Such a line barely stretches, so a run starts at its equilibrium by
+# default (tethersim.engine.start) and a start that strains it past MAX_FAILURE_STRAIN
+# is refused.
+REAL_TETHER_EA = 100.0
 KNOCKDOWN_RANGE = (0.1, 1.0)
 DIAMETER_RANGE = (1e-5, 0.1)  # m: a 10 µm filament to a 10 cm rope
+
+
+def real_tethers(sat) -> tuple:
+    """The tethers (1, 2) of ``sat`` whose EA is at least :data:`REAL_TETHER_EA`."""
+    return tuple(j for j, ea in ((1, sat.E1), (2, sat.E2)) if ea >= REAL_TETHER_EA)
 
 
 def material(name: str) -> Material:
@@ -97,3 +112,47 @@ def tether_parameters(name: str, diameter: float, l0: float, mass: float,
             "breaking_load": knockdown * mat.strength * area,
             "mass_per_length": mat.density * area,
             "axial_period": 2 * math.pi * math.sqrt(mass / k)}
+
+
+def with_tethers(sat, name: str, diameter: float, tethers=(1, 2), knockdown: float = 1.0,
+                 loss_factor: float = LOSS_FACTOR):
+    """``sat`` with tethers made of a real line: E_j, c_j and Fb_j of each tether j.
+
+    The rest lengths stay the satellite's (set them first); the damping is taken at the
+    axial frequency of the balloon's reduced mass against the boom on each line.
+
+    Parameters
+    ----------
+    sat : tethersim.Satellite
+        The satellite.
+    name : str
+        A key of :data:`MATERIALS`.
+    diameter : float
+        Line diameter [m].
+    tethers : tuple of int, optional
+        Which tethers (1, 2 or both).
+    knockdown, loss_factor : float, optional
+        As :func:`tether_parameters`.
+
+    Returns
+    -------
+    tethersim.Satellite
+        A copy with ``E1``/``E2`` = EA [N], ``c1``/``c2`` and ``Fb1``/``Fb2`` set.
+
+    Examples
+    --------
+    >>> import tethersim as ts
+    >>> sat = ts.with_tethers(ts.load_preset("satI"), "kevlar49", 1e-3)
+    >>> round(sat.E1), round(sat.Fb2)
+    (87965, 2356)
+    """
+    if not tethers or any(j not in (1, 2) for j in tethers):
+        raise ValueError(f"tethers = {tethers!r}: allowed 1, 2 or both")
+    boom = sat.m1 + sat.m2
+    mass = sat.m3 * boom / (sat.m3 + boom)  # the balloon against the boom
+    changes = {}
+    for j in sorted(set(tethers)):
+        t = tether_parameters(name, diameter, sat.l10 if j == 1 else sat.l20, mass,
+                              knockdown, loss_factor)
+        changes.update({f"E{j}": t["EA"], f"c{j}": t["c"], f"Fb{j}": t["breaking_load"]})
+    return sat.replace(**changes)

@@ -118,10 +118,10 @@ def stiffness_problems(sat) -> list:
     from .params import PARAMETERS
     per_edge = PARAMETERS["E1"].factor  # N per N/mm^2 (1: the 1 mm^2 cross-section)
     m = _balloon_mass(sat)
+    stiff = stiff_tethers(sat)
     for E, c, l0, i in ((sat.E1, sat.c1, sat.l10, 1), (sat.E2, sat.c2, sat.l20, 2)):
-        # spring k = E / l0 (E is modulus x 1 mm^2, a force): period 2 pi sqrt(m l0 / E)
-        e_max = m * l0 * (2 * math.pi / T_TETHER_MIN) ** 2
-        if E > e_max:
+        e_max = _stiff_modulus(sat, l0)
+        if i in stiff:
             period = 2 * math.pi * math.sqrt(m * l0 / E)
             out.append(f"E{i} = {E / per_edge:g} N/mm^2: tether {i} would oscillate with period "
                        f"{period:.3g} s, under the {T_TETHER_MIN:g} s the explicit schemes "
@@ -132,6 +132,23 @@ def stiffness_problems(sat) -> list:
                        f"{T_DAMPER_MIN:g} s the explicit schemes resolve (c{i} <= {c_max:.4g} "
                        f"N s/m for m3)")
     return out
+
+
+def _stiff_modulus(sat, l0: float) -> float:
+    """The modulus x 1 mm^2 [N] above which a tether of rest length l0 is stiff: spring
+    k = E / l0 (E a force), axial period 2 pi sqrt(m l0 / E) under T_TETHER_MIN."""
+    return _balloon_mass(sat) * l0 * (2 * math.pi / T_TETHER_MIN) ** 2
+
+
+def stiff_tethers(sat) -> tuple:
+    """The tethers (1, 2) whose axial period is under ``T_TETHER_MIN``: real lines.
+
+    What the explicit schemes cannot resolve (:func:`stiffness_problems`): a
+    fibre line (docs/tethers.md) oscillates axially in a fraction of a second,
+    the thesis's tethers in about a minute.
+    """
+    return tuple(i for E, l0, i in ((sat.E1, sat.l10, 1), (sat.E2, sat.l20, 2))
+                 if E > _stiff_modulus(sat, l0))
 
 
 def _rate_problems(sat, reach_limit: float) -> list:

@@ -95,7 +95,7 @@ def _columns(res: SimResult) -> list:
     """[(name, values, unit)] of a run's time series: t, the integrated state (and the
     COM orbit of a circular-orbit model, its closed form: SimResult.orbit), then, for a
     free orbit, the derived altitude, osculating elements and air densities
-    (tethersim.analysis.free_orbit)."""
+    (tethersim.analysis.free_orbit), then the tension of tethers 1 and 2."""
     from tethersim.analysis.free_orbit import free_orbit_series  # numba: only when writing one
 
     lay = res.layout
@@ -104,7 +104,10 @@ def _columns(res: SimResult) -> list:
     if held_circle(lay.index):
         orbit = res.orbit
         cols += [(n, orbit[:, i], u) for i, (n, u) in enumerate(zip(ORBIT_COLUMNS, ORBIT_UNITS))]
-    return cols + free_orbit_series(res)
+    # the tethers' tensions, the model's own (SimResult.tether_tensions; zero while slack)
+    tension = res.tether_tensions()
+    return (cols + free_orbit_series(res)
+            + [(f"tension_{j + 1}", tension[:, j], "N") for j in range(2)])
 
 
 def write_timeseries(res: SimResult, path) -> Path:
@@ -124,7 +127,8 @@ def write_timeseries(res: SimResult, path) -> Path:
         circular-orbit model the COM's X, Y [m], VX, VY [m/s]; for a free orbit
         the COM's altitude [m], osculating semi_major_axis [m] and eccentricity [1]
         and the air density at each body, rho_tip_mass, rho_bus, rho_balloon
-        [kg/m^3] (tethersim.analysis.free_orbit).
+        [kg/m^3] (tethersim.analysis.free_orbit); last the tethers' tensions
+        tension_1, tension_2 [N] (the model's spring tension, zero while slack).
 
     Examples
     --------

@@ -179,3 +179,13 @@ from tools.docnumbers import figures_tolerance as _tolerance  # noqa: E402
 
 QUANTITIES.update(_tolerance.QUANTITIES)
 FIGURES += _tolerance.FIGURES
+
+from tools.docnumbers import figures_real as _real  # noqa: E402
+
+QUANTITIES.update(_real.QUANTITIES)
+FIGURES += _real.FIGURES
+
+from tools.docnumbers import figures_mc as _mc  # noqa: E402
+
+QUANTITIES.update(_mc.QUANTITIES)
+FIGURES += _mc.FIGURES

@@ -12,6 +12,7 @@ import numpy as np
 
 from tethersim.experiments.sweep import SweepSpec
 from tethersim.experiments.sweep.convergence import class_convergence
+from tethersim.experiments.sweep.plan import CLASS_RTOL, DEFAULT_RTOL
 from tethersim.model.presets import load_preset
 from tools.docnumbers.check import Figure
 
@@ -43,10 +44,23 @@ def _key(grid: str, rtol: float, column: str) -> str:
     return f"tolerance_{grid}_{rtol:g}_{column}"
 
 
+def loosest_unchanged() -> float:
+    """The loosest tolerance of the study at which no grid changed a class."""
+    return max(r for r in RTOLS if all(study(g)[r]["class_changes"] == 0 for g in GRIDS))
+
+
 QUANTITIES = {_key(g, r, c): (lambda g=g, r=r, c=c: study(g)[r][c])
               for g in GRIDS for r in RTOLS[1:] for c in COLUMNS}
+QUANTITIES.update(class_rtol=lambda: CLASS_RTOL, default_rtol=lambda: DEFAULT_RTOL,
+                  loosest_unchanged=loosest_unchanged)
 FIGURES = [Figure(T, (_TABLE, f"| {g} | {r:g} |", *(" | ",) * i), _key(g, r, c), slow=True)
            for g in GRIDS for r in RTOLS[1:] for i, c in enumerate(COLUMNS)]
+FIGURES += [Figure(T, ("`DEFAULT_RTOL = ",), "default_rtol"),
+            Figure(T, ("`CLASS_RTOL = ",), "class_rtol"),
+            Figure(T, ("no class changes anywhere up to rtol ",), "loosest_unchanged", slow=True),
+            Figure("README.md", ("run at `CLASS_RTOL` = ",), "class_rtol"),
+            Figure("README.md", ("no class changes against ",), "default_rtol"),
+            Figure("README.md", ("9 × 9 grids up to", "rtol "), "loosest_unchanged", slow=True)]
 
 
 def table() -> str:

@@ -30,6 +30,7 @@ from tethersim.engine.simulate import (
     METRIC_SAMPLES_PER_PERIOD,
     refined_grid,
 )
+from tethersim.engine.start import start_satellite
 from tethersim.experiments.sweep.kernel import (
     COL_FIELDS,
     F_FIELDS,
@@ -75,8 +76,11 @@ def run_satellites(plan: Plan, sats: list) -> list:
     """
     periods = float(plan.periods)
     groups = {}  # (model, air vector bytes) -> (air vector, indices into sats)
+    sats = list(sats)
     for i, s in enumerate(sats):
         model = model_for_orbit(plan.model, s.orbit)  # a free orbit runs the free twin
+        # where simulate() starts it: as given, or a real line's equilibrium (engine/start.py)
+        sats[i] = s = start_satellite(s, model)[0]
         air = air_vector(s, periods * s.period)  # as simulate() builds it
         groups.setdefault((model, air.tobytes()), (air, []))[1].append(i)
     records = {}

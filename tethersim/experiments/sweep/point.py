@@ -63,7 +63,8 @@ def run_point(spec: SweepSpec, k: int) -> dict:
     out = outcome(res, tol=spec.tol)
     m = out.metrics
     return record(STATUS[res.status], res.nfev,
-                  rk4_amplification(sat, thesis_step, spec.model), out.stability_class,
+                  # at the run's start (res.satellite: a real line's equilibrium, engine/start.py)
+                  rk4_amplification(res.satellite, thesis_step, spec.model), out.stability_class,
                   None if not out.counts else dict(
                       mean_pitch=m.mean_pitch, steady_state_pitch=m.steady_state_pitch,
                       settling_time=m.settling_time, tumbled=int(m.tumbled),

@@ -1,6 +1,6 @@
 """PNG plots of a result: θ, δx, δy against time (orbits below, hours above);
 for a 3-D model also roll φ, yaw ψ and the balloon's out-of-plane δz; for a free orbit the
-altitude.
+altitude; for every run the tethers' tensions (tensions.png).
 
 The pitch panel marks θ_ss, the thesis's ±0.05 rad band about it and the settling
 time.  The balloon's taut-tether bounce (period ~70-80 s) is far faster than the
@@ -101,7 +101,8 @@ def _hours_on_top(ax, period):
 
 
 def plot_result(res: SimResult, out_dir, prefix: str = "") -> list:
-    """Write theta.png, delta_x.png, delta_y.png and overview.png; return the paths.
+    """Write theta.png, delta_x.png, delta_y.png, overview.png and tensions.png; return
+    the paths.
 
     A 3-D model adds roll.png, yaw.png and delta_z.png (and their overview panels);
     a free-orbit model adds altitude.png (:func:`plot_altitude`).
@@ -162,9 +163,49 @@ def plot_result(res: SimResult, out_dir, prefix: str = "") -> list:
     save_figure(fig_all, p, dpi=110, pil_kwargs=FAST_PNG)
     plt.close(fig_all)
     paths.append(p)
+    paths.append(plot_tensions(res, out_dir / f"{prefix}{TENSIONS_FILE}"))
     if res.layout.orbit == "free":
         paths.append(plot_altitude(res, out_dir / f"{prefix}altitude.png"))
     return paths
+
+
+TENSIONS_FILE = "tensions.png"
+
+
+def plot_tensions(res: SimResult, path) -> Path:
+    """Write the tethers' tensions [N] against time, with each breaking load that is set,
+    peak and snap tension and slack fraction in the legend (analysis/tethers.py); return
+    the path."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from tethersim.analysis.tethers import metrics_grid, tether_loads
+
+    run = metrics_grid(res)
+    sat, period = res.satellite, res.satellite.period
+    tension = run.tether_tensions()
+    fig, ax = plt.subplots(figsize=(10, 4))
+    fig.subplots_adjust(left=0.09, right=0.97, top=0.78, bottom=0.13)
+    for ld, color, fb in zip(tether_loads(res), ("tab:blue", "tab:orange"), (sat.Fb1, sat.Fb2)):
+        j = ld.tether
+        snap = f", snap {ld.snap:.3g} N" if math.isfinite(ld.snap) else ""
+        ax.plot(run.t / period, tension[:, j - 1], lw=0.8, color=color,
+                label=f"tether {j}: peak {ld.peak:.3g} N{snap}, slack "
+                      f"{100 * ld.slack_fraction:.3g} % of the time")
+        if fb > 0:
+            ax.axhline(fb, color=color, ls="--", lw=0.8,
+                       label=f"Fb{j} = {fb:.4g} N (safety factor {ld.safety_factor:.3g})")
+    ax.set_xlabel("time [orbits]")
+    ax.set_ylabel("tension [N]")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="upper right", fontsize=8)
+    _hours_on_top(ax, period)
+    ax.set_title(f"{sat.name}: tether tensions ({run.t.size} samples)\n{res.label}", fontsize=9)
+    path = Path(path)
+    save_figure(fig, path, dpi=120, pil_kwargs=FAST_PNG)
+    plt.close(fig)
+    return path
 
 
 def plot_altitude(res: SimResult, path) -> Path:

@@ -1,0 +1,293 @@
+"""tethersim against heyoka.py (Taylor integrator, LLVM, events, SIMD batches), at equal accuracy.
+
+The same model: the "derived" planar circular-orbit equations, rebuilt from the
+derivation (derive/: the sympy q̈ and force families) and handed to heyoka with
+``heyoka.from_sympy``; each tether's springs and dampers are gated by a runtime
+parameter (taut 1, slack 0) that a heyoka event g = λ_j − l_j0 flips, as tethersim's
+loops switch at the located crossing.  Both integrate the six model states from the
+same start with the same parameters.
+
+Work-precision: each tool runs at several tolerances; the error of a run is its final
+state against a reference (tethersim DOP853 at rtol 1e-13, checked against heyoka at
+tol 1e-15), as max_i |Δy_i| / max(1, |y_i|).  The ratio at equal accuracy is heyoka's
+CPU time interpolated (log-log) to tethersim's error at its default tolerance, over
+tethersim's time there: above 1, tethersim is faster.  Times are thread CPU time, best of
+interleaved repeats, in this one process; both sides write the same output grid (200
+samples per orbit: the metrics grid every simulate() run computes).
+
+Sweeps: 64 points (an 8 × 8 grid of E1 and E2 around SatI's band), 5 orbits:
+tethersim's plan of many (compiled blocks on 1 thread and every core, full records:
+metrics, class, force peaks) against heyoka's batch integrator (``taylor_adaptive_batch``,
+``heyoka.recommended_simd_size()`` points per SIMD batch, per-lane events) writing each
+point's states on the same grid, at the tolerance whose error matches tethersim's.
+"""
+from __future__ import annotations
+
+import math
+import os
+import time
+from concurrent.futures import ThreadPoolExecutor
+from functools import cache
+
+import numpy as np
+from timing import cpu_clock, interleave
+
+CASES = {  # name -> (preset, changes): the bench's three single-run cases
+    "SatI preset start": ("satI", {}),
+    "SatI on its trail": ("satI", {"initial": (28.9, 0.0, 0.0, 0.0, 0.0, 0.0)}),
+    "SatII preset start": ("satII", {}),
+}
+PERIODS = 50
+TS_RTOLS = (1e-8, 1e-9, 1e-10, 1e-11, 1e-12)
+HY_TOLS = (1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13, 1e-14)
+DEFAULT_RTOL = 1e-10  # simulate()'s default
+SAMPLES = 200  # per orbit: the metrics grid
+SWEEP_E1 = np.linspace(0.002, 0.006, 8)  # N (E x 1 mm^2)
+SWEEP_E2 = np.linspace(0.03, 0.055, 8)
+SWEEP_PERIODS = 5
+SWEEP_RTOL = 1e-9  # the sweeps' default
+
+
+@cache
+def symbolic(model: str = "derived"):
+    """(q̈ with the summed families gated by τ1, τ2, tether gaps λ_j − l_j0, symbols)."""
+    import sympy as sp
+
+    from derive.kinematics import planar_kinematics
+    from derive.models import DEFINITIONS
+    from derive.pipeline import Q_SYMBOLS, derive
+    from derive.symbols import TETHER_LENGTHS, P, state_substitution
+    defn = next(d for d in DEFINITIONS if d.name == model)
+    dm = derive(defn)
+    kin = planar_kinematics()
+    lengths = {lam: d.subs(state_substitution()) for lam, d in kin.tether_length_defs.items()}
+    tau = sp.symbols("tau1 tau2")
+    Q = [0, 0, 0]
+    for fam in dm.families:
+        gate = 1 if not fam.tether else tau[fam.tether - 1]
+        for k in range(3):
+            Q[k] += gate * fam.Q[k]
+    qdd = [e.subs(dict(zip(Q_SYMBOLS, Q))).subs(lengths) for e in dm.qdd]
+    gaps = [sp.sympify(TETHER_LENGTHS[j]).subs(lengths) - P[f"l{j + 1}0"] for j in range(2)]
+    return qdd, gaps, tau, P
+
+
+def heyoka_integrator(sat, tol: float, batch: int | None = None, model: str = "derived"):
+    """heyoka's integrator of ``sat`` (E1, E2 as parameters 2, 3 for batches) at ``tol``."""
+    import heyoka as hy
+
+    from derive.symbols import STATE_SYMBOLS
+    from tethersim.model.inputs import initial_model_state, parameter_vector
+    from tethersim.model.registry import BY_NAME
+    qdd, gaps, tau, P = symbolic(model)
+    names = BY_NAME[model].parameters
+    num = {P[n]: float(v) for n, v in zip(names, parameter_vector(sat, model)) if n in P}
+    free = {P["E1"]: None, P["E2"]: None} if batch else {}
+    num = {k: v for k, v in num.items() if k not in free}
+    xs = hy.make_vars(*[s.name for s in STATE_SYMBOLS])
+    smap = dict(zip(STATE_SYMBOLS, xs))
+    smap.update({tau[0]: hy.par[0], tau[1]: hy.par[1]})
+    if batch:
+        smap.update({P["E1"]: hy.par[2], P["E2"]: hy.par[3]})
+    rhs = [hy.from_sympy(e.subs(num), s_dict=smap) for e in qdd]
+    g = [hy.from_sympy(e.subs(num), s_dict=smap) for e in gaps]
+    eqs = [(xs[i], xs[i + 3]) for i in range(3)] + [(xs[i + 3], rhs[i]) for i in range(3)]
+    y0 = initial_model_state(sat, model)
+    if batch is None:
+        def flip(j):
+            def cb(ta, d_sgn):
+                ta.pars[j] = 1.0 if d_sgn == hy.event_direction.positive else 0.0
+                return True
+            return cb
+        events = [hy.t_event(g[j], callback=flip(j)) for j in range(2)]
+        return hy.taylor_adaptive(eqs, list(y0), tol=tol, pars=[1.0, 1.0], t_events=events), g
+
+    def flip_lane(j):
+        def cb(ta, d_sgn, lane):
+            ta.pars[j, lane] = 1.0 if d_sgn == hy.event_direction.positive else 0.0
+            return True
+        return cb
+    events = [hy.t_event_batch(g[j], callback=flip_lane(j)) for j in range(2)]
+    state = np.repeat(np.asarray(y0, dtype=float)[:, None], batch, axis=1)
+    pars = np.ones((4, batch))
+    return hy.taylor_adaptive_batch(eqs, state, tol=tol, pars=pars, t_events=events), g
+
+
+def _taut(sat, y0, model="derived"):
+    """τ1, τ2 at the start (the run's own rule: taut when λ_j > l_j0)."""
+    import sympy as sp
+
+    from derive.symbols import STATE_SYMBOLS
+    from tethersim.model.inputs import parameter_vector
+    from tethersim.model.registry import BY_NAME
+    _, gaps, _, P = symbolic(model)
+    num = {P[n]: float(v) for n, v in zip(BY_NAME[model].parameters,
+                                            parameter_vector(sat, model)) if n in P}
+    at = dict(zip(STATE_SYMBOLS, y0))
+    return [1.0 if float(sp.sympify(gp).subs(num).subs(at)) > 0 else 0.0 for gp in gaps]
+
+
+def _error(y, ref) -> float:
+    return float(np.max(np.abs(np.asarray(y) - ref) / np.maximum(1.0, np.abs(ref))))
+
+
+def _ts_run(sat, rtol):
+    from tethersim import simulate
+    t0 = cpu_clock()
+    res = simulate(sat, PERIODS, rtol=rtol, atol=rtol * 1e-2, samples=SAMPLES * PERIODS,
+                   progress=False, check=False)
+    dt = cpu_clock() - t0
+    assert res.status == "ok", res.message
+    return dt, res.states[-1][:6]
+
+
+def _hy_run(sat, ta, y0, pars, grid):
+    ta.time = 0.0
+    ta.state[:] = y0
+    ta.pars[:] = pars
+    t0 = cpu_clock()
+    out = ta.propagate_grid(grid)
+    dt = cpu_clock() - t0
+    return dt, out[-1][-1]
+
+
+def _at_equal_error(errors, times, target) -> float:
+    """Time interpolated log-log at ``target`` error (NaN outside the measured range)."""
+    e, t = np.log(np.asarray(errors)), np.log(np.asarray(times))
+    order = np.argsort(e)
+    e, t = e[order], t[order]
+    lt = math.log(target)
+    if not e[0] <= lt <= e[-1]:
+        return math.nan
+    return float(np.exp(np.interp(lt, e, t)))
+
+
+def bench_single(rep, q, log) -> None:
+    """Work-precision of single runs: tethersim simulate() vs heyoka propagate_grid."""
+    for case, (preset, changes) in CASES.items():
+        _single(rep, case, preset, changes, q.get("slow_repeats", 5), log)
+
+
+def _single(rep, case, preset, changes, repeats, log) -> None:
+    import tethersim as ts
+    from tethersim.model.inputs import initial_model_state
+    sat = ts.load_preset(preset).replace(**changes)
+    ref = ts.simulate(sat, PERIODS, rtol=1e-13, atol=1e-15, progress=False,
+                      samples=2).states[-1][:6]
+    y0 = initial_model_state(sat, "derived")
+    pars = _taut(sat, y0)
+    grid = np.linspace(0.0, PERIODS * sat.period, SAMPLES * PERIODS + 1)
+    tas = {tol: heyoka_integrator(sat, tol)[0] for tol in HY_TOLS + (1e-15,)}
+    hy_ref = _hy_run(sat, tas[1e-15], y0, pars, grid)[1]
+    rep.check(f"heyoka ({case}) reproduces tethersim's reference final state",
+              _error(hy_ref, ref) < 1e-9, f"difference {_error(hy_ref, ref):.2g}")
+    fns = {f"ts {r:g}": (lambda r=r: _ts_run(sat, r)[0]) for r in TS_RTOLS}
+    fns.update({f"hy {t:g}": (lambda t=t: _hy_run(sat, tas[t], y0, pars, grid)[0])
+                for t in HY_TOLS})
+    times = {k: min(v) for k, v in interleave(fns, repeats).items()}
+    ts_err = {r: _error(_ts_run(sat, r)[1], ref) for r in TS_RTOLS}
+    hy_err = {t: _error(_hy_run(sat, tas[t], y0, pars, grid)[1], ref) for t in HY_TOLS}
+    for r in TS_RTOLS:
+        log(f"  {case}: tethersim rtol {r:g}: error {ts_err[r]:.2g}, "
+            f"{times[f'ts {r:g}'] * 1e3:.2f} ms")
+    for t in HY_TOLS:
+        log(f"  {case}: heyoka tol {t:g}: error {hy_err[t]:.2g}, "
+            f"{times[f'hy {t:g}'] * 1e3:.2f} ms")
+    target = ts_err[DEFAULT_RTOL]
+    hy_t = _at_equal_error(list(hy_err.values()), [times[f"hy {t:g}"] for t in HY_TOLS],
+                           target)
+    key = "heyoka_single_" + case.split()[0].lower() + "_" + case.split()[-1]
+    rep.fig(key, f"heyoka / tethersim CPU time at equal accuracy, {case}, {PERIODS} "
+                 f"orbits (error {target:.1g})", hy_t / times[f"ts {DEFAULT_RTOL:g}"], "x",
+            note=">1: tethersim faster")
+
+
+def _sweep_sats():
+    import tethersim as ts
+    sat = ts.load_preset("satI")
+    return [sat.replace(E1=float(a), E2=float(b)) for b in SWEEP_E2 for a in SWEEP_E1]
+
+
+def bench_sweep(rep, q, log) -> None:
+    """Sweep throughput: tethersim run_plan vs heyoka's SIMD batches at equal accuracy."""
+    import heyoka as hy
+
+    import tethersim as ts
+    from tethersim.experiments.sweep import Plan, run_plan
+    from tethersim.model.inputs import initial_model_state
+    sats = _sweep_sats()
+    sat0 = sats[0]
+    T = SWEEP_PERIODS * sat0.period
+    plan = Plan(periods=float(SWEEP_PERIODS), rtol=SWEEP_RTOL)
+    # the accuracy to match: tethersim's sweep tolerance at the first point
+    ref = ts.simulate(sat0, SWEEP_PERIODS, rtol=1e-13, atol=1e-15, progress=False,
+                      samples=2).states[-1][:6]
+    ts_err = _error(ts.simulate(sat0, SWEEP_PERIODS, rtol=SWEEP_RTOL,
+                                atol=SWEEP_RTOL * 1e-2, progress=False,
+                                samples=2).states[-1][:6], ref)
+    y0 = initial_model_state(sat0, "derived")
+    pars = _taut(sat0, y0)
+    grid1 = np.linspace(0.0, T, SAMPLES * SWEEP_PERIODS + 1)
+    tol = next((t for t in HY_TOLS if _error(_hy_run(
+        sat0, heyoka_integrator(sat0, t)[0], y0, pars, grid1)[1], ref) <= ts_err), HY_TOLS[-1])
+    bs = hy.recommended_simd_size()
+    ta = heyoka_integrator(sat0, tol, batch=bs)[0]
+    E = np.array([[s.E1 for s in sats], [s.E2 for s in sats]])
+    grid = np.repeat(grid1[:, None], bs, axis=1)
+
+    # one thread: process CPU time (the plan runs in a worker thread); every core: wall time
+    def heyoka_all():
+        t0 = time.process_time()
+        for i in range(0, len(sats), bs):
+            ta.set_time(0.0)
+            ta.state[:] = np.repeat(np.asarray(y0, float)[:, None], bs, axis=1)
+            ta.pars[:2] = np.array(pars)[:, None]
+            ta.pars[2:] = E[:, i:i + bs]
+            ta.propagate_grid(grid)
+        return time.process_time() - t0
+
+    def tethersim_all(workers):
+        clock = time.process_time if workers == 1 else time.perf_counter
+
+        def timer():
+            t0 = clock()
+            run_plan(plan, sats, workers=workers, progress=False)
+            return clock() - t0
+        return timer
+
+    def heyoka_threads(workers):
+        """heyoka batches on ``workers`` threads (its propagate releases the GIL)."""
+        def timer():
+            tas = [heyoka_integrator(sat0, tol, batch=bs)[0] for _ in range(workers)]
+            chunks = [list(range(i, len(sats), bs * workers)) for i in range(0, bs * workers, bs)]
+
+            def run(w):
+                t = tas[w]
+                for i in chunks[w]:
+                    t.set_time(0.0)
+                    t.state[:] = np.repeat(np.asarray(y0, float)[:, None], bs, axis=1)
+                    t.pars[:2] = np.array(pars)[:, None]
+                    t.pars[2:] = E[:, i:i + bs]
+                    t.propagate_grid(grid)
+            t0 = time.perf_counter()
+            with ThreadPoolExecutor(workers) as ex:
+                list(ex.map(run, range(workers)))
+            return time.perf_counter() - t0
+        return timer
+
+    cores = os.cpu_count() or 1
+    fns = {"ts 1": tethersim_all(1), f"ts {cores}": tethersim_all(cores), "hy 1": heyoka_all,
+           f"hy {cores}": heyoka_threads(cores)}
+    times = {k: min(v) for k, v in interleave(fns, q.get("sweep_repeats", 3)).items()}
+    n = len(sats)
+    log(f"  sweep {n} points x {SWEEP_PERIODS} orbits: heyoka tol {tol:g} (tethersim rtol "
+        f"{SWEEP_RTOL:g}: error {ts_err:.2g}), SIMD batch {bs}")
+    for k, v in times.items():
+        log(f"  {k} thread(s): {n / v:.0f} trajectories/s")
+    log(f"  (one thread: process CPU time; {cores} threads: wall time, load average "
+        f"{os.getloadavg()[0]:.1f})")
+    for w in (1, cores):
+        rep.fig(f"heyoka_sweep_{w}", f"tethersim / heyoka (batch {bs}) sweep trajectories/s, "
+                                     f"{w} thread(s), equal accuracy",
+                times[f"hy {w}"] / times[f"ts {w}"], "x", note=">1: tethersim faster; "
+                "tethersim's records include metrics, class and force peaks")
