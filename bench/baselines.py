@@ -12,13 +12,12 @@ All three are built from the same DerivedModel as the numba kernels:
   families always on, no Piecewise/Heaviside): valid for runs where both
   tethers stay taut, which the benchmark checks (no switch located by the
   numba run and λ_j > l_j0 at every output sample).
-* solve_ivp: a Python function of (t, y) for the 10-state system; the two-body
-  orbit part (4 states) is evaluated in plain Python next to the attitude RHS.
+* solve_ivp: a Python function of (t, y) for the 6-state system the engine
+  integrates (the COM orbit of a circular run is a closed form, not integrated).
 """
 from __future__ import annotations
 
 import importlib.util
-import math
 
 import numpy as np
 import sympy as sp
@@ -84,32 +83,19 @@ def make_pydy(model, length_defs, generator=None):
 
 
 def ivp_fun_lambdify(f, p):
-    """solve_ivp fun(t, y) for the 10-state system with the lambdified attitude RHS."""
+    """solve_ivp fun(t, y) for the 6-state system with the lambdified attitude RHS."""
     pl = [float(v) for v in p]
-    mu = pl[[q.name for q in PARAMETERS].index("mu")]
 
     def fun(t, y):
-        yl = y.tolist()
-        a = f(*yl[:6], *pl)
-        X, Y = yl[6], yl[7]
-        r = math.hypot(X, Y)
-        k = -mu / (r * r * r)
-        return np.array([*a, yl[8], yl[9], k * X, k * Y], dtype=float)
+        return np.array(f(*y.tolist(), *pl), dtype=float)
     return fun
 
 
 def ivp_fun_pydy(f, p):
-    """solve_ivp fun(t, y) for the 10-state system with PyDy's attitude RHS."""
-    mu = float(p[[q.name for q in PARAMETERS].index("mu")])
-    out = np.empty(10)
+    """solve_ivp fun(t, y) for the 6-state system with PyDy's attitude RHS."""
 
     def fun(t, y):
-        out[:6] = f(y[:6], t, p)
-        X, Y = y[6], y[7]
-        r = math.hypot(X, Y)
-        k = -mu / (r * r * r)
-        out[6], out[7], out[8], out[9] = y[8], y[9], k * X, k * Y
-        return out.copy()
+        return np.array(f(y, t, p), dtype=float)
     return fun
 
 
@@ -123,7 +109,7 @@ def ivp_fun_numba(derivative, p):
     pw, air = p.copy(), uniform_air()
 
     def fun(t, y):
-        dydt = np.empty(10)
+        dydt = np.empty(y.size)
         derivative(0, air, t, y, p, pw, dydt)
         return dydt
     return fun

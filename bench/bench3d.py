@@ -4,7 +4,8 @@ The C port is printed from generated/three_d.py itself (bench/pyc.py: the same
 straight-line code, in C) inside the C drivers of bench/cref.py (the RK4 and
 DOP853 ports of the engine); the numba side is the engine's own compiled loops
 for model '3d', chosen once as simulate() does.  SatI with a 5° roll and 3°
-yaw start, so the out-of-plane terms work; 16-state (12 + COM orbit).
+yaw start, so the out-of-plane terms work; 12-state (the model's own: the COM orbit is
+a closed form, integrated by neither side).
 """
 from __future__ import annotations
 
@@ -23,7 +24,6 @@ SAMPLES_PER_PERIOD = 200
 def setup(log):
     import cref
 
-    from tethersim.engine.dynamics import initial_state
     from tethersim.engine.events import event_parameters
     from tethersim.engine.integrators.dop853 import dop853_run
     from tethersim.engine.integrators.rk4 import rk4_run
@@ -39,7 +39,7 @@ def setup(log):
     src = cref.c_source_of_generated(MODEL)
     lib = cref.CRef(cref.build(src, ("-O3",), "3d"), na=m.n_state)
     p = parameter_vector(sat, MODEL)
-    y0 = initial_state(m.index, initial_model_state(sat, MODEL), sat.r0, sat.r0 * sat.omega)
+    y0 = initial_model_state(sat, MODEL)
     air = uniform_air()
     ev = event_parameters(sat, MODEL)
     rk4 = specialised(rk4_run, m.index, (air, 0, y0.copy(), 1.0, 1, 1, p, p.copy(), ev, False,
@@ -47,7 +47,7 @@ def setup(log):
     dop = specialised(dop853_run, m.index, (air, 0.0, 1.0, y0.copy(), 0.0, p, p.copy(), ev, RTOL,
                                             ATOL, True, np.empty(1), np.empty((1, y0.size)), 0,
                                             1, np.zeros(5, np.int64), math.inf))
-    log(f"model {MODEL!r}: {m.n_state} states + COM orbit; C port printed from "
+    log(f"model {MODEL!r}: {m.n_state} states; C port printed from "
         f"generated/three_d.py ({len(src.splitlines())} lines of C)")
     return dict(sat=sat, m=m, p=p, y0=y0, air=air, c=lib, rk4=rk4, dop=dop, ev=ev)
 

@@ -110,11 +110,10 @@ def per_point_path():
 
 
 def _points(spec):
-    from tethersim.engine.dynamics import initial_state
-    from tethersim.model.inputs import parameter_vector
+    from tethersim.model.inputs import initial_model_state, parameter_vector
     sats = [spec.satellite_at(k) for k in range(spec.size)]
     P = np.ascontiguousarray([parameter_vector(s, "derived") for s in sats])
-    Y0 = np.ascontiguousarray([initial_state(0, s.initial, s.r0, s.r0 * s.omega) for s in sats])
+    Y0 = np.ascontiguousarray([initial_model_state(s, "derived") for s in sats])
     return P, Y0, sats[0].period
 
 

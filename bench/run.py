@@ -8,7 +8,7 @@ with gcc -O3.  Results go to stdout (table at the end) and bench/results.json.
 
   1. one call of the generated 6-state RHS: numba (in an @njit loop) vs C (in a
      C loop) vs sympy.lambdify + numpy and PyDy (called from Python)
-  2. RK4, 50 periods in 10,000 steps, 10-state: numba rk4_run vs C
+  2. RK4, 50 periods in 10,000 steps, 6-state: numba rk4_run vs C
      (2b: simulate() with default arguments vs C, bench/engine_bench.py)
   3. DOP853 rtol 1e-10 atol 1e-12, 50 periods: numba dop853_run vs C port vs
      scipy solve_ivp(DOP853) driving the compiled RHS through a Python wrapper
@@ -147,8 +147,7 @@ def setup(rep: Report):
     from derive.kinematics import planar_kinematics
     from derive.models import BY_NAME
     from derive.pipeline import derive, to_state_symbols
-    from tethersim.engine.dynamics import initial_state
-    from tethersim.model.inputs import parameter_vector
+    from tethersim.model.inputs import initial_model_state, parameter_vector
 
     sat, what = load_satellite()
     log(f"satellite: {sat.name} ({what}); period {sat.period:.1f} s")
@@ -171,7 +170,7 @@ def setup(rep: Report):
     rep.check("generated/derived.py rhs is what derive/codegen.py prints now", current,
               "" if current else "generated/ is stale: numba and C kernels differ; run make derive")
     p = parameter_vector(sat, "derived")
-    y0 = initial_state(0, sat.initial, sat.r0, sat.r0 * sat.omega)
+    y0 = initial_model_state(sat, "derived")
     S = dict(sat=sat, model=model, length_defs=length_defs, c=lib_o3, c_native=lib_nat,
              p=p, y0=y0, setup_s={"derive": t_derive, "c_source": t_src, "gcc": t_gcc})
     # model 'derived', uniform density: its compiled loops, chosen once as simulate() does
@@ -188,7 +187,7 @@ def validate_rhs(rep: Report, S, lamb, pydy_f):
     p, y0 = S["p"], S["y0"]
     err_c, err_l, err_py, slack = 0.0, 0.0, 0.0, 0
     for _ in range(40):
-        y = y0[:6] + rng.normal(size=6) * np.array([8.0, 3.0, 0.6, 0.05, 0.05, 1e-3])
+        y = y0 + rng.normal(size=6) * np.array([8.0, 3.0, 0.6, 0.05, 0.05, 1e-3])
         d = np.empty(6)
         rhs(0.0, y, p, d)
         scale = np.abs(d[3:]).max()
@@ -223,8 +222,7 @@ def bench_rhs(rep: Report, S, q, lamb, pydy_f, pydy_gen):
 
     from generated.derived import rhs
     log("\n[1] one call of the generated 6-state RHS (generated.derived.rhs)")
-    p, y6 = S["p"], S["y0"][:6].copy()
-    y10 = S["y0"].copy()
+    p, y6 = S["p"], S["y0"].copy()
     n, eps = q["rhs_calls"], 1e-6
     pw = S["p"].copy()
     accs = {}
@@ -241,11 +239,9 @@ def bench_rhs(rep: Report, S, q, lamb, pydy_f, pydy_gen):
         "numba": loop("numba", lambda yy: nbloops.rhs6_loop(yy, p, n, eps), y6),
         "c": loop("c", lambda yy: S["c"].rhs6_loop(yy, p, n, eps), y6),
         "c_native": loop("c_native", lambda yy: S["c_native"].rhs6_loop(yy, p, n, eps), y6),
-        "numba_deriv10": loop("numba_deriv10",
-                              lambda yy: nbloops.derivative_loop(yy, p, pw, n, eps), y10),
-        "c_deriv10": loop("c_deriv10", lambda yy: S["c"].derivative_loop(yy, p, n, eps), y10),
-        "numba_deriv10_fixed": loop("numba_deriv10_fixed",
-                                    lambda yy: nbloops.derivative_fixed_loop(yy, p, n, eps), y10),
+        "numba_deriv": loop("numba_deriv",
+                            lambda yy: nbloops.derivative_loop(yy, p, pw, n, eps), y6),
+        "c_deriv": loop("c_deriv", lambda yy: S["c"].derivative_loop(yy, p, n, eps), y6),
     }, q["fast_repeats"])
     rel = abs(accs["numba"] - accs["c"]) / abs(accs["c"])
     rep.check("numba and C loops compute the same trajectory", rel < 1e-9,
@@ -255,12 +251,10 @@ def bench_rhs(rep: Report, S, q, lamb, pydy_f, pydy_gen):
     c = rep.fig("rhs.c", "C rhs (gcc -O3), per call in a C loop", median(res["c"]), "s", res["c"])
     cn = rep.fig("rhs.c_native", "C rhs (gcc -O3 -march=native), per call",
                  median(res["c_native"]), "s", res["c_native"])
-    nb10 = rep.fig("rhs.numba_deriv10", "numba tethersim.engine.dynamics.derivative (10-state, dispatch)",
-                   median(res["numba_deriv10"]), "s", res["numba_deriv10"])
-    rep.fig("rhs.numba_deriv10_fixed", "  diagnostic: same, model fixed at compile time "
-            "(no dispatch)", median(res["numba_deriv10_fixed"]), "s", res["numba_deriv10_fixed"])
-    c10 = rep.fig("rhs.c_deriv10", "C derivative (10-state), gcc -O3",
-                  median(res["c_deriv10"]), "s", res["c_deriv10"])
+    nbd = rep.fig("rhs.numba_deriv", "numba tethersim.engine.dynamics.derivative (6-state, "
+                  "model literal)", median(res["numba_deriv"]), "s", res["numba_deriv"])
+    cd = rep.fig("rhs.c_deriv", "C derivative (6-state), gcc -O3",
+                 median(res["c_deriv"]), "s", res["c_deriv"])
 
     # called from Python, one call at a time
     yl, pl = y6.tolist(), p.tolist()
@@ -286,7 +280,7 @@ def bench_rhs(rep: Report, S, q, lamb, pydy_f, pydy_gen):
                   median(res2["numba_py"]), "s", res2["numba_py"])
     r1 = rep.fig("rhs.ratio_numba_c", "ratio numba / C -O3", nb / c, "x")
     rep.fig("rhs.ratio_numba_c_native", "ratio numba / C -O3 -march=native", nb / cn, "x")
-    rep.fig("rhs.ratio_deriv10_numba_c", "ratio numba / C, 10-state derivative", nb10 / c10, "x")
+    rep.fig("rhs.ratio_deriv_numba_c", "ratio numba / C, 6-state derivative", nbd / cd, "x")
     rep.fig("rhs.ratio_lambdify_numba", "ratio lambdify / numba (in-loop)", lam / nb, "x")
     rep.target("T1", "1. RHS call: numba <= 2x C (gcc -O3)", r1, "<=", 2.0)
     if pydy_f is None:
@@ -304,14 +298,14 @@ def bench_rhs(rep: Report, S, q, lamb, pydy_f, pydy_gen):
 # --------------------------------------------------------------------------- 2
 def bench_rk4(rep: Report, S, q):
     rk4_run, AIR = S["rk4"], _uniform_air()
-    log(f"\n[2] RK4, {PERIODS} periods in {RK4_STEPS} steps, 10-state (attitude + orbit); "
+    log(f"\n[2] RK4, {PERIODS} periods in {RK4_STEPS} steps, 6-state (the model's own); "
         "thread CPU time")
     sat, p, y0 = S["sat"], S["p"], S["y0"]
     pw = p.copy()
     ev = event_parameters(sat, "derived")
     N = RK4_STEPS
     h = PERIODS * sat.period / N
-    bufs = {k: (np.empty(N), np.empty((N, 10))) for k in ("numba", "c", "c_native")}
+    bufs = {k: (np.empty(N), np.empty((N, y0.size))) for k in ("numba", "c", "c_native")}
     finals = {}
 
     def timer(name, fn):
@@ -362,7 +356,7 @@ def dop853_numba(S, periods, locate=True):
     T = periods * sat.period
     n_out = max(2, round(SAMPLES_PER_PERIOD * periods))
     out_t = np.linspace(0.0, T, n_out + 1)[1:]
-    out_y = np.empty((n_out, 10))
+    out_y = np.empty((n_out, y0.size))
     y = y0.copy()
     cnt = np.zeros(5, dtype=np.int64)
     pw = p.copy()
@@ -379,7 +373,7 @@ def dop853_c(S, lib, periods, locate=True):
     T = periods * sat.period
     n_out = max(2, round(SAMPLES_PER_PERIOD * periods))
     out_t = np.linspace(0.0, T, n_out + 1)[1:]
-    out_y = np.empty((n_out, 10))
+    out_y = np.empty((n_out, y0.size))
     y = y0.copy()
     cnt = np.zeros(5, dtype=np.int64)
     t0 = cpu_clock()
@@ -401,7 +395,7 @@ def solve_ivp_run(S, fun, periods):
 
 def bench_dop853(rep: Report, S, q):
     import baselines
-    log(f"\n[3] adaptive DOP853 rtol {RTOL:g} atol {ATOL:g}, {PERIODS} periods, 10-state, "
+    log(f"\n[3] adaptive DOP853 rtol {RTOL:g} atol {ATOL:g}, {PERIODS} periods, 6-state, "
         f"switch location on, dense output on {SAMPLES_PER_PERIOD} samples/period")
     finals = {}
 

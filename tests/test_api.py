@@ -343,7 +343,9 @@ def test_timeseries_csv_round_trips_exactly(short_run, tmp_path):
     assert header.startswith("t [s],delta_x [m],delta_y [m],theta [rad]")
     assert header.endswith("tension_1 [N],tension_2 [N]")
     data = np.loadtxt(path, delimiter=",", skiprows=1)
+    # the model's states, the COM orbit of the circular run (its closed form), the tensions
     np.testing.assert_array_equal(data, np.column_stack([short_run.t, short_run.states,
+                                                         short_run.orbit,
                                                          short_run.tether_tensions()]))
 
 

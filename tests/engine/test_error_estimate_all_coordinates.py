@@ -25,8 +25,7 @@ def sat():
 def _pair(sat, model: str, name: str, error: float):
     """A finished run and a 'finer rerun' whose final state differs only in ``name``."""
     lay = get_model(model)
-    n_total = lay.n_state + (4 if lay.orbit == "circular" else 0)
-    states = np.zeros((3, n_total))
+    states = np.zeros((3, lay.n_state))
     run = SimResult(sat, model, "adaptive", np.array([0.0, 1.0, 2.0]), states,
                     rtol=1e-10, atol=1e-12, periods=1.0)
     fine_states = states.copy()

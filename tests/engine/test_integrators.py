@@ -90,7 +90,8 @@ def test_adaptive_and_rk4_agree_on_nominal_runs(preset):
 
 
 def test_orbit_stays_circular_two_body(sat):
-    """Eq 3.9 from Table 4.3's circular state: |R| = r0 to integrator accuracy."""
+    """Eq 3.9 from Table 4.3's circular state: |R| = r0 (the closed form since issue 22;
+    tests/engine/test_held_circle.py checks it against an integration of Eq 3.9)."""
     r = simulate(sat, periods=2, method="adaptive", samples=50, check=False)
     radius = np.hypot(r.orbit[:, 0], r.orbit[:, 1])
     assert np.max(np.abs(radius / sat.r0 - 1)) < 1e-9
@@ -154,7 +155,6 @@ def test_interrupted_run_keeps_every_finished_step(sat, monkeypatch):
 
 def test_nonfinite_start_returns_at_once_instead_of_hanging(sat):
     """A NaN derivative at t = 0 must end the run with a status, not loop forever."""
-    from tethersim.engine.dynamics import initial_state
     from tethersim.engine.events import event_parameters
     from tethersim.engine.integrators.dop853 import STATUS_NONFINITE, dop853_run
     from tethersim.model.air.vector import uniform_air
@@ -162,9 +162,9 @@ def test_nonfinite_start_returns_at_once_instead_of_hanging(sat):
 
     p = parameter_vector(sat, "derived")
     p[5] = np.nan  # A3: the Satellite record refuses this, the kernel must still stop
-    y = initial_state(0, sat.initial, sat.r0, sat.r0 * sat.omega)
+    y = np.array(sat.initial, dtype=float)
     out_t = np.array([100.0])
-    out_y = np.empty((1, 10))
+    out_y = np.empty((1, y.size))
     ev = event_parameters(sat, "derived")
     t, h, i_out, status, _ = dop853_run(0, uniform_air(), 0.0, 100.0, y, 0.0, p, p.copy(), ev,
                                         1e-10, 1e-12, True, out_t, out_y, 0, 1000,

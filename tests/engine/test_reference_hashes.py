@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from tests.reference import assert_count_close, assert_state_close
+from tests.reference import assert_count_close, assert_final_close, stored_tolerances
 from tethersim import load_preset, simulate
 
 
@@ -72,12 +72,28 @@ def sat():
     return load_preset("satI")
 
 
-@pytest.mark.parametrize("name", sorted(REFERENCE))
+# two stored adaptive runs that no longer pass once the engine stopped integrating the COM
+# orbit (issue 22), even at the stored steps' tolerances (tests/reference.py); strict: a
+# pass means the note is stale.  Measured on the code before issue 22, the per-body run
+# itself moves by 5.7e-9 of δẋ's scale under one ulp of its starting θ (its steps chatter:
+# 961 rejected of 1938), above the 1e-9 its comparison assumes; the 0.2-orbit switch run
+# takes 251 steps against 254 (1.2 %), its start guessed without the orbit's four states
+NOT_REPRODUCED = {
+    "dop853_per_body_exact_gravity": "one ulp at the start moves δẋ by 5.7e-9 of its scale",
+    "dop853_switch": "a 254-step run: 3 steps from the starting-step guess",
+}
+
+
+@pytest.mark.parametrize("name", [
+    pytest.param(n, marks=pytest.mark.xfail(strict=True, reason=NOT_REPRODUCED[n]))
+    if n in NOT_REPRODUCED else n for n in sorted(REFERENCE)])
 def test_trajectory_matches_the_reference(sat, name):
     transform, kwargs, counts, final = REFERENCE[name]
+    if kwargs.get("method") != "rk4":  # the steps the stored run took (tests/reference.py)
+        kwargs = {**kwargs, **stored_tolerances(kwargs.get("model", "derived"))}
     r = simulate(transform(sat) if transform else sat, check=False, progress=False, **kwargs)
     assert r.status == "ok"
-    assert_state_close(r, r.states[-1], final)
+    assert_final_close(r, final)
     if r.method == "rk4":  # fixed steps: the counts are the step count's
         assert (r.n_accepted, r.n_rejected, r.n_switches, r.nfev) == counts
     else:

@@ -1,10 +1,11 @@
 """The full state derivative that every integrator advances (jitted kernels).
 
-Integrated state (SI):
-  y[0:m]    the generated model's own state, m = len(Model.state)
-            (tethersim.model.registry; e.g. (δx, δy, θ, δẋ, δẏ, θ̇) for the thesis models)
-  y[m:m+4]  (X, Y, VX, VY): for circular-orbit models only, the COM in the inertial
-            (GCE) plane, two-body Eq 3.9; a free-orbit model carries r and ν itself
+Integrated state (SI): the generated model's own state and nothing else, m =
+len(Model.state) floats (tethersim.model.registry; e.g. (δx, δy, θ, δẋ, δẏ, θ̇) for
+the thesis models).  A free-orbit model carries its orbit (r, ν) in that state; a
+circular-orbit model holds its reference point on the circle of radius r0 at polar
+angle ωt, a closed form (:func:`held_circle_orbit`) that no kernel reads back from
+the state, so it is computed where it is wanted (the outputs), never integrated.
 
 The model is a compile-time constant of every compiled loop: each ``model_*``
 function below takes the model index (tethersim.model.registry order) as an
@@ -12,7 +13,7 @@ integer *literal* and resolves to that model's generated kernel, so each model
 gets its own specialised loop and no branch on the model runs per evaluation.
 A loop obtains the literal with ``numba.literally(model)`` (integrators/rk4.py,
 dop853.py).  Everything a loop needs to know about a model's layout — its
-state size, whether a COM orbit is appended, where the densities and μ sit in
+state size, whether its orbit is the held circle, where the densities and ω sit in
 its parameter vector, its tether margins and body radii — comes from the
 generated module, so a model that `make derive` adds gets its loop with no
 edit here.
@@ -30,29 +31,36 @@ from tethersim.model.air.vector import UNIFORM, body_density
 from tethersim.model.constants import R_EARTH
 from tethersim.model.registry import KERNELS, MODELS
 
-N_ORBIT = 4  # X, Y, VX, VY appended after a circular-orbit model's own state
 
+def held_circle(model: int) -> bool:
+    """True when model ``model`` holds its reference point on the circle r0, ωt.
 
-def has_com_orbit(model: int) -> bool:
-    """True when the engine appends the two-body COM orbit to model ``model``'s state."""
+    Such a model (every circular-orbit model) has no orbit state: its orbit is the
+    closed form :func:`held_circle_orbit`; a free-orbit model integrates r and ν.
+    """
     return MODELS[model].orbit == "circular"
 
 
-def state_size(model: int) -> int:
-    """Length of the integrated state of model index ``model``.
+def held_circle_orbit(r0: float, omega: float, t) -> np.ndarray:
+    """The held circle's reference point at times ``t``: (..., 4) of X, Y [m], VX, VY [m/s].
+
+    X = r0 cos ωt, Y = r0 sin ωt, VX = −r0 ω sin ωt, VY = r0 ω cos ωt: the start is
+    (r0, 0) moving +Y at r0 ω (Table 4.3), and the two-body motion of Eq 3.9 from
+    there is this circle exactly when ω² r0³ = μ (Satellite.omega).
 
     Parameters
     ----------
-    model : int
-        Index in :data:`tethersim.model.registry.MODELS`.
-
-    Returns
-    -------
-    int
-        The model's own state size, plus the 4 floats of the COM orbit for a
-        circular-orbit model.
+    r0 : float
+        Orbit radius [m] (the parameter vector's ``r0``).
+    omega : float
+        Orbital rate [rad/s] (the parameter vector's ``omega``).
+    t : array_like
+        Times [s].
     """
-    return MODELS[model].n_state + (N_ORBIT if has_com_orbit(model) else 0)
+    wt = omega * np.asarray(t, dtype=float)
+    c, s = np.cos(wt), np.sin(wt)
+    v = r0 * omega
+    return np.stack([r0 * c, r0 * s, -v * s, v * c], axis=-1)
 
 
 def literal_index(model):
@@ -70,7 +78,7 @@ def model_rhs(model, t, y, p, dydt):
 
 
 def model_size(model):
-    """Length of model ``model``'s integrated state, a compile-time constant (literal model).
+    """Length of model ``model``'s state (``Model.n_state``), a compile-time constant.
 
     The step functions loop over the state with this bound rather than the array's
     run-time length, so LLVM sees a constant trip count (the C ports' ``#define NS``)
@@ -89,11 +97,6 @@ def model_densities(model, t, y, p, pw, air):
     raise NotImplementedError("model_densities is only callable from compiled code")
 
 
-def model_com_orbit(model, y, p, dydt):
-    """Two-body COM orbit of a circular-orbit model (compiled code, literal model only)."""
-    raise NotImplementedError("model_com_orbit is only callable from compiled code")
-
-
 @overload(model_rhs, inline="always", prefer_literal=True)
 def _model_rhs(model, t, y, p, dydt):
     if (k := literal_index(model)) is None:
@@ -109,7 +112,7 @@ def _model_rhs(model, t, y, p, dydt):
 def _model_size(model):
     if (k := literal_index(model)) is None:
         return None
-    n = state_size(k)
+    n = MODELS[k].n_state
 
     def impl(model):
         return n
@@ -134,11 +137,11 @@ def _model_densities(model, t, y, p, pw, air):
     radii = KERNELS[k].body_radii
     i1, i2, i3 = (MODELS[k].parameters.index(n) for n in ("rho1", "rho2", "rho3"))
     # the inertial polar angle of the reference point, for the longitude under it:
-    # ω t on the held circle (the COM starts on +X, initial_state), ν + π/2 on a free
+    # ω t on the held circle (the COM starts on +X, held_circle_orbit), ν + π/2 on a free
     # orbit (R = r (−sin ν, cos ν), docs/orbit.md).  Every body takes this angle: the
     # bodies sit within ~100 m of it, 1.5e-5 rad of longitude, a 0.2 s shift of local
     # time (docs/air.md bounds the density error this makes)
-    if has_com_orbit(k):
+    if held_circle(k):
         i_angle, from_state, offset = MODELS[k].parameters.index("omega"), False, 0.0
     else:
         i_angle, from_state, offset = MODELS[k].state.index("nu"), True, 0.5 * math.pi
@@ -154,31 +157,9 @@ def _model_densities(model, t, y, p, pw, air):
     return impl
 
 
-@overload(model_com_orbit, inline="always", prefer_literal=True)
-def _model_com_orbit(model, y, p, dydt):
-    if (k := literal_index(model)) is None:
-        return None
-    if not has_com_orbit(k):
-        def nothing(model, y, p, dydt):
-            return None
-        return nothing
-    m = MODELS[k].n_state
-    i_mu = MODELS[k].parameters.index("mu")
-
-    def impl(model, y, p, dydt):
-        X, Y = y[m], y[m + 1]
-        r2 = X * X + Y * Y  # hypot's overflow guard is not needed at orbit scale
-        c = -p[i_mu] / (r2 * math.sqrt(r2))
-        dydt[m] = y[m + 2]
-        dydt[m + 1] = y[m + 3]
-        dydt[m + 2] = c * X
-        dydt[m + 3] = c * Y
-    return impl
-
-
 @njit(cache=True)
 def derivative(model, air, t, y, p, pw, dydt):
-    """dy/dt of the integrated state: generated model (+ two-body COM orbit, Eq 3.9).
+    """dy/dt of the integrated state: the generated model's rhs (with the per-body air).
 
     Parameters
     ----------
@@ -191,7 +172,7 @@ def derivative(model, air, t, y, p, pw, dydt):
     t : float
         Time [s].
     y : ndarray
-        Integrated state (the model's state, then X, Y, VX, VY if circular).
+        Integrated state (the model's state, its STATE order).
     p : ndarray
         Parameter vector (the model's PARAMETERS order).
     pw : ndarray
@@ -203,10 +184,7 @@ def derivative(model, air, t, y, p, pw, dydt):
     if air[0] != UNIFORM:
         model_densities(model, t, y, p, pw, air)
         par = pw
-    # the generated rhs reads y[0:m] and writes dydt[0:m] only: passing the whole
-    # arrays avoids building two slice views per call (~10 % of an RK4 run)
     model_rhs(model, t, y, par, dydt)
-    model_com_orbit(model, y, p, dydt)
 
 
 @njit(cache=True)
@@ -221,10 +199,3 @@ def _parameters_at(model, t, y, p, air):
 def parameters_at(model: int, t: float, y, p, air) -> np.ndarray:
     """p with the per-body densities at (t, y) of model index ``model`` (from Python)."""
     return call(_parameters_at, model, t, y, p, air)
-
-
-def initial_state(model: int, model_state, r0: float, v_circ: float) -> np.ndarray:
-    """The integrated initial state: the model's own, then the COM at (r0, 0)
-    moving (0, v) for a circular-orbit model (Table 4.3)."""
-    extra = [r0, 0.0, 0.0, v_circ] if has_com_orbit(model) else []
-    return np.array(list(model_state) + extra, dtype=np.float64)

@@ -22,7 +22,7 @@ GIB = 1024**3
 DEFAULT_OUTPUT_BYTES = 2 * GIB
 DEFAULT_SWEEP_POINTS = 1_000_000
 DEFAULT_STORE_BYTES = 2 * GIB
-STATE_COLUMNS = 10  # δx δy θ and rates, COM X Y VX VY (generated.layout: N_STATE)
+STATE_COLUMNS = 10  # the widest planar state: a free orbit's δx δy θ r ν and rates
 # bytes per sweep point: 9 float64 + 4 int8 + 1 int64 record fields (sweep.point.VARIABLES),
 # the done mask and the int64 checksum (sweep.verify)
 SWEEP_POINT_BYTES = 9 * 8 + 4 + 8 + 1 + 8

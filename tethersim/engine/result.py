@@ -13,7 +13,7 @@ from functools import cached_property
 
 import numpy as np
 
-from tethersim.engine.dynamics import has_com_orbit
+from tethersim.engine.dynamics import held_circle, held_circle_orbit
 from tethersim.engine.evaluate import family_forces_series, jacobi_series, tether_margin_series
 from tethersim.model.constants import R_EARTH
 from tethersim.model.inputs import air_vector, parameter_vector
@@ -84,8 +84,8 @@ class SimResult:
     t : numpy.ndarray
         Sample times [s].
     states : numpy.ndarray
-        (n, integrated state): the model's state, then for a circular-orbit
-        model the COM's inertial X, Y [m], VX, VY [m/s].
+        (n, model state): the model's state (its STATE order), all that is
+        integrated; a circular-orbit model's COM orbit is :attr:`orbit`.
     step : float or None
         RK4 step [s].
     rtol, atol : float or None
@@ -185,20 +185,24 @@ class SimResult:
 
     @property
     def model_states(self) -> np.ndarray:
-        """(n, model state): the states without the appended COM orbit."""
-        return self.states[:, :self.layout.n_state]
+        """(n, model state): the model's states, :attr:`states` (nothing is appended)."""
+        return self.states
 
     @property
     def orbit(self) -> np.ndarray:
         """(n, 4): the reference point's (boom COM's) inertial X, Y [m] and VX, VY [m/s].
 
-        Circular-orbit models integrate it (two-body, Eq 3.9); a free-orbit model
-        integrates r and ν, and R = r (−sin ν, cos ν) (docs/orbit.md), so
+        A circular-orbit model holds it on the circle r0 (cos ωt, sin ωt), computed
+        in closed form from the parameter vector's r0 and ω (the two-body Eq 3.9 from
+        Table 4.3's start; dynamics.held_circle_orbit), never integrated; a free-orbit
+        model integrates r and ν, and R = r (−sin ν, cos ν) (docs/orbit.md), so
         Ṙ = ṙ (−sin ν, cos ν) − r ν̇ (cos ν, sin ν).
         """
         m = self.layout
-        if has_com_orbit(m.index):
-            return self.states[:, m.n_state:m.n_state + 4]
+        if held_circle(m.index):
+            p = self.parameters
+            return held_circle_orbit(p[m.parameters.index("r0")],
+                                     p[m.parameters.index("omega")], self.t)
         r, nu, rd, nud = (self.series(n) for n in ("r", "nu", "r_dot", "nu_dot"))
         s, c = np.sin(nu), np.cos(nu)
         return np.column_stack([-r * s, r * c, -rd * s - r * nud * c, rd * c - r * nud * s])
@@ -206,8 +210,9 @@ class SimResult:
     @property
     def altitude(self) -> np.ndarray:
         """Altitude of the reference point (the boom's COM) above R_E [m], per sample."""
-        if has_com_orbit(self.layout.index):
-            return np.hypot(self.orbit[:, 0], self.orbit[:, 1]) - R_EARTH
+        if held_circle(self.layout.index):
+            r0 = self.parameters[self.layout.parameters.index("r0")]
+            return np.full(self.t.shape, r0 - R_EARTH)
         return self.series("r") - R_EARTH
 
     @property

@@ -28,7 +28,6 @@ from tethersim.engine.arguments import (
     check_scheme,
 )
 from tethersim.engine.domain import event_message
-from tethersim.engine.dynamics import initial_state, state_size
 from tethersim.engine.events import EVENTS, STOPS, event_parameters
 from tethersim.engine.integrators.dop853 import STATUS_EVENT, STATUS_OK, dop853_run
 from tethersim.engine.integrators.radau import N_COUNTERS as RADAU_COUNTERS
@@ -265,9 +264,9 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
             f"numerically. "
             f"Use more steps or method='adaptive'."), stacklevel=3)
     ev = event_parameters(sat, model)
-    y = initial_state(m, initial_model_state(sat, model), sat.r0, sat.r0 * sat.omega)
+    y = initial_model_state(sat, model)
     out_t = np.empty(steps + 1)
-    out_y = np.empty((steps + 1, state_size(m)))
+    out_y = np.empty((steps + 1, y.size))
     out_t[0], out_y[0] = 0.0, y
     row, switches, status = 1, 0, "ok"
     message, stop = "", {}
@@ -325,10 +324,10 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
     p = parameter_vector(sat, model)
     pw = p.copy()
     # start: an integrated state to continue from (engine/release.py), else the satellite's
-    y = (initial_state(m, initial_model_state(sat, model), sat.r0, sat.r0 * sat.omega)
-         if start is None else np.array(start, dtype=float))
+    y = (initial_model_state(sat, model) if start is None
+         else np.array(start, dtype=float))
     out_t = refined_grid(t_end, n_out, refine)
-    out_y = np.full((out_t.size, state_size(m)), np.nan)
+    out_y = np.full((out_t.size, y.size), np.nan)
     out_y[0] = y
     t, h, i_out, status, message, calls, stop = 0.0, 0.0, 1, "ok", "", 0, {}
     max_steps = int(MAX_STEPS_PER_PERIOD * periods)

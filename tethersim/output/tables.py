@@ -19,12 +19,10 @@ from pathlib import Path
 
 import numpy as np
 
-from tethersim.engine.result import SimResult
+from tethersim.engine.dynamics import held_circle
+from tethersim.engine.result import ORBIT_COLUMNS, ORBIT_UNITS, SimResult
 from tethersim.model.plausibility import allowed_problems
 from tethersim.output.files import replacing
-
-ORBIT_COLUMNS = ("X", "Y", "VX", "VY")
-ORBIT_UNITS = ("m", "m", "m/s", "m/s")
 
 
 def cell(value) -> str:
@@ -95,19 +93,20 @@ def timeseries_columns(res: SimResult) -> tuple:
 
 def _columns(res: SimResult) -> list:
     """[(name, values, unit)] of a run's time series: t, the integrated state (and the
-    COM orbit of a circular-orbit model), then, for a free orbit, the derived altitude,
-    osculating elements and air densities (tethersim.analysis.free_orbit), then the
-    tension of tethers 1 and 2."""
+    COM orbit of a circular-orbit model, its closed form: SimResult.orbit), then, for a
+    free orbit, the derived altitude, osculating elements and air densities
+    (tethersim.analysis.free_orbit), then the tension of tethers 1 and 2."""
     from tethersim.analysis.free_orbit import free_orbit_series  # numba: only when writing one
 
     lay = res.layout
-    names = tuple(zip(lay.state, lay.state_units))
-    if res.states.shape[1] > lay.n_state:  # the COM orbit of a circular-orbit model
-        names += tuple(zip(ORBIT_COLUMNS, ORBIT_UNITS))
+    cols = [("t", res.t, "s")] + [(n, res.states[:, i], u)
+                                  for i, (n, u) in enumerate(zip(lay.state, lay.state_units))]
+    if held_circle(lay.index):
+        orbit = res.orbit
+        cols += [(n, orbit[:, i], u) for i, (n, u) in enumerate(zip(ORBIT_COLUMNS, ORBIT_UNITS))]
     # the tethers' tensions, the model's own (SimResult.tether_tensions; zero while slack)
     tension = res.tether_tensions()
-    return ([("t", res.t, "s")] + [(n, res.states[:, i], u) for i, (n, u) in enumerate(names)]
-            + free_orbit_series(res)
+    return (cols + free_orbit_series(res)
             + [(f"tension_{j + 1}", tension[:, j], "N") for j in range(2)])
 
 

@@ -20,7 +20,6 @@ import numpy as np
 from tethersim.analysis.classify import classify
 from tethersim.analysis.metrics import SS_FRACTION, PitchMetrics
 from tethersim.engine.arguments import check_scheme
-from tethersim.engine.dynamics import initial_state
 from tethersim.engine.events import event_parameters
 from tethersim.engine.guards import API_SUBJECT, check_simulation
 from tethersim.engine.integrators.select import specialised
@@ -135,8 +134,7 @@ def _compiled(sats: list, plan: Plan, model: str, air: np.ndarray) -> list:
         check_scheme(s, SCHEMES[plan.method])
     n = len(sats)
     P = np.stack([parameter_vector(s, model) for s in sats])
-    Y0 = np.stack([initial_state(m, initial_model_state(s, model), s.r0, s.r0 * s.omega)
-                   for s in sats])
+    Y0 = np.stack([initial_model_state(s, model) for s in sats])
     n_steps, n_out = _sizes(plan)
     check_point_size(plan)  # the output-size guard simulate() applies to each point
     if faithful:  # simulate._run_rk4: every step is a sample
