@@ -13,7 +13,7 @@ UT_k = (5 k mod 24) h (longitude 15 (LST - UT) deg): such a rule averages exactl
 term cos(2π (m1 LST + m2 UT)/24) with m1 + 5 m2 not a multiple of 24, i.e. all the
 diurnal, semi- and ter-diurnal LST terms of MSIS (|m1| <= 3) crossed with its UT and
 longitude terms up to the second harmonic (|m2| <= 2), at the cost of 24 calls
-(tests/analysis/test_deorbit_air.py compares it with a 24 x 24 grid of direct calls).
+(tests/model/test_air_orbit_mean.py compares it with a 24 x 24 grid of direct calls).
 
 The profile is kept at :data:`NODES` altitudes (uniform in ln(h - 60 km), like the run
 grid of docs/air.md: 4 km apart at 120 km, 60 km at 1000 km) for every day of the
