@@ -144,3 +144,24 @@ def deorbit(sat, altitudes, n: int = 100, seed: int = 0, max_years: float = 200.
         rows.append(row)
     return {"rows": rows, "epochs": epochs, "life": life, "line_length": ell,
             "trail": trail_altitudes(sat, ell), "max_years": max_years}
+
+
+def flight_life(bc: float, altitude: float, epoch: str, reentry_altitude: float = 120e3,
+                max_years: float = 50.0) -> float:
+    """Lifetime [s] of one flight from ``altitude`` [m] at ``epoch`` (ISO UTC) with ballistic
+    coefficient ``bc`` = C_D A / M [m^2/kg], by the same law (a published flight's inputs).
+
+    The orbit factor √(μ a)(1 − ω_E/n)² does not depend on the design, so SatI's
+    record carries it here.
+    """
+    from tethersim.model.presets import load_preset
+    if not (math.isfinite(bc) and bc > 0):
+        raise ValueError(f"bc = {bc!r} m^2/kg: must be > 0")
+    check_altitudes(load_preset("satI").replace(reentry_altitude=reentry_altitude),
+                    altitude, altitude, 1)
+    sat = load_preset("satI")
+    start = epoch_seconds(str(np.datetime64(epoch, "D"))) + float(
+        (np.datetime64(epoch, "s") - np.datetime64(epoch, "D")) / np.timedelta64(1, "s"))
+    return float(law.lifetimes(log_q(sat), orbit_mean.NODES, orbit_mean.history_row,
+                               [altitude], bc, [start - epoch_seconds(orbit_mean.HISTORY_FIRST)],
+                               reentry_altitude, max_years * law.YEAR)[0])
