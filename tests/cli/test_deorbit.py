@@ -28,6 +28,9 @@ def vallado_history(monkeypatch):
     (["--n", "0"], "--n"),
     (["--max-years", "5000"], "--max-years 5000: at most 1000 years"),
     (["--line-length", "-1"], "--line-length"),
+    (["--from", "300:500:3", "--runs", "4"], "--runs 4: at most the 3 altitudes of --from"),
+    (["--runs", "21"], "--runs"),
+    (["--model", "free"], "--model"),
 ])
 def test_bad_input_is_refused_in_one_line_naming_the_option(args, message, capsys, tmp_path):
     try:
@@ -55,3 +58,15 @@ def test_a_small_run_writes_its_table_plot_and_verdicts(vallado_history, capsys,
     lives = list(csv.DictReader((tmp_path / "lifetimes.csv").read_text().splitlines()))
     assert len(lives) == 3 * 7
     assert (tmp_path / "deorbit.png").stat().st_size > 10_000
+
+
+def test_coupled_runs_write_their_table_and_lines(vallado_history, capsys, tmp_path):
+    assert main(["deorbit", "satI", "--from", "200:800:4", "--n", "3", "--runs", "2",
+                 "--periods", "1", "--model", "derived", "--quiet", "--out", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    assert out.count(" km ok: trail ") == 2
+    rows = list(csv.DictReader((tmp_path / "runs.csv").read_text().splitlines()))
+    assert [float(r["altitude_km"]) for r in rows] == [200.0, 800.0]  # the ends of --from
+    # SatI at 200 km trails level behind, as the closed form says (epsilon >> 1)
+    assert float(rows[0]["epsilon"]) > 1 and float(rows[0]["trail_angle_deg"]) > 80
+    assert float(rows[0]["closed_form_angle_deg"]) == 90.0

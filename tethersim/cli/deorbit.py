@@ -11,6 +11,7 @@ import math
 from pathlib import Path
 
 from tethersim.cli import options
+from tethersim.model.registry import BY_NAME
 
 HELP = "lifetime with and without the balloon, trail or hang, 25/5-year verdicts"
 
@@ -53,6 +54,16 @@ def add_parser(sub) -> None:
     p.add_argument("--line-length", type=options.positive_float, default=None, metavar="M",
                    help="the balloon's distance from the centre of mass [m] for trail or hang "
                         "(default: the design's start offset)")
+    p.add_argument("--runs", type=options.int_range(0, 20), default=0, metavar="K",
+                   help="coupled runs at K of the altitudes (evenly picked, 0..20; default 0): "
+                        "trail angle against the closed form, peak tether tensions, the host's "
+                        "pitch-rate envelope (runs.csv)")
+    options.add_periods(p, default=6.0, help="orbits of each coupled run (default 6)")
+    p.add_argument("--model", choices=[m for m in options.model_names()
+                                       if BY_NAME[m].orbit == "circular"],
+                   default="objective-damper",
+                   help="model of the coupled runs (default objective-damper: the thesis "
+                        "damper pulls a balloon at rest across its line)")
     options.add_out(p, "results/<satellite>/deorbit-seed<S>")
     options.add_quiet(p)
     options.add_overrides(p)
@@ -91,7 +102,9 @@ def run(args) -> int:
     except ValueError as exc:
         raise options.UsageError(f"--{exc}") from None
     out = Path(args.out) if args.out else options.default_out(args, f"deorbit-seed{args.seed}")
-    files = ("deorbit.csv", "lifetimes.csv", "deorbit.png")
+    files = ("deorbit.csv", "lifetimes.csv", "deorbit.png", "runs.csv")
+    if args.runs > h.size:
+        raise options.UsageError(f"--runs {args.runs}: at most the {h.size} altitudes of --from")
     preflight.check_files(out, files)
     if not args.quiet:
         print(f"{sat.name}: {h.size} altitudes x {args.n} epochs, with and without the "
@@ -138,5 +151,38 @@ def run(args) -> int:
           f"{t['median'] / 1e3:.0f} km and hangs above it in the median day's air "
           f"({t['thin'] / 1e3:.0f} km on a thin day, {t['dense'] / 1e3:.0f} km on a dense one)")
     print("verdicts: met = P90 within the rule, failed = P10 beyond it, else epoch-dependent")
+    if args.runs:
+        written.append(_runs(args, sat, h, out))
     print("wrote " + ", ".join(str(p) for p in written))
     return 0
+
+
+def _runs(args, sat, h, out):
+    """The coupled runs at ``args.runs`` of the altitudes ``h``: runs.csv and one line each."""
+    import numpy as np
+    from tqdm.auto import tqdm
+
+    from tethersim.experiments.deorbit_runs import coupled_runs
+    from tethersim.output.tables import write_rows
+
+    pick = h[np.unique(np.round(np.linspace(0, h.size - 1, args.runs)).astype(int))]
+    method = "implicit" if args.tethers else "adaptive"  # real lines are stiff
+    with tqdm(total=pick.size, desc="coupled runs", unit="run", leave=False,
+              disable=args.quiet, delay=1.0) as bar:
+        runs = coupled_runs(sat, pick, args.periods, args.model, method, bar)
+    rows = [{"altitude_km": r["altitude"] / 1e3, "status": r["status"],
+             "trail_angle_deg": math.degrees(r["trail_angle"]),
+             "closed_form_angle_deg": math.degrees(r["closed_form_angle"]),
+             "trail_length_m": r["trail_length"], "epsilon": r["epsilon"],
+             "peak_tension_1_N": r["peak_tension_1"], "peak_tension_2_N": r["peak_tension_2"],
+             "max_pitch_rate_deg_s": math.degrees(r["max_rate"]),
+             "settled_pitch_rate_deg_s": math.degrees(r["settled_rate"])} for r in runs]
+    print(f"coupled runs ({args.periods:g} orbits, {args.model}, {method}; angle from the "
+          f"vertical, 90 = level behind):")
+    for r in rows:
+        print(f"  {r['altitude_km']:5.0f} km {r['status']}: trail {r['trail_angle_deg']:5.1f} deg "
+              f"(closed form {r['closed_form_angle_deg']:5.1f} at {r['trail_length_m']:.3g} m, "
+              f"eps {r['epsilon']:.3g}), peak tension {r['peak_tension_1_N']:.3g} / "
+              f"{r['peak_tension_2_N']:.3g} N, pitch rate max {r['max_pitch_rate_deg_s']:.3g} "
+              f"settled {r['settled_pitch_rate_deg_s']:.3g} deg/s")
+    return write_rows(out / "runs.csv", rows)
