@@ -341,8 +341,10 @@ def test_timeseries_csv_round_trips_exactly(short_run, tmp_path):
     path = tethersim.write_timeseries(short_run, tmp_path / "run.csv")
     header = path.read_text().splitlines()[0]
     assert header.startswith("t [s],delta_x [m],delta_y [m],theta [rad]")
+    assert header.endswith("tension_1 [N],tension_2 [N]")
     data = np.loadtxt(path, delimiter=",", skiprows=1)
-    np.testing.assert_array_equal(data, np.column_stack([short_run.t, short_run.states]))
+    np.testing.assert_array_equal(data, np.column_stack([short_run.t, short_run.states,
+                                                         short_run.tether_tensions()]))
 
 
 def test_rk4_run_step_and_sample_count():

@@ -12,7 +12,7 @@ import math
 from pathlib import Path
 
 from tethersim.analysis.metrics import SETTLING_TOL
-from tethersim.cli import options
+from tethersim.cli import options, parallel
 
 HELP = "multi-objective design search: settle before the orbit decays, hold the trim"
 
@@ -57,8 +57,7 @@ def add_parser(sub) -> None:
                         "by F (default 1.5)")
     p.add_argument("--verify", type=options.int_range(0), default=10, metavar="N",
                    help="Pareto designs re-verified at most (default 10)")
-    p.add_argument("--workers", type=options.positive_int, default=None, metavar="N",
-                   help="threads (default: every core)")
+    parallel.add_parallel(p)
     options.add_model(p)
     options.add_out(p, "results/<satellite>/design")
     options.add_quiet(p)
@@ -120,7 +119,7 @@ def run(args) -> int:
         raise options.UsageError(f"--model {args.model}: design takes a circular-orbit model; "
                                  f"it runs the trim on the held circular orbit and the life "
                                  f"with the model's free twin")
-    preflight.check_workers(args, "workers")
+    where = parallel.check_parallel(args)
     refuse(args, FIXED, lambda n: "the design search sets it itself: drop it")
     variables, choices = parse_variables(args)
     if args.altitude and ":" not in args.altitude:
@@ -141,7 +140,7 @@ def run(args) -> int:
     if not args.quiet:
         print(f"design search over {', '.join(spec.names)}: {spec.generations} generation(s) "
               f"of {spec.population} (seed {spec.seed}) -> {out}")
-    res = search(spec, out / "store", workers=args.workers, progress=options.progress(args))
+    res = search(spec, out / "store", **where, progress=options.progress(args))
     columns = _columns(spec)
     write_table(out / "designs.csv", ({k: r.get(k) for k, _ in columns[:-len(VERIFY_COLUMNS)]}
                                       for r in res["evaluations"]),

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from tethersim.cli import options
+from tethersim.cli import options, parallel
 
 HELP = "Monte Carlo over space weather, drag, inflation, tethers and deployment"
 
@@ -65,12 +65,7 @@ def add_parser(sub) -> None:
     p.add_argument("--rtol", type=options.rtol_float, default=1e-9,
                    help="DOP853 relative tolerance of every run (default 1e-9)")
     options.add_model(p)
-    p.add_argument("--workers", type=options.positive_int, default=None, metavar="N",
-                   help="threads on this machine (default: every core; at most 4 per core)")
-    p.add_argument("--dask-workers", type=options.positive_int, default=None, metavar="N",
-                   help="start a local Dask cluster of N worker processes (at most 4 per core)")
-    p.add_argument("--scheduler", default=None, metavar="ADDR",
-                   help="Dask scheduler address, e.g. tcp://10.0.0.5:8786 (docs/sweeps.md)")
+    parallel.add_parallel(p)
     options.add_out(p, "results/<satellite>/mc-seed<S>")
     options.add_quiet(p)
     options.add_overrides(p)
@@ -105,10 +100,7 @@ def run(args) -> int:
         raise options.UsageError(f"--model {args.model}: mc takes a circular-orbit model; it "
                                  f"runs the settling on the held circular orbit and the life "
                                  f"with the model's free twin")
-    if sum(x is not None for x in (args.workers, args.dask_workers, args.scheduler)) > 1:
-        raise options.UsageError("--workers, --dask-workers and --scheduler are alternatives: "
-                                 "give one")
-    preflight.check_workers(args, "workers", "dask_workers")
+    parallel.check_parallel(args)
     refuse(args, [*OWN_FIELDS, "atmosphere", "density"],
            lambda n: f"the Monte Carlo sets {n} per sample (held circular and free orbit, "
                      f"drawn epoch, the table's daily indices): drop it")

@@ -262,31 +262,10 @@ def satellite(args):
     sat = apply_overrides(sat, getattr(args, "set", None) or (),
                           getattr(args, "scale", None) or ())
     if getattr(args, "tethers", None):
-        sat = _with_tethers(sat, args)
+        from tethersim.cli.overrides import with_tethers_option
+        sat = with_tethers_option(sat, args)
     from tethersim.cli.orbit import orbit_of_models
     return orbit_of_models(args, sat)
-
-
-def _with_tethers(sat, args):
-    """``--tethers MATERIAL:DIAMETER_MM[:KNOCKDOWN]`` applied to ``sat`` (one-line errors)."""
-    from tethersim.cli.overrides import refuse
-    from tethersim.model.materials import MATERIALS, with_tethers
-    refuse(args, ("E1", "E2", "c1", "c2", "Fb1", "Fb2"),
-           "--tethers sets it from the material; give one or the other")
-    parts = args.tethers.split(":")
-    usage = (f"--tethers {args.tethers!r}: expected MATERIAL:DIAMETER_MM[:KNOCKDOWN], "
-             f"e.g. kevlar49:1 (materials: {', '.join(MATERIALS)})")
-    if len(parts) not in (2, 3):
-        raise UsageError(usage)
-    try:
-        numbers = [float(x) for x in parts[1:]]
-    except ValueError:
-        raise UsageError(usage) from None
-    try:
-        return with_tethers(sat, parts[0], numbers[0] * 1e-3, knockdown=numbers[1]
-                            if len(numbers) > 1 else 1.0)
-    except ValueError as exc:
-        raise UsageError(f"--tethers: {exc}") from None
 
 
 @dataclass(frozen=True)

@@ -61,3 +61,24 @@ def dash_hint(message: str) -> str:
         return message
     return (f"{message}; write {m.group(1)}=VALUE when VALUE starts with '-' (e.g. "
             f"{m.group(1)}=-1,0.004)")
+
+
+def with_tethers_option(sat, args):
+    """``--tethers MATERIAL:DIAMETER_MM[:KNOCKDOWN]`` applied to ``sat`` (one-line errors)."""
+    from tethersim.model.materials import MATERIALS, with_tethers
+    refuse(args, ("E1", "E2", "c1", "c2", "Fb1", "Fb2"),
+           "--tethers sets it from the material; give one or the other")
+    parts = args.tethers.split(":")
+    usage = (f"--tethers {args.tethers!r}: expected MATERIAL:DIAMETER_MM[:KNOCKDOWN], "
+             f"e.g. kevlar49:1 (materials: {', '.join(MATERIALS)})")
+    if len(parts) not in (2, 3):
+        raise options.UsageError(usage)
+    try:
+        numbers = [float(x) for x in parts[1:]]
+    except ValueError:
+        raise options.UsageError(usage) from None
+    try:
+        return with_tethers(sat, parts[0], numbers[0] * 1e-3, knockdown=numbers[1]
+                            if len(numbers) > 1 else 1.0)
+    except ValueError as exc:
+        raise options.UsageError(f"--tethers: {exc}") from None

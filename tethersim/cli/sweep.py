@@ -12,7 +12,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from tethersim.cli import options
+from tethersim.cli import options, parallel
 
 HELP = "stability map over one or two parameters (thesis Figs 5.13, 5.21-5.28)"
 SHOWN_AXES = ("E1", "E2", "c1", "c2")  # in --help; every parameter of `show` works
@@ -40,12 +40,7 @@ def add_parser(sub) -> None:
     options.add_periods(p, help="orbits per run (default 50: three days, thesis p. 5-6)")
     options.add_integrator(p, rtol=1e-9, fixed_step=False)
     options.add_model(p)
-    p.add_argument("--workers", type=options.positive_int, default=None, metavar="N",
-                   help="threads on this machine (default: every core; at most 4 per core)")
-    p.add_argument("--dask-workers", type=options.positive_int, default=None, metavar="N",
-                   help="start a local Dask cluster of N worker processes (at most 4 per core)")
-    p.add_argument("--scheduler", default=None, metavar="ADDR",
-                   help="Dask scheduler address, e.g. tcp://10.0.0.5:8786")
+    parallel.add_parallel(p)
     options.add_out(p, "results/<satellite>/sweep-<axes>[-faithful]")
     p.add_argument("--restart", action="store_true", help="discard a previous store in --out")
     p.add_argument("--no-plots", action="store_true", help="skip the stability map PNG")
@@ -107,10 +102,7 @@ def run(args) -> int:
         raise options.UsageError(
             f"give one or two grids, e.g. --E1 0:0.02:41 --E2 0:0.06:41; got "
             f"{len(axes)} ({', '.join(n for n, _ in axes) or 'none'})")
-    if sum(x is not None for x in (args.workers, args.dask_workers, args.scheduler)) > 1:
-        raise options.UsageError("--workers, --dask-workers and --scheduler are alternatives: "
-                                 "give one")
-    preflight.check_workers(args, "workers", "dask_workers")
+    parallel.check_parallel(args)
     how = options.integrator(args)
     method = "faithful" if how.faithful else how.method  # adaptive or implicit
     # every refusal before the spec (whose points' check takes a while on a large grid),

@@ -304,7 +304,7 @@ def objectives(spec: DesignSpec, row: dict) -> tuple:
     return f, g
 
 
-def evaluate(spec: DesignSpec, xs: list, *, workers=None, progress=False) -> list:
+def evaluate(spec: DesignSpec, xs: list, *, workers=None, progress=False, pool=None) -> list:
     """Rows of designs ``xs`` (search vectors): two plans of many, every design's runs.
 
     A design that cannot run is a row with verdict ``refused`` and the reason; the others'
@@ -317,9 +317,9 @@ def evaluate(spec: DesignSpec, xs: list, *, workers=None, progress=False) -> lis
     circ = [s for i in ok for s in built[i][0]]
     free = [built[i][1] for i in ok]
     per = 1 + len(SOLAR_CASES)
-    recs_c = run_plan(circ_plan, circ, workers=workers, progress=progress,
+    recs_c = run_plan(circ_plan, circ, workers=workers, pool=pool, progress=progress,
                       desc="design: circular runs") if circ else []
-    recs_f = run_plan(free_plan, free, workers=workers, progress=progress,
+    recs_f = run_plan(free_plan, free, workers=workers, pool=pool, progress=progress,
                       desc="design: free runs") if free else []
     rows = []
     for i, x in enumerate(xs):

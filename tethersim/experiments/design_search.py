@@ -83,7 +83,8 @@ class DesignStore:
         self.lock.__exit__(None, None, None)
 
 
-def search(spec: DesignSpec, out, *, workers=None, progress=None, stop_after=None) -> dict:
+def search(spec: DesignSpec, out, *, workers=None, scheduler=None, dask_workers=None,
+           progress=None, stop_after=None) -> dict:
     """Run (or resume) the search into the store at ``out``; the result.
 
     Parameters
@@ -94,6 +95,9 @@ def search(spec: DesignSpec, out, *, workers=None, progress=None, stop_after=Non
         Store folder (created, or resumed when it holds the same spec).
     workers : int, optional
         Threads of the plans (default: every core); the result does not depend on it.
+    scheduler, dask_workers : optional
+        A Dask scheduler's address, or a local cluster of that many worker processes,
+        opened once for the whole search (runner.executor); the same result.
     progress : bool or None, optional
         A progress bar over the evaluations (None: when slow; False: none).
     stop_after : int, optional
@@ -119,9 +123,11 @@ def search(spec: DesignSpec, out, *, workers=None, progress=None, stop_after=Non
                     verbose=False)
     store = DesignStore(out, spec)
     rows, replayed = [], 0
+    from tethersim.experiments.sweep.runner import executor
     try:
-        with tqdm(total=spec.generations * spec.population, desc="design", unit="design",
-                  disable=progress is False, delay=0 if progress else 1.0, leave=False) as bar:
+        with executor(workers, scheduler, dask_workers) as pool, \
+                tqdm(total=spec.generations * spec.population, desc="design", unit="design",
+                     disable=progress is False, delay=0 if progress else 1.0, leave=False) as bar:
             gen = 0
             while algorithm.has_next():
                 pop = algorithm.ask()
@@ -133,7 +139,7 @@ def search(spec: DesignSpec, out, *, workers=None, progress=None, stop_after=Non
                 stored = sum(k in store.evaluated for k in keys)
                 replayed += stored
                 bar.update(len(xs) - len(todo))
-                new = evaluate(spec, [xs[i] for i in todo], workers=workers, progress=False)
+                new = evaluate(spec, [xs[i] for i in todo], pool=pool, progress=False)
                 for i, row in zip(todo, new):
                     f, g = objectives(spec, row)
                     store.put({"key": keys[i], "x": [float(v) for v in xs[i]], "row": row,
@@ -148,11 +154,11 @@ def search(spec: DesignSpec, out, *, workers=None, progress=None, stop_after=Non
                 gen += 1
                 if stop_after is not None and gen >= stop_after:
                     raise KeyboardInterrupt
-        front = pareto(rows)
-        for i, r in enumerate(front):  # the first --verify designs of the front, in order
-            r.update(verify_design(spec, store, r, workers=workers) if i < spec.verify
-                     else {"verified": None, "fine_verdict": "not re-verified (--verify)",
-                           **bound_columns(spec, r)})
+            front = pareto(rows)
+            for i, r in enumerate(front):  # the first --verify designs of the front, in order
+                r.update(verify_design(spec, store, r, pool=pool) if i < spec.verify
+                         else {"verified": None, "fine_verdict": "not re-verified (--verify)",
+                               **bound_columns(spec, r)})
     finally:
         store.close()
     return {"evaluations": rows, "pareto": front, "replayed": replayed}
@@ -173,7 +179,8 @@ def pareto(rows: list) -> list:
     return [feasible[i] for i in sorted(int(i) for i in front)]
 
 
-def verify_design(spec: DesignSpec, store: DesignStore, row: dict, workers=None) -> dict:
+def verify_design(spec: DesignSpec, store: DesignStore, row: dict, workers=None,
+                  pool=None) -> dict:
     """Re-verify one reported design by an independent finer run; the columns it adds.
 
     The finer run: free orbits in per-body NRLMSISE-00 air at solar minimum, mean and
@@ -193,9 +200,9 @@ def verify_design(spec: DesignSpec, store: DesignStore, row: dict, workers=None)
     from tethersim.experiments.design import solar_scale_items
     circ = run_plan(circ_plan, [fs.circular(h, a3)] + [fs.circular(h, a3, k)
                                                         for _, k in solar_scale_items(h)],
-                    workers=workers, progress=False)
+                    workers=workers, pool=pool, progress=False)
     free = run_plan(free_plan, [fs.free(h, a3, c) for c in SOLAR_CASES], workers=workers,
-                    progress=False)
+                    pool=pool, progress=False)
     cap = spec.max_lifetime_h * 3600
     lives = []
     for c, r in zip(SOLAR_CASES, free):

@@ -11,7 +11,7 @@ import concurrent.futures as cf
 import math
 import os
 import time
-from contextlib import contextmanager
+from contextlib import contextmanager, nullcontext
 
 from tqdm.auto import tqdm
 
@@ -96,7 +96,7 @@ def _blocks(ks: list, size: int, workers: int = 1, minimum: int = 1) -> list:
 
 def run_plan(plan: Plan, sats: list, *, workers: int | None = None,
              scheduler: str | None = None, dask_workers: int | None = None,
-             progress: bool | None = None, desc: str = "runs") -> list:
+             progress: bool | None = None, desc: str = "runs", pool=None) -> list:
     """Records of every satellite's run under ``plan``, in order: a plan of many.
 
     The satellites run in compiled blocks (batch.run_satellites) on threads, or on a
@@ -117,6 +117,10 @@ def run_plan(plan: Plan, sats: list, *, workers: int | None = None,
         A progress bar (None: when the runs take over a second; False: none).
     desc : str, optional
         The bar's label.
+    pool : tuple, optional
+        An open :func:`executor` (what its ``with`` yields), for a caller that runs many
+        plans on one pool or cluster (a search's generations); then ``workers``,
+        ``scheduler`` and ``dask_workers`` are not used.
 
     Returns
     -------
@@ -136,7 +140,8 @@ def run_plan(plan: Plan, sats: list, *, workers: int | None = None,
 
     sats = list(sats)
     idx = list(range(len(sats)))
-    with executor(workers, scheduler, dask_workers) as (ex, minimum, n):
+    with (nullcontext(pool) if pool is not None
+          else executor(workers, scheduler, dask_workers)) as (ex, minimum, n):
         size = block_size(plan.periods, len(sats), n, minimum)
         blocks = _blocks(idx, size, n, minimum)
         futures = {ex.submit(run_satellites, plan, [sats[i] for i in b]): b for b in blocks}
