@@ -44,6 +44,18 @@ def _inflatesail_fraction() -> float:
                   xtol=1e-4)
 
 
+def _towed_stretch_pct() -> float:
+    """The towed line's stretch [%] under the tide of SatI's balloon 100 m out at 500 km."""
+    from tethersim.experiments.deorbit_runs import TOWED_MODULUS
+    s = _sat().replace(altitude=500e3)
+    return 100 * 3 * s.omega ** 2 * s.m3 * 100.0 / TOWED_MODULUS
+
+
+def _towed_ea() -> float:
+    from tethersim.experiments.deorbit_runs import TOWED_MODULUS
+    return TOWED_MODULUS
+
+
 def _wrap_years() -> float:
     from tethersim.model.air.orbit_mean import WRAP_DAYS
     return WRAP_DAYS / 365.25
@@ -54,6 +66,8 @@ QUANTITIES = {
     "deorbit_b_without": lambda: _b(False),
     "deorbit_b_ratio": lambda: _b(True) / _b(False),
     "deorbit_wrap_years": _wrap_years,
+    "deorbit_towed_ea": _towed_ea,
+    "deorbit_towed_stretch_pct": _towed_stretch_pct,
     "deorbit_trail_median_km": lambda: _trail()["median"] / 1e3,
     "deorbit_trail_thin_km": lambda: _trail()["thin"] / 1e3,
     "deorbit_trail_dense_km": lambda: _trail()["dense"] / 1e3,
@@ -71,6 +85,8 @@ FIGURES = [
     Figure(DOC, ("in the median day's air at ",), "deorbit_trail_median_km", slow=True),
     Figure(DOC, ("on a thin day (P10 density) ",), "deorbit_trail_thin_km", slow=True),
     Figure(DOC, ("on a dense day (P90) ",), "deorbit_trail_dense_km", slow=True),
+    Figure(DOC, ("nearly inextensible (EA ",), "deorbit_towed_ea"),
+    Figure(DOC, ("a stretch of ",), "deorbit_towed_stretch_pct"),
     Figure(DOC, ("InflateSail's B = ",), "deorbit_inflatesail_b"),
     Figure(DOC, ("the law gives ",), "deorbit_inflatesail_days", slow=True),
     Figure(DOC, ("last 72 days with ",), "deorbit_inflatesail_fraction_pct", slow=True),
