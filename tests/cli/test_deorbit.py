@@ -70,3 +70,19 @@ def test_coupled_runs_write_their_table_and_lines(vallado_history, capsys, tmp_p
     # SatI at 200 km trails level behind, as the closed form says (epsilon >> 1)
     assert float(rows[0]["epsilon"]) > 1 and float(rows[0]["trail_angle_deg"]) > 80
     assert float(rows[0]["closed_form_angle_deg"]) == 90.0
+
+
+@pytest.mark.slow  # the real orbit-mean history: built once (~35 s) where the cache lacks it
+def test_a_run_in_the_real_history_gives_ordered_quantiles_and_a_balloon_that_shortens_life(
+        capsys, tmp_path):
+    assert main(["deorbit", "satI", "--from", "350:500:2", "--n", "9", "--quiet",
+                 "--out", str(tmp_path)]) == 0
+    rows = list(csv.DictReader((tmp_path / "deorbit.csv").read_text().splitlines()))
+    for r in rows:
+        for k in ("with", "without"):
+            p10, p50, p90 = (float(r[f"{k}_{p}_years"]) for p in ("p10", "p50", "p90"))
+            assert p10 <= p50 <= p90
+        # the same epoch with a ~11x larger B: several times shorter, not exactly 11x (the
+        # host alone lives through more of the solar cycle)
+        assert 3 < float(r["ratio_p50"]) < 20
+    assert float(rows[0]["with_p50_years"]) < float(rows[1]["with_p50_years"])

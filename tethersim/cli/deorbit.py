@@ -3,7 +3,9 @@
 Time to re-entry from each start altitude of ``--from LOW:HIGH:N`` with and without
 the balloon, over epochs drawn as ``tethersim mc`` draws them (P10/P50/P90 with 95 %
 intervals), their ratio, the 25-year (IADC/ISO 24113) and 5-year (FCC 2024) verdicts,
-and the altitude where the towed balloon turns from trailing to hanging.
+and the altitude where the towed balloon turns from trailing to hanging; with
+``--runs K``, short coupled runs at K of the altitudes (trail angle against the closed
+form, peak tether tensions, the host's pitch-rate envelope).
 """
 from __future__ import annotations
 
@@ -38,8 +40,10 @@ def add_parser(sub) -> None:
                     "re-entry in NRLMSISE-00 air averaged over the orbit, each UTC day with "
                     "its own F10.7/Ap from the bundled table, over --n epochs drawn as mc "
                     "draws them; with the balloon (B = CD (A1+A2+A3)/(m1+m2+m3), the balloon "
-                    "keeping its frontal area) and without (the host alone).  Writes "
-                    "deorbit.csv, lifetimes.csv and deorbit.png under --out (docs/deorbit.md).")
+                    "keeping its frontal area) and without (the host alone).  --runs K adds "
+                    "short coupled runs (trail angle, tether loads, pitch rates).  Writes "
+                    "deorbit.csv, lifetimes.csv, deorbit.png (and runs.csv) under --out "
+                    "(docs/deorbit.md).")
     options.add_satellite(p)
     p.add_argument("--from", dest="span", type=_from, default=_from("300:800:11"),
                    metavar="LOW:HIGH:N",
@@ -60,10 +64,10 @@ def add_parser(sub) -> None:
                         "pitch-rate envelope (runs.csv)")
     options.add_periods(p, default=6.0, help="orbits of each coupled run (default 6)")
     p.add_argument("--model", choices=[m for m in options.model_names()
-                                       if BY_NAME[m].orbit == "circular"],
+                                       if BY_NAME[m].orbit == "circular" and BY_NAME[m].geometry == "planar"],
                    default="objective-damper",
-                   help="model of the coupled runs (default objective-damper: the thesis "
-                        "damper pulls a balloon at rest across its line)")
+                   help="planar model of the coupled runs (default objective-damper: the "
+                        "thesis damper pulls a balloon at rest across its line)")
     options.add_out(p, "results/<satellite>/deorbit-seed<S>")
     options.add_quiet(p)
     options.add_overrides(p)

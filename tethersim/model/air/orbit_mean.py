@@ -21,7 +21,7 @@ history :data:`HISTORY_FIRST` .. the table's last observed day, each day with it
 F10.7 (previous day), F10.7a and Ap from the bundled table (tethersim.model.air.indices),
 each held inside the range MSIS is fitted for (F10.7 60-400 sfu: a day of a radio burst,
 such as 707.6 sfu on 2005-09-10, takes 400).
-Built once (~15 s) and kept on disk under the tethersim cache folder, keyed on the
+Built once (~35 s) and kept on disk under the tethersim cache folder, keyed on the
 table's UPDATED lines and the nodes.
 
 Past the last observed day the history repeats three solar cycles earlier
@@ -120,7 +120,7 @@ def _cache_path() -> str:
     first, last = history_span()
     key = hashlib.sha256(repr((_indices.bundled_table()["updated"], NODES.tolist(), str(first),
                                 str(last), LATTICE_N, LATTICE_G, VERSION)).encode()).hexdigest()[:16]
-    return os.path.join(os.path.dirname(cache_base()), "deorbit", f"orbit-mean-{key}.npy")
+    return os.path.join(cache_base(), "deorbit", f"orbit-mean-{key}.npy")
 
 
 def history(progress: bool | None = False) -> np.ndarray:
