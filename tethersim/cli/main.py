@@ -25,6 +25,7 @@ import warnings
 from tethersim._version import __version__
 from tethersim.cli import (
     compare,
+    deorbit,
     design,
     equilibrium,
     feasibility,
@@ -42,14 +43,15 @@ from tethersim.cli import (
 
 # in the order of `tethersim --help`
 COMMANDS = (run, validate, show, equilibrium, compare, forces, sweep, tune, report, headlines,
-            feasibility, design, mc)
+            feasibility, design, mc, deorbit)
 # the options that set a command's run sizes: simulate()'s size refusal, which names its
 # own arguments, names these instead (a command without --steps never blames --steps)
 SIZE_OPTIONS = {"run": "--periods/--steps", "compare": "--periods/--steps",
                 "forces": "--periods/--steps", "validate": "--periods", "sweep": "--periods",
                 "tune": "--periods", "report": "--periods", "headlines": "--periods",
                 "feasibility": "--periods/--max-lifetime",
-                "design": "--periods/--max-lifetime", "mc": "--periods/--max-lifetime"}
+                "design": "--periods/--max-lifetime", "mc": "--periods/--max-lifetime",
+                "deorbit": "--from/--n/--max-years"}
 
 
 def build_parser() -> options.Parser:

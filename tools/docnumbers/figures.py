@@ -189,3 +189,8 @@ from tools.docnumbers import figures_mc as _mc  # noqa: E402
 
 QUANTITIES.update(_mc.QUANTITIES)
 FIGURES += _mc.FIGURES
+
+from tools.docnumbers import figures_deorbit as _deorbit  # noqa: E402
+
+QUANTITIES.update(_deorbit.QUANTITIES)
+FIGURES += _deorbit.FIGURES
