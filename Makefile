@@ -49,9 +49,10 @@ lint: $(STAMP)
 test: $(STAMP) lint
 	$(PY) -m pytest -q -n $(JOBS) -m "not slow"
 
-## The slow tier: derivations of the 3-D and free-orbit models, long physics runs.
+## The slow tier: derivations of the 3-D and free-orbit models, long physics runs, every
+## README command as written (two processes, as make test).
 test-slow: $(STAMP)
-	$(PY) -m pytest -q -m slow
+	$(PY) -m pytest -q -n $(JOBS) -m slow
 
 ## Tests without the slow tier and without the contract and regeneration checks.
 test-fast: $(STAMP)
