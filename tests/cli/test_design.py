@@ -12,6 +12,7 @@ ARGS = ["design", "satI", "--vary", "c1=0.001:0.1", "--vary", "c2=0.001:0.1",
         "--max-lifetime", "6", "--workers", "1", "--quiet"]
 
 
+@pytest.mark.slow  # a search: the free-orbit kernels compile (~30 s cold)
 def test_design_writes_its_tables_and_plot_and_a_rerun_reads_the_store(tmp_path, capsys):
     out = tmp_path / "d"
     assert main(ARGS + ["--out", str(out)]) == 0

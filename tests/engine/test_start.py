@@ -69,6 +69,7 @@ def _dyneema(sat=SAT):
                        Fb1=t[1]["breaking_load"], Fb2=t[2]["breaking_load"])
 
 
+@pytest.mark.slow  # compiles the objective-damper model's Radau loop (~35 s cold)
 def test_real_lines_start_at_their_equilibrium_by_default():
     sat = _dyneema()
     # atol 1e-10: at rest a real line's force is known to its rounding level only, which
@@ -153,6 +154,7 @@ def test_the_command_line_takes_the_start(tmp_path, capsys):
     assert "start                            equilibrium" in capsys.readouterr().out
 
 
+@pytest.mark.slow  # compiles the objective-damper model's Radau loop (~35 s cold)
 def test_a_real_line_at_rest_under_the_default_atol_is_told_the_atol_it_needs():
     """At rest a real line's force is known to its rounding level only (~1e-11 m/s² on the
     balloon), which an atol of 1e-12 does not allow a step: the failure says what does."""

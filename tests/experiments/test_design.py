@@ -33,6 +33,7 @@ def reference(tmp_path_factory):
     return search(_spec(), tmp_path_factory.mktemp("ref"), workers=1, progress=False)
 
 
+@pytest.mark.slow  # runs searches: the free-orbit kernels compile (~30 s cold)
 def test_the_search_reports_a_reverified_pareto_set_that_respects_the_trail_bound(reference):
     front = reference["pareto"]
     assert front and len(reference["evaluations"]) == SMALL["budget"]
@@ -48,12 +49,14 @@ def test_the_search_reports_a_reverified_pareto_set_that_respects_the_trail_boun
                        for b in front)
 
 
+@pytest.mark.slow  # runs searches: the free-orbit kernels compile (~30 s cold)
 def test_the_same_seed_gives_the_same_pareto_set_on_two_threads(reference, tmp_path):
     res = search(_spec(), tmp_path, workers=2, progress=False)
     assert _front(res) == _front(reference)
     assert [r["F"] for r in res["evaluations"]] == [r["F"] for r in reference["evaluations"]]
 
 
+@pytest.mark.slow  # runs searches: the free-orbit kernels compile (~30 s cold)
 def test_an_interrupted_search_resumes_to_the_uninterrupted_result(reference, tmp_path):
     with pytest.raises(KeyboardInterrupt):
         search(_spec(), tmp_path, workers=1, progress=False, stop_after=1)
@@ -64,11 +67,13 @@ def test_an_interrupted_search_resumes_to_the_uninterrupted_result(reference, tm
     assert _front(res) == _front(reference)
 
 
+@pytest.mark.slow  # runs searches: the free-orbit kernels compile (~30 s cold)
 def test_another_seed_searches_other_designs(reference, tmp_path):
     res = search(_spec(seed=4), tmp_path, workers=1, progress=False)
     assert [r["key"] for r in res["evaluations"]] != [r["key"] for r in reference["evaluations"]]
 
 
+@pytest.mark.slow  # runs searches: the free-orbit kernels compile (~30 s cold)
 def test_a_store_of_other_settings_is_refused_in_one_line(reference, tmp_path):
     search(_spec(budget=6), tmp_path, workers=1, progress=False)
     with pytest.raises(ValueError, match="other settings") as exc:
@@ -76,6 +81,7 @@ def test_a_store_of_other_settings_is_refused_in_one_line(reference, tmp_path):
     assert "\n" not in str(exc.value)
 
 
+@pytest.mark.slow  # runs searches: the free-orbit kernels compile (~30 s cold)
 def test_a_design_the_plan_refuses_is_an_infeasible_record_not_a_crash(tmp_path):
     """Real fibre moduli: too stiff for the plan's explicit scheme."""
     spec = DesignSpec(SAT, variables=(("E1", 1e5, 1e6),), budget=4, population=4, periods=4,
@@ -87,6 +93,7 @@ def test_a_design_the_plan_refuses_is_an_infeasible_record_not_a_crash(tmp_path)
     assert "4 refused" in no_design_reason(spec, res["evaluations"])
 
 
+@pytest.mark.slow  # runs searches: the free-orbit kernels compile (~30 s cold)
 def test_a_tether_within_the_safety_factor_of_its_strength_makes_the_design_infeasible(tmp_path):
     """SatI's tethers pull ~0.1 N: a 0.05 N breaking load (0.033 N at the factor 1.5)
     breaks them, a 1000 N one does not."""
@@ -139,6 +146,7 @@ def test_a_bad_design_variable_is_refused_in_one_line_naming_it(kw, names):
     assert "\n" not in str(exc.value)
 
 
+@pytest.mark.slow  # runs searches: the free-orbit kernels compile (~30 s cold)
 def test_only_the_first_verify_designs_of_the_front_are_rerun(reference, tmp_path):
     res = search(_spec(verify=1), tmp_path, workers=1, progress=False)
     assert len(res["pareto"]) >= 2  # else this checks nothing
@@ -146,6 +154,7 @@ def test_only_the_first_verify_designs_of_the_front_are_rerun(reference, tmp_pat
     assert all(r["verified"] is None and r["respects_bound"] for r in res["pareto"][1:])
 
 
+@pytest.mark.slow  # runs searches: the free-orbit kernels compile (~30 s cold)
 def test_a_choice_takes_only_its_values_and_a_repeated_design_runs_once(tmp_path):
     spec = DesignSpec(SAT, variables=(("c1", 1e-3, 1e-1),), choices=(("A3", (6.0, 12.0)),),
                       budget=8, population=4, periods=4, max_lifetime_h=6)
@@ -155,6 +164,7 @@ def test_a_choice_takes_only_its_values_and_a_repeated_design_runs_once(tmp_path
     assert len(lines) == len({r["key"] for r in res["evaluations"]})
 
 
+@pytest.mark.slow  # runs searches: the free-orbit kernels compile (~30 s cold)
 def test_a_design_that_settles_only_in_vallados_air_is_reported_not_verified(tmp_path):
     """Soft dampers settle SatI at 200 km in about 1.6-2 h: inside the usable life in
     Vallado's air, past it in solar-maximum MSIS air (denser: the balloon is lost sooner)."""
@@ -184,6 +194,7 @@ def test_no_design_reason_names_the_shortfall_of_each_failure():
 
 
 @pytest.mark.slow
+@pytest.mark.slow  # runs searches: the free-orbit kernels compile (~30 s cold)
 def test_a_real_tether_the_explicit_plan_refuses_runs_with_the_implicit_method(tmp_path):
     """Steel-stiff 1 mm^2 lines (2e5 N, axial period ~0.08 s on the balloon) at the trail's
     lengths: refused by DOP853, run by Radau."""

@@ -12,6 +12,9 @@ from tethersim.experiments.sweep import Plan, SweepSpec, run_plan, run_point
 from tethersim.experiments.sweep.batch import run_block
 from tethersim.experiments.sweep.point import STATUS
 
+# the implicit block compiles its own Radau loop (~40 s cold): the slow tier (CI runs it)
+pytestmark = pytest.mark.slow
+
 SAT = ts.load_preset("satI")
 
 
