@@ -32,9 +32,8 @@ from tethersim.experiments.design import (
     objectives,
     outcome_of_record,
 )
-from tethersim.experiments.sweep.lock import StoreLock
+from tethersim.experiments.sweep.lines import LineStore
 
-SPEC_FILE = "spec.json"
 EVALUATIONS_FILE = "evaluations.jsonl"
 
 
@@ -49,38 +48,18 @@ class DesignStore:
 
     def __init__(self, path, spec: DesignSpec):
         self.path = Path(path)
-        self.path.mkdir(parents=True, exist_ok=True)
-        self.lock = StoreLock(self.path / EVALUATIONS_FILE)
-        self.lock.__enter__()
-        try:
-            text = spec.to_json()
-            spec_path = self.path / SPEC_FILE
-            if spec_path.exists() and spec_path.read_text() != text:
-                raise ValueError(f"{self.path} holds a design search of other settings: use "
-                                 f"another --out or --force")
-            spec_path.write_text(text)
-            self.evaluated, self.verified = {}, {}
-            file = self.path / EVALUATIONS_FILE
-            if file.exists():
-                for line in file.read_text().splitlines():
-                    try:
-                        d = json.loads(line)
-                    except ValueError:  # a line cut by an interruption: that design reruns
-                        continue
-                    (self.verified if "verify" in d else self.evaluated)[d["key"]] = d
-            self.fh = file.open("a")
-        except BaseException:
-            self.lock.__exit__(None, None, None)
-            raise
+        self.store = LineStore(self.path, EVALUATIONS_FILE, spec.to_json(), "a design search",
+                               "use another --out or --force").__enter__()
+        self.evaluated, self.verified = {}, {}
+        for d in self.store.rows():
+            (self.verified if "verify" in d else self.evaluated)[d["key"]] = d
 
     def put(self, entry: dict) -> None:
-        self.fh.write(json.dumps(entry) + "\n")
-        self.fh.flush()
+        self.store.put(entry)
         (self.verified if "verify" in entry else self.evaluated)[entry["key"]] = entry
 
     def close(self) -> None:
-        self.fh.close()
-        self.lock.__exit__(None, None, None)
+        self.store.__exit__(None, None, None)
 
 
 def search(spec: DesignSpec, out, *, workers=None, scheduler=None, dask_workers=None,

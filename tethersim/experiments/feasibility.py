@@ -50,7 +50,7 @@ from tethersim.analysis.feasibility import (
 from tethersim.analysis.outcome import outcome
 from tethersim.engine.release import continue_released
 from tethersim.engine.simulate import RTOL_RANGE, simulate
-from tethersim.experiments.sweep.lock import StoreLock
+from tethersim.experiments.sweep.lines import LineStore
 from tethersim.experiments.sweep.plan import ATOL_PER_RTOL
 from tethersim.model import atmosphere
 from tethersim.model.air import solar_cycle_densities
@@ -61,7 +61,6 @@ SOLAR_CASES = ("min", "mean", "max")
 POINTS_FILE = "points.jsonl"
 CHECK_FACTOR = 100  # the second tolerance is rtol / this (as SimResult.estimate_error)
 MIN_RTOL = RTOL_RANGE[0]  # simulate's floor: below CHECK_FACTOR x this the check runs coarser
-SPEC_FILE = "spec.json"
 # the satellite fields every point sets itself (the circular and free runs, the solar
 # cases): a satellite that gives another value is refused rather than silently overridden
 ATLAS_FIELDS = ("orbit", "j2", "eccentricity", "density_mode", "atmosphere", "density_scale",
@@ -333,34 +332,18 @@ def run_feasibility(spec: FeasibilitySpec, out, workers: int | None = None,
         When ``out`` holds another spec's points (one line, naming the folder).
     """
     out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
-    with StoreLock(out / POINTS_FILE):
-        spec_path, points_path = out / SPEC_FILE, out / POINTS_FILE
-        text = spec.to_json()
-        if spec_path.exists() and spec_path.read_text() != text:
-            raise ValueError(f"{out} holds a feasibility atlas of other settings: use another "
-                             f"--out or remove it")
-        spec_path.write_text(text)
-        done = {}
-        if points_path.exists():
-            for line in points_path.read_text().splitlines():
-                try:
-                    row = json.loads(line)
-                except ValueError:  # a line cut by an interruption: that point reruns
-                    continue
-                done[_key(row)] = row
+    with LineStore(out, POINTS_FILE, spec.to_json(), "a feasibility atlas") as store:
+        done = {_key(row): row for row in store.rows()}
         todo = [p for p in spec.points() if _key({"altitude_km": p[0], "A3_m2": p[1]}) not in done]
         from tqdm.auto import tqdm
 
         bar = tqdm(total=len(spec.points()), initial=len(spec.points()) - len(todo),
                    desc="feasibility", unit="point", disable=progress is False,
                    delay=0.0 if progress else 1.0, leave=False)
-        with ThreadPoolExecutor(max_workers=workers or 1) as pool, points_path.open("a") as fh, \
-                bar:
+        with ThreadPoolExecutor(max_workers=workers or 1) as pool, bar:
             for row in pool.map(lambda p: run_point(spec, *p), todo):
                 bar.update(1)
-                fh.write(json.dumps(row) + "\n")
-                fh.flush()
+                store.put(row)
                 done[_key(row)] = row
                 log(f"feasibility: {row['altitude_km']:g} km, A3 {row['A3_m2']:g} m^2: "
                     f"{row['verdict']}")

@@ -12,8 +12,6 @@ is dropped on reading and its sample runs again.  One writer at a time (StoreLoc
 from __future__ import annotations
 
 import concurrent.futures as cf
-import json
-import os
 from functools import lru_cache
 from pathlib import Path
 
@@ -21,10 +19,9 @@ from tethersim.analysis.classify import CLASSES, STABLE
 from tethersim.engine.result import STATUSES
 from tethersim.experiments.mc.inputs import sample_satellites
 from tethersim.experiments.mc.spec import PARTS, MCSpec
-from tethersim.experiments.sweep.lock import StoreLock
+from tethersim.experiments.sweep.lines import LineStore, read_lines
 from tethersim.experiments.sweep.point import STATUS
 
-SPEC_FILE = "spec.json"
 ROWS_FILE = "rows.jsonl"
 # how a free run ended -> the row's life_end ("balloon-lost": the model's domain, a
 # tether stretched 20x, docs/feasibility.md; "capped": still flying at max_lifetime_h)
@@ -102,16 +99,7 @@ def _key(row: dict) -> tuple:
 
 def read_rows(out) -> dict:
     """{(part index, i): row} of the store at ``out`` (cut lines dropped)."""
-    path = Path(out) / ROWS_FILE
-    done = {}
-    if path.exists():
-        for line in path.read_text().splitlines():
-            try:
-                row = json.loads(line)
-            except ValueError:  # a line cut by an interruption: that sample reruns
-                continue
-            done[_key(row)] = row
-    return done
+    return {_key(row): row for row in read_lines(Path(out) / ROWS_FILE)}
 
 
 def run_mc(spec: MCSpec, out, *, workers: int | None = None, scheduler: str | None = None,
@@ -148,38 +136,27 @@ def run_mc(spec: MCSpec, out, *, workers: int | None = None, scheduler: str | No
         On Ctrl-C (a KeyboardInterrupt); everything finished is in the store.
     """
     out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
-    rows_path = out / ROWS_FILE
-    with StoreLock(rows_path):
-        text = spec.to_json()
-        spec_path = out / SPEC_FILE
-        if spec_path.exists() and spec_path.read_text() != text:
-            raise ValueError(f"{out} holds a Monte Carlo of other settings: use another --out, "
-                             f"or remove it")
-        spec_path.write_text(text)
-        done = read_rows(out)
+    text = spec.to_json()
+    with LineStore(out, ROWS_FILE, text, "a Monte Carlo",
+                   "use another --out, or remove it") as store:
+        done = {_key(row): row for row in store.rows()}
         keys = [(p, i) for p, part in enumerate(PARTS) for i in range(spec.size(part))]
         todo = [k for k in keys if k not in done]
         if todo:
-            _fill(spec, text, out, done, todo, len(keys), workers, scheduler, dask_workers,
+            _fill(spec, text, store, done, todo, len(keys), workers, scheduler, dask_workers,
                   progress, stop_after)
         rows = [done[k] for k in keys]
-        lines = "".join(json.dumps(r) + "\n" for r in rows)
-        if (rows_path.read_text() if rows_path.exists() else "") != lines:
-            tmp = rows_path.with_suffix(".tmp")
-            tmp.write_text(lines)
-            os.replace(tmp, rows_path)  # sample order: the same bytes however it ran
+        store.rewrite(rows)  # sample order: the same bytes however it ran
     return rows
 
 
-def _fill(spec, text, out, done, todo, total, workers, scheduler, dask_workers, progress,
+def _fill(spec, text, store, done, todo, total, workers, scheduler, dask_workers, progress,
           stop_after) -> None:
     from tqdm.auto import tqdm
 
     from tethersim.experiments.sweep.runner import _blocks, block_size, executor
     count = 0
-    with executor(workers, scheduler, dask_workers) as (ex, minimum, n), \
-            (out / ROWS_FILE).open("a") as fh:
+    with executor(workers, scheduler, dask_workers) as (ex, minimum, n):
         # one sample is a settling run plus a free run (hours, at most max_lifetime_h)
         size = block_size(spec.periods + spec.free_plans[0].periods, len(todo), n, minimum)
         futures = []
@@ -193,9 +170,9 @@ def _fill(spec, text, out, done, todo, total, workers, scheduler, dask_workers, 
         def keep(pairs):
             for _, row in pairs:
                 if _key(row) not in done:
-                    fh.write(json.dumps(row) + "\n")
+                    store.put(row, flush=False)
                     done[_key(row)] = row
-            fh.flush()
+            store.flush()
 
         try:
             for fut in cf.as_completed(futures):
@@ -216,7 +193,7 @@ def _fill(spec, text, out, done, todo, total, workers, scheduler, dask_workers, 
                         pass
             bar.close()
             if isinstance(exc, KeyboardInterrupt):
-                raise MCInterrupted(out, len(done), total) from None
+                raise MCInterrupted(store.folder, len(done), total) from None
             raise
         bar.close()
 
