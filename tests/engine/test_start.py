@@ -87,6 +87,23 @@ def test_real_lines_start_at_their_equilibrium_by_default():
     assert np.max(np.abs(tension - tension[0])) < 1e-6 * np.max(tension[0])
 
 
+@pytest.mark.slow  # compiles the objective-damper model's Radau loop (~35 s cold)
+@pytest.mark.parametrize("altitude_km", [250.0, 300.0, 400.0])
+def test_stretched_real_bridle_starts_upright_where_thin_air_pulls_little(altitude_km):
+    """Above 200 km the balloon's drag is 5-100x weaker: the solver found only the boom
+    flipped half a turn (θ = -3.134 at 250 and 300 km) until the balloon was first hung on
+    its lines by geometry (steady._hung).  The upright start found must be an equilibrium
+    of the motion itself: a run from it does not move."""
+    sat = ts.with_tethers(SAT.replace(l10=30.83, l20=28.92, altitude=altitude_km * 1e3),
+                          "dyneema-sk75", 1e-3)
+    res = ts.simulate(sat, periods=0.5, method="implicit", rtol=1e-8, atol=1e-10,
+                      progress=False, model="objective-damper")
+    assert res.start == "equilibrium" and res.status == "ok"
+    assert abs(res.theta[0]) < 0.05  # upright: the stretched bridle's trim, -0.007 rad
+    assert np.max(np.abs(res.theta - res.theta[0])) < 1e-6
+    assert np.max(np.abs(res.states[:, :2] - res.states[0, :2])) < 1e-6  # metres
+
+
 def test_thesis_presets_start_where_given():
     res = ts.simulate(SAT, periods=0.01, progress=False)
     assert res.start == "given" and res.satellite is SAT

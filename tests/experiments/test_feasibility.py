@@ -114,3 +114,39 @@ def test_atlas_settings_are_checked_before_any_run():
     with pytest.raises(ts.SatelliteError, match="altitude"):
         FeasibilitySpec(sat, (1500.0,))
     assert json.loads(FeasibilitySpec(sat, (200.0,)).to_json())["areas"] == [12.0]
+
+
+def _dyneema(sat, lengths=(30.83, 28.92)):
+    """SatI on 1 mm Dyneema lines, by default at the thesis's stretched geometry
+    (docs/real-tethers.md)."""
+    return ts.with_tethers(sat.replace(l10=lengths[0], l20=lengths[1]), "dyneema-sk75", 1e-3)
+
+
+def test_real_lines_need_the_implicit_scheme_and_say_so_before_any_run():
+    from tethersim.experiments.feasibility import FeasibilitySpec
+    sat = _dyneema(ts.load_preset("satI"), (6.0, 6.0))  # axial period 0.05 s
+    with pytest.raises(ValueError) as exc:
+        FeasibilitySpec(sat, (200.0,))
+    assert "method='implicit'" in str(exc.value) and "\n" not in str(exc.value)
+    with pytest.raises(ValueError, match="method = 'rk4': allowed values adaptive, implicit"):
+        FeasibilitySpec(sat, (200.0,), method="rk4")
+    spec = FeasibilitySpec(sat, (200.0,), method="implicit", rtol=1e-6)
+    # real lines' runs keep their atol floor (engine/start.py), whatever the rtol
+    assert spec.run_options(1e-8)["atol"] == pytest.approx(1e-10)
+    assert json.loads(spec.to_json())["method"] == "implicit"
+    # an atlas of the default scheme writes the spec it wrote before the option existed
+    assert "method" not in json.loads(FeasibilitySpec(ts.load_preset("satI"), (200.0,)).to_json())
+
+
+@pytest.mark.slow
+def test_real_lines_atlas_runs_implicit_and_keeps_its_balloon(tmp_path):
+    from tethersim.experiments.feasibility import FeasibilitySpec, run_feasibility
+    spec = FeasibilitySpec(_dyneema(ts.load_preset("satI")), (300.0,), solar=("mean",),
+                           periods=0.5, max_lifetime_h=1.0, model="objective-damper",
+                           rtol=1e-6, method="implicit")
+    (row,) = run_feasibility(spec, tmp_path / "store", log=lambda *a: None, progress=False)
+    # a line of a few per cent failure strain is never stretched 20x: the balloon stays on,
+    # the free run reaches the cap, and the held circular runs end ok at their trim
+    assert math.isnan(row["balloon_lost_h"]) and row["free_end"] == "capped"
+    assert row["reentry_capped"] and row["nominal_status"] == "ok"
+    assert abs(row["theta_ss_rad"]) < 0.05 and row["verdict"] in VERDICTS

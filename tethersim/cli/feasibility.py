@@ -46,9 +46,12 @@ def add_parser(sub) -> None:
     p.add_argument("--workers", type=options.positive_int, default=None, metavar="N",
                    help="threads (default 1; at most 4 per core)")
     p.add_argument("--rtol", type=options.rtol_float, default=1e-10,
-                   help="DOP853 relative tolerance of every run (default 1e-10); the "
+                   help="relative tolerance of every run (default 1e-10); the "
                         "verdict's runs are repeated at rtol/100 and a verdict that differs "
                         "is reported as 'sensitive'")
+    p.add_argument("--method", choices=("adaptive", "implicit"), default="adaptive",
+                   help="scheme of every run: adaptive DOP853 (default) or implicit Radau IIA, "
+                        "for real (stiff) lines (--tethers; docs/real-tethers.md)")
     options.add_model(p)
     options.add_out(p, "results/<satellite>/feasibility")
     options.add_quiet(p)
@@ -96,7 +99,7 @@ def run(args) -> int:
     try:
         spec = FeasibilitySpec(sat, altitudes, areas, solar, periods=args.periods,
                                max_lifetime_h=args.max_lifetime, model=args.model,
-                               rtol=args.rtol)
+                               rtol=args.rtol, method=args.method)
     except SizeLimitError as exc:  # the option that sets the refused run, not the field
         names = {"periods": "--periods", "max_lifetime_h": "--max-lifetime"}
         raise exc.naming(names.get(exc.subject, exc.subject)) if exc.subject else exc from None

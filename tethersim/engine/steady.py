@@ -112,7 +112,15 @@ def steady_coordinates(sat: Satellite, model: str, guess) -> tuple:
     real = bool(real_tethers(sat))
     if res <= tol and (not real or _turn(q[ith] - g[ith]) <= math.pi / 2):
         return q, res
-    start = _stiff_start(sat, f, jac, g, planar) if real else None
+    start = None
+    if real:
+        p_free = parameter_vector(sat.replace(E1=0.0, E2=0.0, c1=0.0, c2=0.0), model)
+
+        def pull(q):
+            """q̈ without the tethers: the balloon's own tidal and drag acceleration."""
+            KERNELS[m].rhs(0.0, np.concatenate([q, zeros]), p_free, d)
+            return d[n:].copy()
+        start = _stiff_start(sat, f, jac, g, planar, pull)
     if start is not None:
         q2, res2, why2 = _powell(f, jac, start, n)
         if res2 <= tol and (res > tol or _turn(q2[ith] - g[ith]) < _turn(q[ith] - g[ith])):
@@ -143,7 +151,7 @@ def _powell(f, jac, g, n: int) -> tuple:
     return sol.x, float(np.max(np.abs(f(sol.x)))), " ".join(str(sol.message).split())
 
 
-def _stiff_start(sat, f, jac, g, planar) -> np.ndarray | None:
+def _stiff_start(sat, f, jac, g, planar, pull) -> np.ndarray | None:
     """The fallback's starting point (module docstring): the balloon balanced at each
     pitch, the stable pitch root nearest the guess; None if the scan finds no root."""
     ix, iy, ith = planar
@@ -154,7 +162,10 @@ def _stiff_start(sat, f, jac, g, planar) -> np.ndarray | None:
     def balanced(theta, near):
         """q at pitch theta with the balloon's two equations solved (or None)."""
         best = None
-        for cand in [near] + _candidates(sat, theta):
+        qq = q.copy()
+        qq[ith] = theta
+        hung = _hung(sat, theta, lambda xy: pull(_at(qq, balloon, xy))[balloon])
+        for cand in [hung, near] + _candidates(sat, theta):
             if cand is None:
                 continue
             qq = q.copy()
@@ -218,6 +229,73 @@ def _stiff_start(sat, f, jac, g, planar) -> np.ndarray | None:
     return min(roots, key=lambda r: r[:2])[2] if roots else None
 
 
+def _at(q, idx, values):
+    q = q.copy()
+    q[idx] = values
+    return q
+
+
+def _hung(sat, theta: float, pull, iterations: int = 30):
+    """The balloon at rest on stiff lines at pitch θ, by geometry (a first guess of its
+    balance that Powell's steps need not find across the lines' taut/slack kink).
+
+    A line's stretch under the balloon's load is ~1e-7 of its length, so the balloon
+    sits where the lines reach, stretched by their tensions: at the apex of the bridle
+    triangle when the load ``pull`` (its acceleration without the tethers, at the
+    balloon's position) lies between the two lines (both tensions T_j ≥ 0 in
+    m3 a + T1 u1 + T2 u2 = 0, u_j towards line j's end), else hanging straight along the
+    load from the one taut line's end.  The tensions stretch the lengths to
+    l_j0 (1 + T_j / E_j) and the position is iterated with the load at it.  None where
+    the geometry has no answer (the lines cannot meet, or no load).
+    """
+    s, c = math.sin(theta), math.cos(theta)
+    ends = (np.array([sat.b * s, sat.b * c]), np.array([-sat.a * s, -sat.a * c]))
+    rest, ea = (sat.l10, sat.l20), (sat.E1, sat.E2)
+    lengths = list(rest)
+    x = _apex(ends, lengths)
+    if x is None:
+        return None
+    for _ in range(iterations):
+        a = np.asarray(pull(x), float)
+        load = sat.m3 * float(np.hypot(*a))
+        if not load > 0:
+            return None
+        u = [(e - x) / np.hypot(*(e - x)) for e in ends]
+        try:
+            t = np.linalg.solve(np.column_stack(u), -sat.m3 * a)
+        except np.linalg.LinAlgError:
+            t = np.array([-1.0, -1.0])
+        if t[0] >= 0 and t[1] >= 0:
+            lengths = [l0 * (1 + tj / e) for l0, tj, e in zip(rest, t, ea)]
+            new = _apex(ends, lengths)
+        else:  # one line holds the balloon: the one the load leans on
+            j = 0 if t[0] > t[1] else 1
+            new = ends[j] + rest[j] * (1 + load / ea[j]) * a / np.hypot(*a)
+        if new is None:
+            return None
+        if np.max(np.abs(new - x)) <= 1e-13 * max(rest):
+            return new
+        x = new
+    return x
+
+
+def _apex(ends, lengths):
+    """The wake-side (+x) point at distances ``lengths`` from ``ends``, or None."""
+    p1, p2 = ends
+    base = p2 - p1
+    d = float(np.hypot(*base))
+    l1, l2 = lengths
+    if not (d > 0 and abs(l1 - l2) < d < l1 + l2):
+        return None
+    along = (l1 ** 2 - l2 ** 2 + d ** 2) / (2 * d)
+    h = math.sqrt(max(l1 ** 2 - along ** 2, 0.0))
+    u = base / d
+    normal = np.array([u[1], -u[0]])
+    if normal[0] < 0:
+        normal = -normal  # the wake side
+    return p1 + along * u + h * normal
+
+
 class _Unbalanced(Exception):
     """The balloon's balance has no solution at a pitch of the bracket."""
 
@@ -228,15 +306,7 @@ def _candidates(sat, theta: float) -> list:
     s, c = math.sin(theta), math.cos(theta)
     p1, p2 = np.array([sat.b * s, sat.b * c]), np.array([-sat.a * s, -sat.a * c])
     out = [p1 + [sat.l10, 0.0], p2 + [sat.l20, 0.0]]
-    base = p2 - p1
-    d = float(np.hypot(*base))
-    l1, l2 = sat.l10, sat.l20
-    if d > 0 and abs(l1 - l2) < d < l1 + l2:
-        along = (l1 ** 2 - l2 ** 2 + d ** 2) / (2 * d)
-        h = math.sqrt(max(l1 ** 2 - along ** 2, 0.0))
-        u = base / d
-        normal = np.array([u[1], -u[0]])
-        if normal[0] < 0:
-            normal = -normal  # the wake side
-        out.insert(0, p1 + along * u + h * normal)
+    apex = _apex((p1, p2), (sat.l10, sat.l20))
+    if apex is not None:
+        out.insert(0, apex)
     return out

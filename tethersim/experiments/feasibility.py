@@ -48,8 +48,10 @@ from tethersim.analysis.feasibility import (
     verdict,
 )
 from tethersim.analysis.outcome import outcome
+from tethersim.engine.arguments import check_scheme
 from tethersim.engine.release import continue_released
 from tethersim.engine.simulate import RTOL_RANGE, simulate
+from tethersim.engine.start import atol_floor
 from tethersim.experiments.sweep.lines import LineStore
 from tethersim.experiments.sweep.plan import ATOL_PER_RTOL
 from tethersim.model import atmosphere
@@ -60,6 +62,7 @@ from tethersim.model.satellite import Satellite
 SOLAR_CASES = ("min", "mean", "max")
 POINTS_FILE = "points.jsonl"
 CHECK_FACTOR = 100  # the second tolerance is rtol / this (as SimResult.estimate_error)
+METHODS = ("adaptive", "implicit")  # the schemes that locate the switches and stops
 MIN_RTOL = RTOL_RANGE[0]  # simulate's floor: below CHECK_FACTOR x this the check runs coarser
 # the satellite fields every point sets itself (the circular and free runs, the solar
 # cases): a satellite that gives another value is refused rather than silently overridden
@@ -90,6 +93,10 @@ class FeasibilitySpec:
     rtol : float
         Adaptive tolerance of every run; the verdict's runs are repeated at
         :attr:`check_rtol`.
+    method : {"adaptive", "implicit"}
+        The scheme of every run with tethers: DOP853, or Radau IIA for real (stiff)
+        lines (engine/integrators/radau.py); their atol is at least the lines' floor
+        (engine/start.py atol_floor).
     """
 
     satellite: Satellite
@@ -100,6 +107,7 @@ class FeasibilitySpec:
     max_lifetime_h: float = 240.0
     model: str = "derived"
     rtol: float = 1e-10
+    method: str = "adaptive"
 
     def __post_init__(self):
         from tethersim.engine.guards import check_runs  # before validating 10^5 points
@@ -109,6 +117,9 @@ class FeasibilitySpec:
         if not (isinstance(self.rtol, (int, float)) and MIN_RTOL <= self.rtol <= RTOL_RANGE[1]):
             raise ValueError(f"rtol = {self.rtol!r}: allowed range {MIN_RTOL:g} <= rtol <= "
                              f"{RTOL_RANGE[1]:g}")
+        if self.method not in METHODS:
+            raise ValueError(f"method = {self.method!r}: allowed values {', '.join(METHODS)}")
+        check_scheme(self.satellite, self.method)  # real lines: before any point runs
         _check_atlas_fields(self.satellite)
         if not self.areas:
             object.__setattr__(self, "areas", (self.satellite.A3,))
@@ -172,8 +183,15 @@ class FeasibilitySpec:
         return sat.replace(atmosphere="nrlmsise00", epoch=SOLAR_CYCLE_EPOCH, f107=f107,
                            f107a=f107a, ap=ap)
 
+    def run_options(self, rtol: float) -> dict:
+        """simulate()'s integrator options of every run at ``rtol``."""
+        return dict(method=self.method, rtol=rtol,
+                    atol=max(rtol * ATOL_PER_RTOL, atol_floor(self.satellite)))
+
     def to_json(self) -> str:
         d = asdict(self)
+        if d["method"] == "adaptive":  # a store written before the method existed resumes
+            del d["method"]
         d["satellite"] = self.satellite.to_dict()
         d["satellite"]["initial"] = list(d["satellite"]["initial"])
         return json.dumps(d, sort_keys=True, default=list)
@@ -217,8 +235,8 @@ def free_ends(spec: FeasibilitySpec, sat: Satellite, rtol: float) -> dict:
         ``"capped"``) and ``end_altitude`` [m] (where the free run ended).
     """
     cap = spec.max_lifetime_h * 3600
-    free = _finished(simulate(sat, periods=cap / sat.period, model=spec.model, rtol=rtol,
-                              atol=rtol * ATOL_PER_RTOL, progress=False))
+    free = _finished(simulate(sat, periods=cap / sat.period, model=spec.model, progress=False,
+                              **spec.run_options(rtol)))
     lost, reentry = math.nan, math.nan
     if free.status == "ok":
         reentry = math.inf
@@ -248,7 +266,7 @@ def _finished(res):
 
 def _decide(spec: FeasibilitySpec, h_km: float, a3: float, rtol: float) -> dict:
     """The verdict runs of a point at one tolerance: free, nominal and trims."""
-    kw = dict(model=spec.model, progress=False, rtol=rtol, atol=rtol * ATOL_PER_RTOL)
+    kw = dict(model=spec.model, progress=False, **spec.run_options(rtol))
     ends = free_ends(spec, spec.free(h_km, a3), rtol)
     sat = spec.circular(h_km, a3)
     nominal = outcome(_finished(simulate(sat, periods=spec.periods, **kw)), forces=False)
