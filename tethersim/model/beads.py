@@ -1,0 +1,375 @@
+"""Tethers with mass: each line a chain of N point-mass beads (issue 21, item 3).
+
+Written once for any N over a planar, circular-orbit base model (``derived``,
+``exact-gravity``, ``objective-damper``), not derived per N: every body of the
+thesis model is a point mass, so in the rotating frame L the mass matrix is
+diagonal (m3 on δx, δy; I = m1 b² + m2 a² on θ) and a bead obeys the balloon's
+own translational equations (the model's gravity law, Coriolis and centrifugal
+terms) plus the forces of its two segments.  The kernel therefore
+
+1. calls the base model's generated ``rhs`` with the tethers switched off
+   (E1 = E2 = c1 = c2 = 0 in a copy of p) for the boom and the balloon, drag
+   included;
+2. calls it again at each bead's position with every drag area zero, and
+   takes the balloon rows (δẍ, δÿ) as the bead's gravity-inertial acceleration
+   (those rows do not depend on θ nor, with Q = 0, on m3);
+3. adds the segment forces: on the balloon divided by m3, on the boom ends as
+   the torque Q_θ = F · ∂r_end/∂θ divided by I (Eq 3.31; the boom's COM is held,
+   so a force on the boom acts only through Q_θ, as in the base model), on each
+   bead divided by its mass.
+
+Segments (tether j, rest length l_j0, N beads, N + 1 segments of rest length
+l_s = l_j0 / (N + 1)), each tension-only, slack when λ_s ≤ l_s, as Eqs 3.35-3.36:
+
+* spring: T = E_j (λ_s / l_s − 1) along the segment, E_j being E·A [N] as in
+  the base model, so a segment's stiffness E_j / l_s is (N + 1) times the
+  tether's and the chain in series has the tether's static stiffness;
+* damper, while taut: the base model's law with c_s = (N + 1) c_j (dashpots in
+  series): −c_s (ṙ_far − ṙ_near) on the far node for the thesis damper
+  (Eqs 3.43-3.44, inertial relative velocity), c_s λ̇_s along the segment for
+  the Kelvin-Voigt damper of ``objective-damper``;
+* drag (optional, ``CDt`` = 0 by default): a cylinder of diameter d_j and the
+  segment's length, −½ ρ3 C_Dt d_j λ_s |v_n| v_n with v_n the air-relative
+  velocity of the segment's midpoint normal to the segment (the cross-flow
+  principle of KiteModels.jl's tether drag), half to each end node.  ρ3 is the
+  balloon's density: the beads sit within a tether length of it.
+
+Mass lumping (the lumped-mass rule of GTOSS and KiteModels.jl): each segment
+carries μ_j / (N + 1) [kg], half to each end node, so an inner bead has
+m_b = μ_j / (N + 1) and each end of the line gets μ_j / (2 (N + 1)): added to
+the balloon's m3 and to the end body's m1 (tether 1) or m2 (tether 2) before
+the base model runs, so the added end masses enter its gravity-gradient torque
+and inertia exactly as the bodies' own masses do.  With N = 0 half of each line
+sits at each end.
+
+State (SI): the base model's coordinates, then the beads' offsets from the
+COM point (0, r0) in L, tether 1 then tether 2, each from the boom end to the
+balloon, then all their rates in the same order; parameter vector: the base
+model's, then :data:`EXTRA_PARAMETERS`.  tests/model/test_beads.py and
+tests/derive/test_beads_lagrange.py check it (docs/beads.md).
+"""
+from __future__ import annotations
+
+import math
+from collections import namedtuple
+
+import numpy as np
+from numba import njit
+
+from tethersim.model.registry import get_model
+
+#: the base models a chain can be added to (planar, circular orbit, derived tethers)
+BASES = ("derived", "exact-gravity", "objective-damper")
+#: beads per tether a chain may have
+N_MAX = 64
+#: parameters after the base model's: tether masses [kg], diameters [m], drag coefficient
+EXTRA_PARAMETERS = ("mt1", "mt2", "dt1", "dt2", "CDt")
+EXTRA_UNITS = ("kg", "kg", "m", "m", "1")
+# plausible ranges of the extra parameters (SI): a line from a 1 mm thread to a 10 km cable
+EXTRA_RANGES = {"mt1": (0.0, 1e4), "mt2": (0.0, 1e4), "dt1": (0.0, 0.1), "dt2": (0.0, 0.1),
+                "CDt": (0.0, 4.0)}
+_BASE_NAMES = ("m1", "m2", "m3", "A1", "A2", "A3", "a", "b", "l10", "l20", "E1", "E2", "c1",
+               "c2", "CD", "r0", "mu", "omega", "omega_earth", "rho1", "rho2", "rho3")
+NB = len(_BASE_NAMES)  # length of the base models' parameter vector
+(_M1, _M2, _M3, _A1, _A2, _A3, _A, _B, _L10, _L20, _E1, _E2, _C1, _C2, _CD, _R0, _MU, _OMEGA,
+ _OMEGA_E, _RHO1, _RHO2, _RHO3) = range(NB)
+
+Kernels = namedtuple("Kernels", "rhs jacobi tensions")
+
+
+def check_base(base: str) -> None:
+    """Raise a one-line ValueError unless ``base`` is in :data:`BASES`."""
+    if base not in BASES:
+        raise ValueError(f"bead base model = {base!r}: allowed values {', '.join(BASES)}")
+    if tuple(get_model(base).parameters) != _BASE_NAMES:  # a layout change in generated/
+        raise ValueError(f"bead base model = {base!r}: its parameter vector is not the "
+                         f"thesis layout {_BASE_NAMES}")
+
+
+def check_beads(n) -> int:
+    """N as an int; one-line ValueError unless 0 ≤ N ≤ :data:`N_MAX`."""
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 0 <= n <= N_MAX:
+        raise ValueError(f"beads per tether N = {n!r}: allowed an integer 0 to {N_MAX}")
+    return int(n)
+
+
+def state_names(base: str, n: int) -> tuple:
+    """(names, SI units) of the chain model's state: base coordinates, beads, rates."""
+    check_base(base)
+    n = check_beads(n)
+    m = get_model(base)
+    nq = m.n_coordinates
+    q = list(m.state[:nq])
+    units = list(m.state_units[:nq])
+    for j in (1, 2):
+        for k in range(1, n + 1):
+            q += [f"x_{j}_{k}", f"y_{j}_{k}"]
+            units += ["m", "m"]
+    return (tuple(q) + tuple(f"{s}_dot" for s in q),
+            tuple(units) + tuple(f"{u}/s" for u in units))
+
+
+def parameter_vector(base_p, mt1: float, mt2: float, dt1: float = 0.0, dt2: float = 0.0,
+                     CDt: float = 0.0, n: int = 1) -> np.ndarray:
+    """The chain model's parameter vector: the base model's p, then :data:`EXTRA_PARAMETERS`.
+
+    Parameters
+    ----------
+    base_p : array_like
+        The base model's parameter vector (tethersim.model.inputs.parameter_vector).
+    mt1, mt2 : float
+        Mass of tether 1 and 2 [kg]; > 0 when N ≥ 1 (a bead needs mass).
+    dt1, dt2 : float, optional
+        Tether diameters [m] for the segment drag.
+    CDt : float, optional
+        Segment drag coefficient on the normal flow (0: no tether drag).
+    n : int, optional
+        Beads per tether (for the mass check).
+
+    Raises
+    ------
+    ValueError
+        One line naming the field and its allowed range.
+    """
+    n = check_beads(n)
+    base_p = np.asarray(base_p, dtype=np.float64)
+    if base_p.shape != (NB,):
+        raise ValueError(f"base parameter vector: length {base_p.shape} given, {NB} needed")
+    values = {"mt1": mt1, "mt2": mt2, "dt1": dt1, "dt2": dt2, "CDt": CDt}
+    for name, v in values.items():
+        lo, hi = EXTRA_RANGES[name]
+        if not (isinstance(v, (int, float, np.floating)) and lo <= v <= hi):
+            raise ValueError(f"{name} = {v!r}: allowed {lo:g} to {hi:g} "
+                             f"{EXTRA_UNITS[EXTRA_PARAMETERS.index(name)]}")
+        if n > 0 and name in ("mt1", "mt2") and v <= 0.0:
+            raise ValueError(f"{name} = {v!r}: a chain of {n} beads needs a tether mass > 0 "
+                             f"(up to {hi:g} kg)")
+    return np.concatenate([base_p, np.array([mt1, mt2, dt1, dt2, CDt], dtype=np.float64)])
+
+
+def straight_chain(y_base, n: int, p) -> np.ndarray:
+    """A chain state from a base-model state: beads evenly spaced on the straight lines.
+
+    Each tether's beads sit at k/(N+1) of the way from its boom end to the balloon,
+    their rates interpolated the same way between the end's and the balloon's
+    velocities in L (a rigid straight line: taut wherever the tether was).
+    """
+    n = check_beads(n)
+    y_base = np.asarray(y_base, dtype=np.float64)
+    dx, dy, th, dxd, dyd, thd = y_base
+    a, b = p[_A], p[_B]
+    s, c = math.sin(th), math.cos(th)
+    ends = (((b * s, b * c), (b * thd * c, -b * thd * s)),
+            ((-a * s, -a * c), (-a * thd * c, a * thd * s)))
+    pos, vel = [dx, dy, th], [dxd, dyd, thd]
+    for (ex, ey), (evx, evy) in ends:
+        for k in range(1, n + 1):
+            f = k / (n + 1)
+            pos += [ex + f * (dx - ex), ey + f * (dy - ey)]
+            vel += [evx + f * (dxd - evx), evy + f * (dyd - evy)]
+    return np.array(pos + vel, dtype=np.float64)
+
+
+def _make(base_rhs, base_jacobi, objective: bool) -> Kernels:
+    """Compile the chain kernels over one base model's rhs and jacobi (module docstring)."""
+
+    @njit(inline="always")
+    def _nodes(y, p, n, j, nodes):
+        """nodes[k] = (x, y, ẋ, ẏ) of tether j's node k: 0 boom end, 1..n beads, n+1 balloon."""
+        nq = 3 + 4 * n
+        th, thd = y[2], y[nq + 2]
+        s, c = math.sin(th), math.cos(th)
+        arm = p[_B] if j == 0 else -p[_A]  # tip-mass at +b, bus at −a along the boom
+        nodes[0, 0] = arm * s
+        nodes[0, 1] = arm * c
+        nodes[0, 2] = arm * thd * c
+        nodes[0, 3] = -arm * thd * s
+        for k in range(n):
+            i = 3 + 2 * (j * n + k)
+            nodes[k + 1, 0] = y[i]
+            nodes[k + 1, 1] = y[i + 1]
+            nodes[k + 1, 2] = y[nq + i]
+            nodes[k + 1, 3] = y[nq + i + 1]
+        nodes[n + 1, 0] = y[0]
+        nodes[n + 1, 1] = y[1]
+        nodes[n + 1, 2] = y[nq]
+        nodes[n + 1, 3] = y[nq + 1]
+
+    @njit
+    def _segment_forces(y, p, n, j, nodes, F, T):
+        """F[k] += force on node k from tether j's segments; T[s] = segment s's tension [N]."""
+        l_s = p[_L10 + j] / (n + 1)
+        E = p[_E1 + j]
+        c_s = (n + 1) * p[_C1 + j]
+        omega = p[_OMEGA]
+        w_air = omega - p[_OMEGA_E]  # air-relative rotation rate of L (Eq 3.33)
+        r0 = p[_R0]
+        cdt = 0.5 * p[_RHO3] * p[NB + 4] * p[NB + 2 + j]  # ½ ρ3 C_Dt d_j
+        for s in range(n + 1):
+            ddx = nodes[s + 1, 0] - nodes[s, 0]
+            ddy = nodes[s + 1, 1] - nodes[s, 1]
+            lam = math.sqrt(ddx * ddx + ddy * ddy)
+            tx, ty = ddx / lam, ddy / lam  # from the near node (s) to the far one (s+1)
+            # inertial relative velocity of the ends: Δṙ_L + ω ẑ × Δr (Eq 3.13)
+            wx = nodes[s + 1, 2] - nodes[s, 2] - omega * ddy
+            wy = nodes[s + 1, 3] - nodes[s, 3] + omega * ddx
+            fx = fy = 0.0  # force on the far node
+            T[s] = 0.0
+            if lam > l_s:  # taut (Eqs 3.35-3.36)
+                ten = E * (lam / l_s - 1.0)
+                T[s] = ten
+                fx -= ten * tx
+                fy -= ten * ty
+                if objective:  # Kelvin-Voigt: c λ̇ along the segment
+                    rate = tx * wx + ty * wy
+                    fx -= c_s * rate * tx
+                    fy -= c_s * rate * ty
+                else:  # thesis damper, Eqs 3.43-3.44
+                    fx -= c_s * wx
+                    fy -= c_s * wy
+            F[s + 1, 0] += fx
+            F[s + 1, 1] += fy
+            F[s, 0] -= fx
+            F[s, 1] -= fy
+            if cdt > 0.0:  # cross-flow drag of the segment, half to each end
+                mx = 0.5 * (nodes[s, 0] + nodes[s + 1, 0])
+                my = 0.5 * (nodes[s, 1] + nodes[s + 1, 1])
+                vx = 0.5 * (nodes[s, 2] + nodes[s + 1, 2]) - w_air * (r0 + my)
+                vy = 0.5 * (nodes[s, 3] + nodes[s + 1, 3]) + w_air * mx
+                along = vx * tx + vy * ty
+                nx, ny = vx - along * tx, vy - along * ty
+                k = -0.5 * cdt * lam * math.sqrt(nx * nx + ny * ny)
+                F[s, 0] += k * nx
+                F[s, 1] += k * ny
+                F[s + 1, 0] += k * nx
+                F[s + 1, 1] += k * ny
+
+    @njit
+    def _base_parameters(p, n, pb):
+        """pb = the base p with the tethers off and the line's end masses added."""
+        for i in range(NB):
+            pb[i] = p[i]
+        pb[_E1] = pb[_E2] = pb[_C1] = pb[_C2] = 0.0
+        e1 = p[NB] / (2.0 * (n + 1))
+        e2 = p[NB + 1] / (2.0 * (n + 1))
+        pb[_M1] += e1
+        pb[_M2] += e2
+        pb[_M3] += e1 + e2
+
+    @njit
+    def rhs(t, y, p, dydt):
+        """dy/dt of the chain model (SI; state and p as the module docstring)."""
+        nq = y.shape[0] // 2
+        n = (nq - 3) // 4
+        pb = np.empty(NB)
+        _base_parameters(p, n, pb)
+        yb = np.empty(6)
+        db = np.empty(6)
+        for i in range(3):
+            yb[i] = y[i]
+            yb[3 + i] = y[nq + i]
+        base_rhs(t, yb, pb, db)
+        for i in range(nq):
+            dydt[i] = y[nq + i]
+        dydt[nq] = db[3]
+        dydt[nq + 1] = db[4]
+        dydt[nq + 2] = db[5]
+        # the beads' gravity-inertial accelerations: the balloon rows, no drag areas
+        pb[_A1] = pb[_A2] = pb[_A3] = 0.0
+        for i in range(3, nq, 2):
+            yb[0] = y[i]
+            yb[1] = y[i + 1]
+            yb[3] = y[nq + i]
+            yb[4] = y[nq + i + 1]
+            base_rhs(t, yb, pb, db)
+            dydt[nq + i] = db[3]
+            dydt[nq + i + 1] = db[4]
+        m3 = p[_M3] + (p[NB] + p[NB + 1]) / (2.0 * (n + 1))
+        m1 = p[_M1] + p[NB] / (2.0 * (n + 1))
+        m2 = p[_M2] + p[NB + 1] / (2.0 * (n + 1))
+        inertia = m1 * p[_B] ** 2 + m2 * p[_A] ** 2
+        s, c = math.sin(y[2]), math.cos(y[2])
+        nodes = np.empty((n + 2, 4))
+        F = np.empty((n + 2, 2))
+        T = np.empty(n + 1)
+        for j in range(2):
+            _nodes(y, p, n, j, nodes)
+            F[:, :] = 0.0
+            _segment_forces(y, p, n, j, nodes, F, T)
+            arm = p[_B] if j == 0 else -p[_A]
+            # Q_θ = F · ∂r_end/∂θ, r_end = arm (sin θ, cos θ) (Eq 3.31)
+            dydt[nq + 2] += arm * (F[0, 0] * c - F[0, 1] * s) / inertia
+            dydt[nq] += F[n + 1, 0] / m3
+            dydt[nq + 1] += F[n + 1, 1] / m3
+            if n > 0:
+                mb = p[NB + j] / (n + 1)
+                for k in range(n):
+                    i = nq + 3 + 2 * (j * n + k)
+                    dydt[i] += F[k + 1, 0] / mb
+                    dydt[i + 1] += F[k + 1, 1] / mb
+
+    @njit
+    def tensions(y, p, out):
+        """out[j, s] = spring tension of tether j's segment s [N] (0 slack), boom end first."""
+        nq = y.shape[0] // 2
+        n = (nq - 3) // 4
+        nodes = np.empty((n + 2, 4))
+        F = np.zeros((n + 2, 2))
+        for j in range(2):
+            _nodes(y, p, n, j, nodes)
+            _segment_forces(y, p, n, j, nodes, F, out[j])
+
+    @njit
+    def jacobi(y, p):
+        """Jacobi integral of the chain model [J]: constant with every drag and damper off.
+
+        The base model's (tethers off, end masses added), each bead's as a balloon of
+        the bead's mass with no boom, and ½ (E_j / l_s)(λ_s − l_s)² per taut segment.
+        """
+        nq = y.shape[0] // 2
+        n = (nq - 3) // 4
+        pb = np.empty(NB)
+        _base_parameters(p, n, pb)
+        yb = np.empty(6)
+        for i in range(3):
+            yb[i] = y[i]
+            yb[3 + i] = y[nq + i]
+        h = base_jacobi(yb, pb)
+        pb[_M1] = pb[_M2] = 0.0
+        yb[2] = yb[5] = 0.0
+        nodes = np.empty((n + 2, 4))
+        for j in range(2):
+            if n > 0:
+                pb[_M3] = p[NB + j] / (n + 1)
+                for k in range(n):
+                    i = 3 + 2 * (j * n + k)
+                    yb[0] = y[i]
+                    yb[1] = y[i + 1]
+                    yb[3] = y[nq + i]
+                    yb[4] = y[nq + i + 1]
+                    h += base_jacobi(yb, pb)
+            _nodes(y, p, n, j, nodes)
+            l_s = p[_L10 + j] / (n + 1)
+            for s in range(n + 1):
+                lam = math.hypot(nodes[s + 1, 0] - nodes[s, 0], nodes[s + 1, 1] - nodes[s, 1])
+                if lam > l_s:
+                    h += 0.5 * p[_E1 + j] / l_s * (lam - l_s) ** 2
+        return h
+
+    return Kernels(rhs, jacobi, tensions)
+
+
+_CACHE: dict = {}
+
+
+def kernels(base: str = "derived") -> Kernels:
+    """The compiled chain kernels (rhs, jacobi, tensions) over base model ``base``.
+
+    Compiled on first use for each base (a few seconds); the same number of beads
+    per tether on both lines, read from the state's length.
+    """
+    check_base(base)
+    if base not in _CACHE:
+        module = get_model(base).module
+        _CACHE[base] = _make(module.rhs, module.jacobi, base == "objective-damper")
+    return _CACHE[base]
