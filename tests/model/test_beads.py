@@ -45,7 +45,9 @@ def _tether_terms(y, p):
     return out
 
 
-@pytest.mark.parametrize("base", beads.BASES)
+# each base compiles its own chain kernel (~10-20 s cold): the other two in the slow tier
+@pytest.mark.parametrize("base", ["derived", *(pytest.param(b, marks=pytest.mark.slow)
+                                               for b in beads.BASES[1:])])
 def test_zero_beads_reproduce_the_base_model_to_1e_12(base):
     """N = 0, massless lines: the chain kernel's own tether forces (one segment per
     line) against the generated rhs, taut and slack tethers, drag and dampers on."""
