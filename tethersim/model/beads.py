@@ -1,0 +1,375 @@
+"""Tethers with mass: each line a chain of N point-mass beads (issue 21, item 3).
+
+Written once for any N over a planar, circular-orbit base model (``derived``,
+``exact-gravity``, ``objective-damper``), not derived per N: every body of the
+thesis model is a point mass, so in the rotating frame L the mass matrix is
+diagonal (m3 on δx, δy; I = m1 b² + m2 a² on θ) and a bead obeys the balloon's
+own translational equations (the model's gravity law, Coriolis and centrifugal
+terms) plus the forces of its two segments.  The kernel therefore
+
+1. calls the base model's generated ``rhs`` with the tethers switched off
+   (E1 = E2 = c1 = c2 = 0 in a copy of p) for the boom and the balloon, drag
+   included;
+2. calls it again at each bead's position with every drag area zero, and
+   takes the balloon rows (δẍ, δÿ) as the bead's gravity-inertial acceleration
+   (those rows do not depend on θ nor, with Q = 0, on m3);
+3. adds the segment forces: on the balloon divided by m3, on the boom ends as
+   the torque Q_θ = F · ∂r_end/∂θ divided by I (Eq 3.31; the boom's COM is held,
+   so a force on the boom acts only through Q_θ, as in the base model), on each
+   bead divided by its mass.
+
+Segments (tether j, rest length l_j0, N beads, N + 1 segments of rest length
+l_s = l_j0 / (N + 1)), each tension-only, slack when λ_s ≤ l_s, as Eqs 3.35-3.36:
+
+* spring: T = E_j (λ_s / l_s − 1) along the segment, E_j being E·A [N] as in
+  the base model, so a segment's stiffness E_j / l_s is (N + 1) times the
+  tether's and the chain in series has the tether's static stiffness;
+* damper, while taut: the base model's law with c_s = (N + 1) c_j (dashpots in
+  series): −c_s (ṙ_far − ṙ_near) on the far node for the thesis damper
+  (Eqs 3.43-3.44, inertial relative velocity), c_s λ̇_s along the segment for
+  the Kelvin-Voigt damper of ``objective-damper``;
+* drag (optional, ``CDt`` = 0 by default): a cylinder of diameter d_j and the
+  segment's length, −½ ρ3 C_Dt d_j λ_s |v_n| v_n with v_n the air-relative
+  velocity of the segment's midpoint normal to the segment (the cross-flow
+  principle of KiteModels.jl's tether drag), half to each end node.  ρ3 is the
+  balloon's density: the beads sit within a tether length of it.
+
+Mass lumping (the lumped-mass rule of GTOSS and KiteModels.jl): each segment
+carries μ_j / (N + 1) [kg], half to each end node, so an inner bead has
+m_b = μ_j / (N + 1) and each end of the line gets μ_j / (2 (N + 1)): added to
+the balloon's m3 and to the end body's m1 (tether 1) or m2 (tether 2) before
+the base model runs, so the added end masses enter its gravity-gradient torque
+and inertia exactly as the bodies' own masses do.  With N = 0 half of each line
+sits at each end.
+
+State (SI): the base model's coordinates, then the beads' offsets from the
+COM point (0, r0) in L, tether 1 then tether 2, each from the boom end to the
+balloon, then all their rates in the same order; parameter vector: the base
+model's, then :data:`EXTRA_PARAMETERS`.  tests/model/test_beads.py and
+tests/derive/test_beads_lagrange.py check it (docs/beads.md).
+
+Compiled code: one cached entry point per base (``rhs_derived`` ...), the base a
+literal that picks its generated kernels (as tethersim/engine/dynamics.py picks a
+model's).  Not yet fit for the engine's time loops: each evaluation allocates six
+small scratch arrays (the rule of tethersim/engine/integrators/borrow.py is none per
+step), and the chain is not in the model registry (docs/beads.md, "Not yet").
+"""
+from __future__ import annotations
+
+import math
+from collections import namedtuple
+
+import numpy as np
+from numba import literally, njit, types
+from numba.extending import overload
+
+import tethersim.generated as generated
+from tethersim.model.bead_layout import (  # noqa: F401  (the layout, re-exported: one import for users)
+    _A,
+    _A1,
+    _A2,
+    _A3,
+    _B,
+    _BASE_NAMES,
+    _C1,
+    _C2,
+    _E1,
+    _E2,
+    _L10,
+    _M1,
+    _M2,
+    _M3,
+    _OMEGA,
+    _OMEGA_E,
+    _R0,
+    _RHO3,
+    BASES,
+    EXTRA_PARAMETERS,
+    EXTRA_RANGES,
+    EXTRA_UNITS,
+    N_MAX,
+    NB,
+    check_base,
+    check_beads,
+    parameter_vector,
+    state_names,
+    straight_chain,
+)
+
+_GENERATED = {name: generated.MODELS[name] for name in BASES}
+Kernels = namedtuple("Kernels", "rhs jacobi tensions")
+_OBJECTIVE = BASES.index("objective-damper")  # its segments damp along their stretch rate
+
+
+def _base_rhs(kind, t, y, p, dydt):
+    """The generated rhs of base ``BASES[kind]`` (compiled code, literal ``kind`` only)."""
+    raise NotImplementedError("_base_rhs is only callable from compiled code")
+
+
+def _base_jacobi(kind, y, p):
+    """The generated jacobi of base ``BASES[kind]`` (compiled code, literal ``kind`` only)."""
+    raise NotImplementedError("_base_jacobi is only callable from compiled code")
+
+
+@overload(_base_rhs, prefer_literal=True)
+def _base_rhs_overload(kind, t, y, p, dydt):
+    if not isinstance(kind, types.IntegerLiteral):
+        return None
+    f = _GENERATED[BASES[kind.literal_value]].rhs
+
+    def impl(kind, t, y, p, dydt):
+        f(t, y, p, dydt)
+    return impl
+
+
+@overload(_base_jacobi, prefer_literal=True)
+def _base_jacobi_overload(kind, y, p):
+    if not isinstance(kind, types.IntegerLiteral):
+        return None
+    f = _GENERATED[BASES[kind.literal_value]].jacobi
+
+    def impl(kind, y, p):
+        return f(y, p)
+    return impl
+
+
+@njit(cache=True, inline="always")
+def _nodes(y, p, n, j, nodes):
+    """nodes[k] = (x, y, ẋ, ẏ) of tether j's node k: 0 boom end, 1..n beads, n+1 balloon."""
+    nq = 3 + 4 * n
+    th, thd = y[2], y[nq + 2]
+    s, c = math.sin(th), math.cos(th)
+    arm = p[_B] if j == 0 else -p[_A]  # tip-mass at +b, bus at −a along the boom
+    nodes[0, 0] = arm * s
+    nodes[0, 1] = arm * c
+    nodes[0, 2] = arm * thd * c
+    nodes[0, 3] = -arm * thd * s
+    for k in range(n):
+        i = 3 + 2 * (j * n + k)
+        nodes[k + 1, 0] = y[i]
+        nodes[k + 1, 1] = y[i + 1]
+        nodes[k + 1, 2] = y[nq + i]
+        nodes[k + 1, 3] = y[nq + i + 1]
+    nodes[n + 1, 0] = y[0]
+    nodes[n + 1, 1] = y[1]
+    nodes[n + 1, 2] = y[nq]
+    nodes[n + 1, 3] = y[nq + 1]
+
+
+@njit(cache=True)
+def _segment_forces(y, p, n, j, nodes, F, T, objective):
+    """F[k] += force on node k from tether j's segments; T[s] = segment s's tension [N]."""
+    l_s = p[_L10 + j] / (n + 1)
+    E = p[_E1 + j]
+    c_s = (n + 1) * p[_C1 + j]
+    omega = p[_OMEGA]
+    w_air = omega - p[_OMEGA_E]  # air-relative rotation rate of L (Eq 3.33)
+    r0 = p[_R0]
+    cdt = 0.5 * p[_RHO3] * p[NB + 4] * p[NB + 2 + j]  # ½ ρ3 C_Dt d_j
+    for s in range(n + 1):
+        ddx = nodes[s + 1, 0] - nodes[s, 0]
+        ddy = nodes[s + 1, 1] - nodes[s, 1]
+        lam = math.sqrt(ddx * ddx + ddy * ddy)
+        tx, ty = ddx / lam, ddy / lam  # from the near node (s) to the far one (s+1)
+        # inertial relative velocity of the ends: Δṙ_L + ω ẑ × Δr (Eq 3.13)
+        wx = nodes[s + 1, 2] - nodes[s, 2] - omega * ddy
+        wy = nodes[s + 1, 3] - nodes[s, 3] + omega * ddx
+        fx = fy = 0.0  # force on the far node
+        T[s] = 0.0
+        if lam > l_s:  # taut (Eqs 3.35-3.36)
+            ten = E * (lam / l_s - 1.0)
+            T[s] = ten
+            fx -= ten * tx
+            fy -= ten * ty
+            if objective:  # Kelvin-Voigt: c λ̇ along the segment
+                rate = tx * wx + ty * wy
+                fx -= c_s * rate * tx
+                fy -= c_s * rate * ty
+            else:  # thesis damper, Eqs 3.43-3.44
+                fx -= c_s * wx
+                fy -= c_s * wy
+        F[s + 1, 0] += fx
+        F[s + 1, 1] += fy
+        F[s, 0] -= fx
+        F[s, 1] -= fy
+        if cdt > 0.0:  # cross-flow drag of the segment, half to each end
+            mx = 0.5 * (nodes[s, 0] + nodes[s + 1, 0])
+            my = 0.5 * (nodes[s, 1] + nodes[s + 1, 1])
+            vx = 0.5 * (nodes[s, 2] + nodes[s + 1, 2]) - w_air * (r0 + my)
+            vy = 0.5 * (nodes[s, 3] + nodes[s + 1, 3]) + w_air * mx
+            along = vx * tx + vy * ty
+            nx, ny = vx - along * tx, vy - along * ty
+            k = -0.5 * cdt * lam * math.sqrt(nx * nx + ny * ny)
+            F[s, 0] += k * nx
+            F[s, 1] += k * ny
+            F[s + 1, 0] += k * nx
+            F[s + 1, 1] += k * ny
+
+
+@njit(cache=True)
+def _base_parameters(p, n, pb):
+    """pb = the base p with the tethers off and the line's end masses added."""
+    for i in range(NB):
+        pb[i] = p[i]
+    pb[_E1] = pb[_E2] = pb[_C1] = pb[_C2] = 0.0
+    e1 = p[NB] / (2.0 * (n + 1))
+    e2 = p[NB + 1] / (2.0 * (n + 1))
+    pb[_M1] += e1
+    pb[_M2] += e2
+    pb[_M3] += e1 + e2
+
+
+@njit(cache=True)
+def _rhs(kind, t, y, p, dydt):
+    """dy/dt of the chain model over base ``BASES[kind]`` (SI; layout: module docstring)."""
+    literally(kind)
+    nq = y.shape[0] // 2
+    n = (nq - 3) // 4
+    pb = np.empty(NB)
+    _base_parameters(p, n, pb)
+    yb = np.empty(6)
+    db = np.empty(6)
+    for i in range(3):
+        yb[i] = y[i]
+        yb[3 + i] = y[nq + i]
+    _base_rhs(kind, t, yb, pb, db)
+    for i in range(nq):
+        dydt[i] = y[nq + i]
+    dydt[nq] = db[3]
+    dydt[nq + 1] = db[4]
+    dydt[nq + 2] = db[5]
+    # the beads' gravity-inertial accelerations: the balloon rows, no drag areas
+    pb[_A1] = pb[_A2] = pb[_A3] = 0.0
+    for i in range(3, nq, 2):
+        yb[0] = y[i]
+        yb[1] = y[i + 1]
+        yb[3] = y[nq + i]
+        yb[4] = y[nq + i + 1]
+        _base_rhs(kind, t, yb, pb, db)
+        dydt[nq + i] = db[3]
+        dydt[nq + i + 1] = db[4]
+    m3 = p[_M3] + (p[NB] + p[NB + 1]) / (2.0 * (n + 1))
+    m1 = p[_M1] + p[NB] / (2.0 * (n + 1))
+    m2 = p[_M2] + p[NB + 1] / (2.0 * (n + 1))
+    inertia = m1 * p[_B] ** 2 + m2 * p[_A] ** 2
+    s, c = math.sin(y[2]), math.cos(y[2])
+    nodes = np.empty((n + 2, 4))
+    F = np.empty((n + 2, 2))
+    T = np.empty(n + 1)
+    for j in range(2):
+        _nodes(y, p, n, j, nodes)
+        F[:, :] = 0.0
+        _segment_forces(y, p, n, j, nodes, F, T, kind == _OBJECTIVE)
+        arm = p[_B] if j == 0 else -p[_A]
+        # Q_θ = F · ∂r_end/∂θ, r_end = arm (sin θ, cos θ) (Eq 3.31)
+        dydt[nq + 2] += arm * (F[0, 0] * c - F[0, 1] * s) / inertia
+        dydt[nq] += F[n + 1, 0] / m3
+        dydt[nq + 1] += F[n + 1, 1] / m3
+        if n > 0:
+            mb = p[NB + j] / (n + 1)
+            for k in range(n):
+                i = nq + 3 + 2 * (j * n + k)
+                dydt[i] += F[k + 1, 0] / mb
+                dydt[i + 1] += F[k + 1, 1] / mb
+
+
+@njit(cache=True)
+def tensions(y, p, out):
+    """out[j, s] = spring tension of tether j's segment s [N] (0 slack), boom end first."""
+    nq = y.shape[0] // 2
+    n = (nq - 3) // 4
+    nodes = np.empty((n + 2, 4))
+    F = np.zeros((n + 2, 2))
+    for j in range(2):
+        _nodes(y, p, n, j, nodes)
+        _segment_forces(y, p, n, j, nodes, F, out[j], False)
+
+
+@njit(cache=True)
+def _jacobi(kind, y, p):
+    """Jacobi integral of the chain model [J]: constant with every drag and damper off.
+
+    The base model's (tethers off, end masses added), each bead's as a balloon of
+    the bead's mass with no boom, and ½ (E_j / l_s)(λ_s − l_s)² per taut segment.
+    """
+    literally(kind)
+    nq = y.shape[0] // 2
+    n = (nq - 3) // 4
+    pb = np.empty(NB)
+    _base_parameters(p, n, pb)
+    yb = np.empty(6)
+    for i in range(3):
+        yb[i] = y[i]
+        yb[3 + i] = y[nq + i]
+    h = _base_jacobi(kind, yb, pb)
+    pb[_M1] = pb[_M2] = 0.0
+    yb[2] = yb[5] = 0.0
+    nodes = np.empty((n + 2, 4))
+    for j in range(2):
+        if n > 0:
+            pb[_M3] = p[NB + j] / (n + 1)
+            for k in range(n):
+                i = 3 + 2 * (j * n + k)
+                yb[0] = y[i]
+                yb[1] = y[i + 1]
+                yb[3] = y[nq + i]
+                yb[4] = y[nq + i + 1]
+                h += _base_jacobi(kind, yb, pb)
+        _nodes(y, p, n, j, nodes)
+        l_s = p[_L10 + j] / (n + 1)
+        for s in range(n + 1):
+            lam = math.hypot(nodes[s + 1, 0] - nodes[s, 0], nodes[s + 1, 1] - nodes[s, 1])
+            if lam > l_s:
+                h += 0.5 * p[_E1 + j] / l_s * (lam - l_s) ** 2
+    return h
+
+
+# one entry point per base model: the base is a compile-time literal of each
+@njit(cache=True)
+def rhs_derived(t, y, p, dydt):
+    """dy/dt of the chain over ``derived``."""
+    _rhs(0, t, y, p, dydt)
+
+
+@njit(cache=True)
+def rhs_exact_gravity(t, y, p, dydt):
+    """dy/dt of the chain over ``exact-gravity``."""
+    _rhs(1, t, y, p, dydt)
+
+
+@njit(cache=True)
+def rhs_objective_damper(t, y, p, dydt):
+    """dy/dt of the chain over ``objective-damper``."""
+    _rhs(2, t, y, p, dydt)
+
+
+@njit(cache=True)
+def jacobi_derived(y, p):
+    """Jacobi integral of the chain over ``derived`` [J]."""
+    return _jacobi(0, y, p)
+
+
+@njit(cache=True)
+def jacobi_exact_gravity(y, p):
+    """Jacobi integral of the chain over ``exact-gravity`` [J]."""
+    return _jacobi(1, y, p)
+
+
+@njit(cache=True)
+def jacobi_objective_damper(y, p):
+    """Jacobi integral of the chain over ``objective-damper`` [J]."""
+    return _jacobi(2, y, p)
+
+
+_KERNELS = {"derived": Kernels(rhs_derived, jacobi_derived, tensions),
+            "exact-gravity": Kernels(rhs_exact_gravity, jacobi_exact_gravity, tensions),
+            "objective-damper": Kernels(rhs_objective_damper, jacobi_objective_damper, tensions)}
+
+
+def kernels(base: str = "derived") -> Kernels:
+    """The compiled chain kernels (rhs, jacobi, tensions) over base model ``base``.
+
+    The same number of beads per tether on both lines, read from the state's length.
+    """
+    check_base(base)
+    return _KERNELS[base]
