@@ -25,6 +25,8 @@ with gcc -O3.  Results go to stdout (table at the end) and bench/results.json.
   9. against heyoka.py (bench/peers.py, when heyoka is installed: the [bench] extra):
      single runs at equal accuracy (work-precision, three cases) and sweep throughput
      against its SIMD batches; `--only peers` runs this section alone
+ 10. faithful sweeps on SIMD lanes vs the point-by-point block, 64 and 144 points, 1 and
+     2 threads (bench/lanes_bench.py); `--only lanes` runs this section alone
 """
 from __future__ import annotations
 
@@ -714,9 +716,11 @@ def main(argv=None) -> int:
     ap.add_argument("--json", default=str(HERE / "results.json"), help="where to write results")
     ap.add_argument("--skip-slow", action="store_true",
                     help="skip the subprocess figures (make derive, CLI, report)")
-    ap.add_argument("--only", choices=("sweep", "report", "3d", "cli", "peers"), default=None,
+    ap.add_argument("--only", choices=("sweep", "report", "3d", "cli", "peers", "lanes"),
+                    default=None,
                     help="run one section only (sweep throughput, the report's wall time, "
-                         "the 3-D model against its C port, or the CLI's cold and warm runs)")
+                         "the 3-D model against its C port, the CLI's cold and warm runs, "
+                         "heyoka, or the sweep's SIMD lanes against its scalar block)")
     args = ap.parse_args(argv)
     q = dict(fast_repeats=15, dop_repeats=9, slow_repeats=5, rhs_calls=200_000,
              lambdify_calls=1000, pydy_calls=4000, pycall_calls=20_000,
@@ -749,6 +753,9 @@ def main(argv=None) -> int:
             bench_cli(rep, q)
         elif args.only == "peers":
             bench_peers(rep, q)
+        elif args.only == "lanes":
+            import lanes_bench
+            lanes_bench.bench_lanes(rep, q, log)
         else:
             sweep_bench.bench_report(rep, q, REPO)
         print_table(rep, clock() - t_start, "(not written with --only)")
@@ -781,6 +788,8 @@ def main(argv=None) -> int:
     import csweep
     csweep.bench_csweep(rep, S, q, log)
     bench_peers(rep, q)
+    import lanes_bench
+    lanes_bench.bench_lanes(rep, q, log)
     if not args.skip_slow:
         bench_derive(rep, q)
         bench_cli(rep, q)
