@@ -94,6 +94,77 @@ def bench_lanes(rep, q, log) -> None:
                 f"block (process CPU)", cpu["lanes"] / cpu["scalar"], "x", note=_load())
 
 
+def bench_lanes_heyoka(rep, q, log) -> None:
+    """The 64-point faithful sweep on lanes vs heyoka's SIMD batches at the faithful run's
+    final-state error (first point, against tethersim DOP853 at rtol 1e-13), one thread.
+
+    heyoka's loosest tolerance whose error is at most the faithful RK4 run's; its batch
+    size is its recommended SIMD width; CPU time of the process (heyoka) and of the
+    thread (tethersim).  tethersim's trajectories include the records (metrics, class,
+    force peaks), heyoka's only the states on the same 200-per-orbit grid.
+    """
+    import heyoka as hy
+    from peers import _error, _taut, heyoka_integrator
+
+    import tethersim as ts
+    from tethersim.experiments.sweep import Plan, batch
+    from tethersim.model.inputs import initial_model_state
+    sats = _sats(64)
+    sat0 = sats[0]
+    plan = Plan(periods=float(PERIODS), method="faithful")
+    n_steps = round(plan.steps_per_period * PERIODS)
+    ref = ts.simulate(sat0, PERIODS, rtol=1e-13, atol=1e-15, progress=False,
+                      samples=2).states[-1][:6]
+    rk_err = _error(ts.simulate(sat0, PERIODS, n_steps, method="rk4", locate_switches=False,
+                                progress=False).states[-1][:6], ref)
+    y0 = initial_model_state(sat0, "derived")
+    pars = _taut(sat0, y0)
+    T = PERIODS * sat0.period
+    grid1 = np.linspace(0.0, T, n_steps + 1)
+    tol, hy_err = None, None
+    for t in (1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10):
+        ta = heyoka_integrator(sat0, t)[0]
+        ta.time = 0.0
+        ta.state[:] = y0
+        ta.pars[:] = pars
+        err = _error(ta.propagate_grid(grid1)[-1][-1], ref)
+        if err <= rk_err:
+            tol, hy_err = t, err
+            break
+    if tol is None:
+        rep.check("lanes vs heyoka: a heyoka tolerance reaches the faithful run's error", False)
+        return
+    bs = hy.recommended_simd_size()
+    ta = heyoka_integrator(sat0, tol, batch=bs)[0]
+    E = np.array([[s.E1 for s in sats], [s.E2 for s in sats]])
+    grid = np.repeat(grid1[:, None], bs, axis=1)
+
+    def heyoka_all():
+        t0 = time.process_time()
+        for i in range(0, len(sats), bs):
+            ta.set_time(0.0)
+            ta.state[:] = np.repeat(np.asarray(y0, float)[:, None], bs, axis=1)
+            ta.pars[:2] = np.array(pars)[:, None]
+            ta.pars[2:] = E[:, i:i + bs]
+            ta.propagate_grid(grid)
+        return time.process_time() - t0
+
+    def lanes():
+        t0 = cpu_clock()
+        batch.run_satellites(plan, sats)
+        return cpu_clock() - t0
+
+    best = {k: len(sats) / min(v) for k, v in
+            interleave({"lanes": lanes, "heyoka": heyoka_all}, q.get("sweep_repeats", 3)).items()}
+    log(f"  lanes vs heyoka, 64 points x {PERIODS} orbits, 1 thread: faithful RK4 error "
+        f"{rk_err:.2g}, heyoka tol {tol:g} (error {hy_err:.2g}), batch {bs}: lanes "
+        f"{best['lanes']:.0f} vs heyoka {best['heyoka']:.0f} trajectories/s "
+        f"({best['lanes'] / best['heyoka']:.2f}x); {_load()}")
+    rep.fig("lanes.heyoka", "faithful sweep on lanes / heyoka batches at the faithful run's "
+            "error, 64 points, 1 thread", best["lanes"] / best["heyoka"], "x",
+            note=f">1: tethersim faster; {_load()}")
+
+
 class _Print:
     def fig(self, key, label, value, unit, samples=None, note=""):
         print(f"{key}: {label}: {value:.3g} {unit} ({note})")
@@ -109,3 +180,9 @@ if __name__ == "__main__":
     print(f"CPU: {cpu}; {os.cpu_count()} cores; {_load()}")
     reps = int(sys.argv[1]) if len(sys.argv) > 1 else 3
     bench_lanes(_Print(), {"sweep_repeats": reps}, print)
+    try:
+        import heyoka  # noqa: F401
+    except ImportError:
+        print("heyoka not installed (the [bench] extra): no comparison with its batches")
+    else:
+        bench_lanes_heyoka(_Print(), {"sweep_repeats": reps}, print)
