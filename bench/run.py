@@ -25,7 +25,9 @@ with gcc -O3.  Results go to stdout (table at the end) and bench/results.json.
   9. against heyoka.py (bench/peers.py, when heyoka is installed: the [bench] extra):
      single runs at equal accuracy (work-precision, three cases) and sweep throughput
      against its SIMD batches; `--only peers` runs this section alone
- 10. real tethers (bench/stiff.py): SatI on 1 mm Dyneema lines, tethersim's Radau IIA
+ 10. faithful sweeps on SIMD lanes vs the point-by-point block, 64 and 144 points, 1 and
+     2 threads (bench/lanes_bench.py); `--only lanes` runs this section alone
+ 11. real tethers (bench/stiff.py): SatI on 1 mm Dyneema lines, tethersim's Radau IIA
      against the explicit C DOP853 port at equal accuracy, and against the
      thesis-tether run of the same length; `--only stiff` runs this section alone
 """
@@ -717,10 +719,12 @@ def main(argv=None) -> int:
     ap.add_argument("--json", default=str(HERE / "results.json"), help="where to write results")
     ap.add_argument("--skip-slow", action="store_true",
                     help="skip the subprocess figures (make derive, CLI, report)")
-    ap.add_argument("--only", choices=("sweep", "report", "3d", "cli", "peers", "stiff"),
+    ap.add_argument("--only", choices=("sweep", "report", "3d", "cli", "peers", "lanes",
+                                       "stiff"),
                     default=None,
                     help="run one section only (sweep throughput, the report's wall time, "
-                         "the 3-D model against its C port, or the CLI's cold and warm runs)")
+                         "the 3-D model against its C port, the CLI's cold and warm runs, "
+                         "heyoka, or the sweep's SIMD lanes against its scalar block)")
     args = ap.parse_args(argv)
     q = dict(fast_repeats=15, dop_repeats=9, slow_repeats=5, rhs_calls=200_000,
              lambdify_calls=1000, pydy_calls=4000, pycall_calls=20_000,
@@ -756,6 +760,9 @@ def main(argv=None) -> int:
         elif args.only == "stiff":
             import stiff
             stiff.bench_stiff(rep, q, log)
+        elif args.only == "lanes":
+            import lanes_bench
+            lanes_bench.bench_lanes(rep, q, log)
         else:
             sweep_bench.bench_report(rep, q, REPO)
         print_table(rep, clock() - t_start, "(not written with --only)")
@@ -790,6 +797,8 @@ def main(argv=None) -> int:
     bench_peers(rep, q)
     import stiff
     stiff.bench_stiff(rep, q, log)
+    import lanes_bench
+    lanes_bench.bench_lanes(rep, q, log)
     if not args.skip_slow:
         bench_derive(rep, q)
         bench_cli(rep, q)

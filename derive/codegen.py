@@ -18,6 +18,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .geometry import geometry_source
+from .lanes import lanes_source
 from .pipeline import Q_SYMBOLS, DerivedModel
 from .printer import (
     INDENT,
@@ -185,7 +186,10 @@ def planar_geometry_source(kin) -> list:
 
 def module_source(model: DerivedModel, length_defs, kin) -> str:
     pr = printing(length_defs)
-    lines = header(model) + ["", ""] + rhs_source(model, length_defs)
+    rhs = rhs_source(model, length_defs)
+    lines = header(model) + ["", ""] + rhs
+    if lanes := lanes_source(rhs):  # the rhs on K sweep points at once (derive/lanes.py)
+        lines += ["", ""] + lanes
     lines += ["", ""] + family_forces_source(pr, model.families)
     lines += ["", ""] + jacobi_source(pr, model.families, model.jacobi, JACOBI_DOC)
     lines += ["", ""] + jacobian_source(model, length_defs)

@@ -162,6 +162,130 @@ def rhs(t, y, p, dydt):
     dydt[5] = 2*Q_theta*a10*r0 + 3*a**3*a10*a3*m2*sin_theta - a11*b**3*m1*sin_theta - a12*a8 - a12*a9
 
 
+N_TRANSCENDENTAL = 3
+LANES = 8  # row stride of the lane arrays: the most lanes (AVX-512)
+
+
+@njit(cache=True, inline="always")
+def rhs_lanes(t, y, p, dydt, s):
+    """rhs on K = len(t) <= LANES lanes: row i of y, p, dydt and of the
+    scratch s (N_TRANSCENDENTAL rows) is [i*LANES, i*LANES + K).
+
+    Each lane equals rhs bit for bit (derive/lanes.py); the libm calls
+    come first, lane by lane, so that the second loop vectorises.
+    """
+    for k in range(t.shape[0]):
+        theta = y[2*LANES + k]
+        s[0*LANES + k] = math.sin(theta)
+        s[1*LANES + k] = math.cos(theta)
+        s[2*LANES + k] = math.sin(2*theta)
+    for k in range(t.shape[0]):
+        delta_x = y[0*LANES + k]
+        delta_y = y[1*LANES + k]
+        theta = y[2*LANES + k]
+        delta_x_dot = y[3*LANES + k]
+        delta_y_dot = y[4*LANES + k]
+        theta_dot = y[5*LANES + k]
+        m1 = p[0*LANES + k]
+        m2 = p[1*LANES + k]
+        m3 = p[2*LANES + k]
+        A1 = p[3*LANES + k]
+        A2 = p[4*LANES + k]
+        A3 = p[5*LANES + k]
+        a = p[6*LANES + k]
+        b = p[7*LANES + k]
+        l10 = p[8*LANES + k]
+        l20 = p[9*LANES + k]
+        E1 = p[10*LANES + k]
+        E2 = p[11*LANES + k]
+        c1 = p[12*LANES + k]
+        c2 = p[13*LANES + k]
+        CD = p[14*LANES + k]
+        r0 = p[15*LANES + k]
+        omega = p[17*LANES + k]
+        omega_earth = p[18*LANES + k]
+        rho1 = p[19*LANES + k]
+        rho2 = p[20*LANES + k]
+        rho3 = p[21*LANES + k]
+        sin_theta = s[0*LANES + k]
+        cos_theta = s[1*LANES + k]
+        # air drag on the three bodies (3.48-3.50)
+        d0 = delta_y + r0
+        d1 = -d0*omega + d0*omega_earth + delta_x_dot
+        d2 = delta_x*omega - delta_x*omega_earth + delta_y_dot
+        d3 = (1/2)*CD
+        d4 = A3*d3*rho3*math.sqrt(d1**2 + d2**2)
+        d5 = b*sin_theta
+        d6 = b*omega*sin_theta - d5*omega_earth - d5*theta_dot
+        d7 = b*cos_theta
+        d8 = d7 + r0
+        d9 = d7*theta_dot - d8*omega + d8*omega_earth
+        d10 = d6**2 + d9**2
+        d11 = 1/math.sqrt(d10)
+        d12 = a*sin_theta
+        d13 = -d12*omega + d12*omega_earth + d12*theta_dot
+        d14 = a*cos_theta
+        d15 = -d14 + r0
+        d16 = -d14*theta_dot - d15*omega + d15*omega_earth
+        d17 = d13**2 + d16**2
+        d18 = 1/math.sqrt(d17)
+        Q_delta_x = -d1*d4
+        Q_delta_y = -d2*d4
+        Q_theta = (
+                -A1*d10*d3*rho1*(-d11*d5*d6 + d11*d7*d9) - A2*d17*d3*rho2*(a*d13*d18*sin_theta
+                - d14*d16*d18))
+        lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
+        if lambda1 > l10:  # tether 1 taut: spring1, damper1
+            t1_0 = b*cos_theta
+            t1_1 = c1*(delta_x_dot - delta_y*omega + omega*t1_0 - t1_0*theta_dot)
+            t1_2 = b*sin_theta
+            t1_3 = -delta_x + t1_2
+            t1_4 = E1*(-1 + lambda1/l10)/lambda1
+            t1_5 = c1*(delta_x*omega + delta_y_dot - omega*t1_2 + t1_2*theta_dot)
+            t1_6 = -delta_y + t1_0
+            Q_delta_x += -t1_1 + t1_3*t1_4
+            Q_delta_y += t1_4*t1_6 - t1_5
+            Q_theta += t1_0*t1_1 - t1_2*t1_5 + t1_4*(b*sin_theta*t1_6 - t1_0*t1_3)
+        lambda2 = math.sqrt((-a*cos_theta - delta_y)**2 + (-a*sin_theta - delta_x)**2)
+        if lambda2 > l20:  # tether 2 taut: spring2, damper2
+            t2_0 = delta_y*omega
+            t2_1 = a*cos_theta
+            t2_2 = a*sin_theta
+            t2_3 = -delta_x - t2_2
+            t2_4 = E2*(-1 + lambda2/l20)/lambda2
+            t2_5 = delta_x*omega + delta_y_dot
+            t2_6 = -delta_y - t2_1
+            t2_7 = b*sin_theta
+            t2_8 = b*cos_theta
+            Q_delta_x += -c2*(a*cos_theta*theta_dot + delta_x_dot - omega*t2_1 - t2_0) + t2_3*t2_4
+            Q_delta_y += -c2*(omega*t2_2 - t2_2*theta_dot + t2_5) + t2_4*t2_6
+            Q_theta += (
+                    -c2*t2_1*(delta_x_dot + omega*t2_8 - t2_0 - t2_8*theta_dot) + c2*t2_2*(-omega*t2_7
+                    + t2_5 + t2_7*theta_dot) + t2_4*(t2_1*t2_3 - t2_2*t2_6))
+        # accelerations from M q'' + f(q, q') = Q (Lagrange, 3.26-3.30)
+        dydt[0*LANES + k] = delta_x_dot
+        dydt[1*LANES + k] = delta_y_dot
+        dydt[2*LANES + k] = theta_dot
+        a0 = 2*omega
+        a1 = 1/m3
+        a2 = 1/r0
+        a3 = omega**2
+        a4 = 3*a3
+        a5 = a4*delta_y
+        a6 = a2*a3
+        a7 = 2*r0
+        a8 = a**2*m2
+        a9 = b**2*m1
+        a10 = 1/(a7*a8 + a7*a9)
+        a11 = a10*a4
+        a12 = a11*r0*s[2*LANES + k]
+        dydt[3*LANES + k] = Q_delta_x*a1 + a0*delta_y_dot + a2*a5*delta_x
+        dydt[4*LANES + k] = Q_delta_y*a1 - a0*delta_x_dot + a5 + (3/2)*a6*delta_x**2 + (9/2)*a6*delta_y**2
+        dydt[5*LANES + k] = (
+                2*Q_theta*a10*r0 + 3*a**3*a10*a3*m2*sin_theta - a11*b**3*m1*sin_theta - a12*a8 -
+                a12*a9)
+
+
 @njit(cache=True)
 def family_forces(y, p, out):
     """out[f, k] = generalized force of family FAMILIES[f] on q_k (N, N, N m)."""

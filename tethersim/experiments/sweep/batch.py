@@ -22,6 +22,7 @@ from tethersim.analysis.metrics import SS_FRACTION, PitchMetrics
 from tethersim.engine.arguments import check_scheme
 from tethersim.engine.events import event_parameters
 from tethersim.engine.guards import API_SUBJECT, check_simulation
+from tethersim.engine.integrators.lanes import has_lanes, lane_count
 from tethersim.engine.integrators.select import specialised
 from tethersim.engine.linearise import rk4_amplifications
 from tethersim.engine.simulate import (
@@ -38,11 +39,18 @@ from tethersim.experiments.sweep.kernel import (
     sweep_block,
     sweep_block_implicit,
 )
+from tethersim.experiments.sweep.lanes import sweep_block_lanes
 from tethersim.experiments.sweep.plan import ATOL_PER_RTOL, SCHEMES, Plan
 from tethersim.experiments.sweep.point import record
 from tethersim.experiments.sweep.spec import SweepSpec
+from tethersim.model.air.vector import UNIFORM
 from tethersim.model.inputs import air_vector, initial_model_state, parameter_vector
 from tethersim.model.registry import get_model, model_for_orbit, model_index
+
+# faithful blocks of one lane model in uniform air run K points per step on SIMD lanes
+# (sweep/lanes.py), the same records bit for bit; False runs every block point by point
+# (the benchmark's and the tests' comparison: bench/lanes_bench.py)
+USE_LANES = True
 
 _F = {name: i for i, name in enumerate(F_FIELDS)}
 _I = {name: i for i, name in enumerate(I_FIELDS)}
@@ -154,6 +162,10 @@ def _compiled(sats: list, plan: Plan, model: str, air: np.ndarray) -> list:
     if plan.method == "implicit":  # its own entry: the explicit blocks do not carry Radau
         args = (air, T, Y0, P, span, *tolerances, *measure)
         specialised(sweep_block_implicit, m, args)(m, *args)  # releases the GIL
+    elif USE_LANES and faithful and n >= 2 and air[0] == UNIFORM and has_lanes(m):
+        # K points per step on SIMD lanes, the same records bit for bit (sweep/lanes.py)
+        args = (air, Y0, P, span, n_steps, *measure, lane_count())
+        specialised(sweep_block_lanes, m, args)(m, *args)  # releases the GIL
     else:
         args = (air, faithful, T, Y0, P, span, n_steps, *tolerances, *measure)
         specialised(sweep_block, m, args)(m, *args)  # releases the GIL

@@ -1,0 +1,117 @@
+"""The lane form of a printed rhs: K points at once, for SIMD across sweep points.
+
+``lanes_source`` rewrites the lines of a printed scalar ``rhs(t, y, p, dydt)``
+(codegen.rhs_source) into ``rhs_lanes(t, y, p, dydt, s)`` over structure-of-arrays
+inputs: K = len(t) points; row i of y (state), p (parameters), dydt and a scratch s
+(N_TRANSCENDENTAL rows) sits at [i*LANES, i*LANES + K) of its flat array, LANES = 8 a
+constant.  The body is the scalar body, statement for statement, inside
+``for k in range(K)``, so every lane does the same IEEE operations in the same order
+as the scalar rhs (no fast-math: the results are equal bit for bit) and LLVM can
+vectorise the loop across lanes.  It cannot vectorise a loop holding calls to libm
+(sin, cos, exp: numba's build has no vector versions, ``numba -s``: SVML not
+available), so those calls are hoisted into a first per-lane loop that writes them
+into s; the second loop reads s.  A call qualifies when its argument reads only the
+state and the parameters (the unpacked names); a model with any other such call
+gets no lane form (the caller then runs the scalar rhs).  sqrt, the arithmetic and
+the taut/slack branches (if-converted into selects) stay in the vector loop.
+"""
+from __future__ import annotations
+
+import re
+
+from .printer import wrap_statement
+
+# libm calls with no vector version in numba's default build; sqrt, fabs are LLVM
+# intrinsics that vectorise
+TRANSCENDENTAL = re.compile(
+    r"math\.(sin|cos|tan|exp|expm1|log|log1p|atan2|atan|asin|acos|hypot|pow|sinh|cosh|tanh)\(")
+# the lane arrays' row stride, a compile-time constant: with it LLVM sees every row of y,
+# p, s and dydt at a constant offset from the array's start, so the few run-time alias
+# checks it needs to vectorise fit its budget (with a run-time row stride it gives up)
+LANES = 8
+_UNPACK = re.compile(r"^\s+(\w+) = ([yp])\[(\d+)\]$")
+_NAME = re.compile(r"[A-Za-z_]\w*")
+
+
+def _call_end(text: str, open_at: int) -> int:
+    """Index just past the parenthesis that closes the one at text[open_at]."""
+    depth = 0
+    for i in range(open_at, len(text)):
+        depth += {"(": 1, ")": -1}.get(text[i], 0)
+        if depth == 0:
+            return i + 1
+    raise ValueError("unbalanced parentheses in a printed rhs")
+
+
+def _index_names(line: str) -> str:
+    """y[i] -> y[i, k] (and p, dydt), t -> t[k], in a line's code (not its comment)."""
+    code, hash_, comment = line.partition("#")
+    code = re.sub(r"\b(y|p|dydt)\[(\d+)\]", r"\1[\2*LANES + k]", code)
+    code = re.sub(r"\bt\b", "t[k]", code)
+    return code + hash_ + comment
+
+
+def _logical_lines(lines: list) -> list:
+    """The printed lines with each statement wrapped over several lines joined into one
+    (wrap_statement rewraps it at the lane body's deeper indent)."""
+    out, depth = [], 0
+    for line in lines:
+        if depth > 0:
+            piece = line.strip()
+            out[-1] += piece if out[-1].endswith(("*", "(")) else " " + piece
+        else:
+            out.append(line)
+        code = line.partition("#")[0]
+        depth += code.count("(") - code.count(")")
+    return out
+
+
+def lanes_source(rhs_lines: list, indent: str = "    ") -> list:
+    """The lines of ``rhs_lanes`` from the lines of a printed scalar ``rhs``, or [] when
+    one of its libm calls reads an intermediate (module docstring)."""
+    start = next(i for i, line in enumerate(rhs_lines) if line.startswith("def rhs("))
+    doc_end = next(i for i in range(start + 1, len(rhs_lines))
+                   if rhs_lines[i].rstrip().endswith('"""'))
+    body = rhs_lines[doc_end + 1:]
+    unpack = {}  # name -> its unpacking line
+    for line in body:
+        if m := _UNPACK.match(line):
+            unpack[m.group(1)] = line
+    text = "\n".join(_logical_lines(body))
+    calls = []  # distinct libm call texts, in order of first use
+    out, pos = [], 0
+    for m in TRANSCENDENTAL.finditer(text):
+        if m.start() < pos:
+            continue  # nested inside a call already hoisted
+        end = _call_end(text, m.end() - 1)
+        call = text[m.start():end]
+        names = set(_NAME.findall(call[m.end() - m.start():])) - {"math"}
+        if not names <= set(unpack) or "\n" in call:
+            return []
+        if call not in calls:
+            calls.append(call)
+        out.append(text[pos:m.start()] + f"s[{calls.index(call)}*LANES + k]")
+        pos = end
+    out.append(text[pos:])
+    vector_body = "".join(out).split("\n")
+    i1, i2 = indent, indent * 2
+    needed = set().union(*(set(_NAME.findall(c)) for c in calls)) if calls else set()
+    lines = ["@njit(cache=True, inline=\"always\")",
+             "def rhs_lanes(t, y, p, dydt, s):",
+             f'{i1}"""rhs on K = len(t) <= LANES lanes: row i of y, p, dydt and of the',
+             f"{i1}scratch s (N_TRANSCENDENTAL rows) is [i*LANES, i*LANES + K).",
+             "",
+             f"{i1}Each lane equals rhs bit for bit (derive/lanes.py); the libm calls",
+             f'{i1}come first, lane by lane, so that the second loop vectorises.',
+             f'{i1}"""',
+             f"{i1}for k in range(t.shape[0]):"]
+    lines += [_index_names(unpack[n]).replace(i1, i2, 1) for n in unpack if n in needed]
+    lines += [f"{i2}s[{j}*LANES + k] = {c}" for j, c in enumerate(calls)]
+    if not calls:
+        lines.append(f"{i2}pass")
+    lines.append(f"{i1}for k in range(t.shape[0]):")
+    for line in vector_body:
+        lines += wrap_statement(i1 + _index_names(line)) if line.strip() else [line]
+    return [f"N_TRANSCENDENTAL = {max(1, len(calls))}",
+            f"LANES = {LANES}  # row stride of the lane arrays: the most lanes (AVX-512)",
+            "", ""] + lines
