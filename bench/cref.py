@@ -122,7 +122,8 @@ def check_same_cse(blocks) -> None:
 
 def generated_is_current(model, length_defs, generated_file: Path) -> bool:
     """Is generated/derived.py's rhs the one derive/codegen.py prints now?"""
-    src = "\n".join(codegen.rhs_source(model, length_defs))
+    from derive.emit import printing
+    src = "\n".join(codegen.rhs_source(model, printing(model)))
     return src in generated_file.read_text()
 
 

@@ -14,8 +14,8 @@ import functools
 import mpmath
 import sympy as sp
 
-from .models3d import BY_NAME_3D
-from .pipeline3d import DerivedModel3D, derive3d
+from ..model import DerivedModel as DerivedModel3D
+from ..reference import derived
 from .symbols3d import N_Q, PARAMETER_NAMES, PARAMETERS, ROTATION, STATE_SYMBOLS, TETHER_LENGTHS
 
 DIGITS = 40
@@ -24,7 +24,7 @@ DIGITS = 40
 @functools.cache
 def derived_3d(name: str) -> DerivedModel3D:
     """The DerivedModel3D of ``name`` (derived once per process)."""
-    return derive3d(BY_NAME_3D[name])
+    return derived(name)
 
 
 def _mp(values):

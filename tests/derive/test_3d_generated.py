@@ -15,10 +15,10 @@ import numpy as np
 import pytest
 
 import tethersim.generated as generated
+from derive.models import THREE_D_DEFINITIONS as DEFINITIONS_3D
 from derive.printer import module_filename
 from derive.three_d import symbols3d as s3
 from derive.three_d.forces3d import FAMILY_ORDER
-from derive.three_d.models3d import DEFINITIONS_3D
 from derive.three_d.reference import Reference3D, derived_3d
 from tethersim.engine.jacobian import jacobian
 from tethersim.generated import three_d as layout3d  # every 3-D model has this layout

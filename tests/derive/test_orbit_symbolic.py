@@ -18,15 +18,13 @@ import sympy as sp
 
 import tethersim.generated as generated
 from derive.energy import exact_gravity_as_powers
-from derive.models import BY_NAME
+from derive.models import FREE_DEFINITIONS
 from derive.orbit import (
-    FREE_DEFINITIONS,
     FREE_PARAMETERS,
     FREE_STATE_SYMBOLS,
     J2,
     R_E,
     circular_substitution,
-    derive_free,
     free_kinematics,
     free_potential,
     free_state_substitution,
@@ -34,7 +32,7 @@ from derive.orbit import (
     inverse_powers_exact,
     r_ref,
 )
-from derive.pipeline import derive
+from derive.reference import derived
 from derive.symbols import TETHER_LENGTHS, P
 from tethersim.engine.jacobian import jacobian
 from tethersim.model.registry import BY_NAME as REGISTRY
@@ -45,12 +43,12 @@ NAMES = tuple(d.name for d in FREE_DEFINITIONS)
 
 @functools.cache
 def free_model(name):
-    return derive_free(next(d for d in FREE_DEFINITIONS if d.name == name))
+    return derived(name)
 
 
 @functools.cache
 def planar_model(name):
-    return derive(BY_NAME[name])
+    return derived(name)
 
 
 # ------------------------------------------------------- circular reduction
