@@ -18,11 +18,11 @@ import sympy as sp
 from derive.models import FREE_3D_DEFINITIONS as FREE3D_DEFINITIONS
 from derive.orbit import circular_substitution
 from derive.reference import derived
+from derive.reference import derived as derived_3d
 from derive.three_d.free3d import (
     FREE3D_ACCELERATION_SYMBOLS,
     FREE3D_STATE_SYMBOLS,
 )
-from derive.three_d.reference import derived_3d
 from derive.three_d.symbols3d import ACCELERATION_SYMBOLS, INERTIAS
 
 pytestmark = pytest.mark.slow  # sympy derivations of minutes
