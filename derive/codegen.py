@@ -25,10 +25,16 @@ _CODE_NAMES = {p.symbol: sp.Symbol(p.name, positive=True) for p in PARAMETERS}
 
 
 def prepare(expr):
-    """Code names for parameters, named sin θ / cos θ."""
+    """Code names for parameters, named sin θ / cos θ.
+
+    sin 2θ and cos 2θ (the solved q̈ and the Jacobian carry them) are written
+    2 sin θ cos θ and cos²θ − sin²θ: the kernel evaluates no second pair of
+    transcendental functions beside sin θ, cos θ, and cse shares the products.
+    """
     th = STATE_SYMBOLS[2]
     e = sp.sympify(expr).xreplace(_CODE_NAMES)
-    return e.xreplace({sp.sin(th): _SIN, sp.cos(th): _COS})
+    return e.xreplace({sp.sin(2 * th): 2 * _SIN * _COS, sp.cos(2 * th): _COS**2 - _SIN**2,
+                       sp.sin(th): _SIN, sp.cos(th): _COS})
 
 
 _prepare = prepare  # the name bench/cref.py mirrors
