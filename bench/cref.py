@@ -31,6 +31,7 @@ from sympy.printing.precedence import precedence
 
 from derive import codegen
 from derive.pipeline import Q_SYMBOLS
+from derive.printer import NumbaPrinter
 from derive.symbols import PARAMETERS, STATE_NAMES, TETHER_LENGTHS
 
 BUILD = Path(__file__).resolve().parent / "_build"
@@ -64,7 +65,7 @@ def _c_block(targets, exprs, prefix, indent, op="="):
     codegen._block's output (checked by check_same_cse): C and numba then
     evaluate the same straight-line code.
     """
-    cp, npr = CPrinter(), codegen.NumbaPrinter()
+    cp, npr = CPrinter(), NumbaPrinter()
     prepared = [codegen._prepare(e) for e in exprs]
     repl, reduced = sp.cse(prepared, symbols=sp.numbered_symbols(prefix), order="canonical")
     c = [f"{indent}const double {s} = {cp.doprint(v)};" for s, v in repl]
@@ -122,7 +123,8 @@ def check_same_cse(blocks) -> None:
 
 def generated_is_current(model, length_defs, generated_file: Path) -> bool:
     """Is generated/derived.py's rhs the one derive/codegen.py prints now?"""
-    src = "\n".join(codegen.rhs_source(model, length_defs))
+    from derive.emit import printing
+    src = "\n".join(codegen.rhs_source(model, printing(model)))
     return src in generated_file.read_text()
 
 

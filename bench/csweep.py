@@ -89,8 +89,9 @@ def _cpu() -> str:
 def sweep_inputs():
     """What bench_csweep needs of run.setup() (the derived model for the C port), alone."""
     from derive.kinematics import planar_kinematics
+    from derive.model import derive
     from derive.models import BY_NAME
-    from derive.pipeline import derive, to_state_symbols
+    from derive.pipeline import to_state_symbols
     length_defs = {lam: to_state_symbols(d)
                    for lam, d in planar_kinematics().tether_length_defs.items()}
     return {"model": derive(BY_NAME["derived"]), "length_defs": length_defs}

@@ -54,8 +54,9 @@ def symbolic(model: str = "derived"):
     import sympy as sp
 
     from derive.kinematics import planar_kinematics
+    from derive.model import derive
     from derive.models import DEFINITIONS
-    from derive.pipeline import Q_SYMBOLS, derive
+    from derive.pipeline import Q_SYMBOLS
     from derive.symbols import TETHER_LENGTHS, P, state_substitution
     defn = next(d for d in DEFINITIONS if d.name == model)
     dm = derive(defn)

@@ -150,8 +150,9 @@ def setup(rep: Report):
     import cref
 
     from derive.kinematics import planar_kinematics
+    from derive.model import derive
     from derive.models import BY_NAME
-    from derive.pipeline import derive, to_state_symbols
+    from derive.pipeline import to_state_symbols
     from tethersim.model.inputs import initial_model_state, parameter_vector
 
     sat, what = load_satellite()

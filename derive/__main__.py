@@ -7,59 +7,34 @@ import time
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
-from . import codegen, orbit_codegen
-from .kinematics import planar_kinematics
+from . import codegen
+from .coordinates import ALL
+from .emit import module_source
+from .model import derive
 from .models import DEFINITIONS, FAMILY_ORDER
-from .pipeline import derive
 from .printer import module_filename
-from .symbols import state_substitution
-from .three_d import codegen3d, free3d_codegen
-from .three_d.free3d import FREE3D_DEFINITIONS
-from .three_d.models3d import DEFINITIONS_3D
-from .three_d.pipeline3d import derive3d
 
 
-def _planar(out: Path) -> list:
-    """The thesis's four variants and their layout; lines to print."""
-    kin = planar_kinematics()
-    sub = state_substitution()
-    length_defs = {lam: d.subs(sub) for lam, d in kin.tether_length_defs.items()}
+def _group(index: int, out: Path) -> list:
+    """Derive and print every model on the coordinates ALL[index]; lines to print.
+
+    One process per set of coordinates: variants that differ in forces only
+    share their Lagrange step (cached in the process).
+    """
     lines = []
     for defn in DEFINITIONS:
-        fname = module_filename(defn.name)
-        (out / fname).write_text(codegen.module_source(derive(defn), length_defs, kin))
-        lines.append(f"  {defn.name:<17} -> {out.name}/{fname}")
-    (out / "layout.py").write_text(codegen.layout_source(FAMILY_ORDER))
+        if defn.coordinates == ALL[index]:
+            fname = module_filename(defn.name)
+            (out / fname).write_text(module_source(derive(defn)))
+            lines.append(f"  {defn.name:<24} -> {out.name}/{fname}")
+    if index == 0:  # the planar circular index tables
+        (out / "layout.py").write_text(codegen.layout_source(FAMILY_ORDER))
     return lines
 
 
-def _three_d(out: Path) -> list:
-    """The 3-D models."""
-    lines = []
-    geometry3d = codegen3d.geometry_lines()
-    for defn in DEFINITIONS_3D:
-        fname = module_filename(defn.name)
-        (out / fname).write_text(codegen3d.module_source(derive3d(defn), geometry3d))
-        lines.append(f"  {defn.name:<19} -> {out.name}/{fname}")
-    return lines
-
-
-def _free(out: Path) -> list:
-    """The free-orbit models (issue 12)."""
-    return [f"  {f[:-3].replace('_', '-'):<17} -> {out.name}/{f}"
-            for f in orbit_codegen.write_free_models(out)]
-
-
-def _free3d(out: Path) -> list:
-    """The 3-D models on a free orbit."""
-    return [f"  {d.name:<24} -> {out.name}/{f}"
-            for f, d in zip(free3d_codegen.write_free3d_models(out), FREE3D_DEFINITIONS)]
-
-
-GROUPS = (_planar, _three_d, _free, _free3d)  # independent: derived side by side
 # submitted longest first (the 3-D free pair shares one Lagrange derivation and takes
 # about as long as the other three together), so two workers finish close together
-LONGEST_FIRST = (_free3d, _three_d, _planar, _free)
+LONGEST_FIRST = (3, 1, 0, 2)
 
 
 def main(argv=None) -> int:
@@ -69,15 +44,12 @@ def main(argv=None) -> int:
     t0 = time.perf_counter()
     # the four families share nothing but their inputs: one process each, as many at a
     # time as there are cores (each writes its own files; the output is the same bytes)
-    workers = min(len(GROUPS), os.cpu_count() or 1)
+    workers = min(len(ALL), os.cpu_count() or 1)
     with ProcessPoolExecutor(max_workers=workers) as pool:
-        futures = {group: pool.submit(group, out) for group in LONGEST_FIRST}
-        for group in GROUPS:
-            print("\n".join(futures[group].result()))
-    from .orbit import FREE_DEFINITIONS
-    # one registry of every model, in one order: the thesis variants, 3-D, free orbit, 3-D free
-    every = (tuple(DEFINITIONS) + tuple(DEFINITIONS_3D) + tuple(FREE_DEFINITIONS)
-             + tuple(FREE3D_DEFINITIONS))
+        futures = {i: pool.submit(_group, i, out) for i in LONGEST_FIRST}
+        for i in range(len(ALL)):
+            print("\n".join(futures[i].result()))
+    every = DEFINITIONS
     modules = [module_filename(d.name)[:-3] for d in every]
     init = ['"""GENERATED FILE - DO NOT EDIT.  Numba kernels of every model, by name.',
             "",

@@ -32,15 +32,12 @@ switches it off.  ``binomial`` truncates (1 + u)^(-3/2) at the same degree.
 """
 from __future__ import annotations
 
-from collections.abc import Callable
-from dataclasses import dataclass, replace
-
 import sympy as sp
 from sympy.physics.mechanics import LagrangesMethod, Particle, Point, ReferenceFrame, dynamicsymbols
 
 from .energy import InverseSqrt, InverseSqrtMinusOne, kinetic_energy
 from .kinematics import Kinematics
-from .models import objective_families, thesis_families
+from .model import Equations
 from .symbols import COORDINATES, PARAMETERS, TETHER_LENGTHS, P, Parameter, t
 
 r_ref, nu = dynamicsymbols("r nu")
@@ -161,85 +158,22 @@ def free_potential(kin: Kinematics, inverse_powers) -> sp.Expr:
     return V
 
 
-@dataclass(frozen=True)
-class FreeModelDefinition:
-    """A free-orbit model: name, gravity law, force families, its circular twin.
-
-    ``circular`` names the planar model (derive.models) this one reduces to
-    when r = r0, ṙ = r̈ = 0, ν̇ = ω = √(μ/r0³), ν̈ = 0 and J2 = 0.
-    """
-
-    name: str
-    description: str
-    inverse_powers: Callable
-    families: Callable[[Kinematics], tuple]
-    circular: str
-
-
-@dataclass(frozen=True)
-class FreeDerivedModel:
-    """M(q) q̈ + f(q, q̇) = Σ Q_family in the free state symbols (5 rows).
-
-    ``lhs``: the Lagrange left-hand sides d/dt ∂L/∂q̇ − ∂L/∂q (Eq 3.26).
-    ``energy``: T + V [J] (L has no explicit t, so this is the Jacobi integral).
-    """
-
-    definition: FreeModelDefinition
-    lhs: tuple
-    mass_matrix: sp.Matrix
-    f: tuple
-    families: tuple
-    energy: sp.Expr
-    potential: sp.Expr
-
-    @property
-    def name(self) -> str:
-        return self.definition.name
-
-
-def derive_free(defn: FreeModelDefinition) -> FreeDerivedModel:
-    """Lagrange's equations (3.26) of the 5-coordinate model, forces by Eq 3.31."""
-    kin = free_kinematics()
+def equations(defn, kin: Kinematics) -> Equations:
+    """Lagrange's equations (3.26) of the 5-coordinate model (``defn.potential``: 1/|r_i|, 1/|r_i|³)."""
     T = kinetic_energy(kin)
-    V = free_potential(kin, defn.inverse_powers)
+    V = free_potential(kin, defn.potential)
     lm = LagrangesMethod(T - V, list(FREE_COORDINATES), frame=kin.N)
     lhs = tuple(sp.expand(to_free_symbols(e)) for e in lm.form_lagranges_equations())
     acc = FREE_ACCELERATION_SYMBOLS
     M = sp.Matrix(lhs).jacobian(acc).applyfunc(sp.expand)
     zero = {s: 0 for s in acc}
     f = tuple(sp.expand(e.xreplace(zero)) for e in lhs)
-    # tether families expanded: their r·(...) terms (about 1e6 N m in Q_ν) cancel
-    # symbolically, so the exact zeros of Q_r (and Q_ν along the tether) stay zeros
-    families = tuple(replace(fam, Q=tuple(_tidy(to_free_symbols(q), fam.tether) for q in fam.Q),
-                             potential=None if fam.potential is None
-                             else to_free_symbols(fam.potential))
-                     for fam in defn.families(kin))
-    energy = sp.expand(to_free_symbols(T)) + to_free_symbols(V)
-    return FreeDerivedModel(defn, lhs, M, f, families, energy, to_free_symbols(V))
-
-
-def _tidy(q, tether):
-    """Expand a tether family's generalized force; leave drag (with its √) as derived."""
-    return q if tether is None else sp.expand(q)
+    return Equations(M, f, sp.expand(to_free_symbols(T)) + to_free_symbols(V), lhs)
 
 
 def printable(expr):
     """H(u) → 1 + InverseSqrtMinusOne(u), the form codegen prints (expm1/log1p)."""
     return sp.sympify(expr).replace(InverseSqrt, lambda u: 1 + InverseSqrtMinusOne(u))
-
-
-FREE_DEFINITIONS = (
-    FreeModelDefinition("free", "free orbit (r, nu as coordinates), thesis gravity "
-                        "binomial truncated at third degree in the offsets, thesis dampers",
-                        inverse_powers_binomial, thesis_families, "derived"),
-    FreeModelDefinition("free-exact-gravity", "free orbit (r, nu as coordinates), exact "
-                        "point-mass gravity mu/|r_i|, thesis dampers",
-                        inverse_powers_exact, thesis_families, "exact-gravity"),
-    FreeModelDefinition("free-objective-damper", "free orbit (r, nu as coordinates), "
-                        "truncated binomial gravity, Kelvin-Voigt tether dampers",
-                        inverse_powers_binomial, objective_families, "objective-damper"),
-)
-FREE_BY_NAME = {d.name: d for d in FREE_DEFINITIONS}
 
 
 def circular_substitution() -> dict:

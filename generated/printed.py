@@ -155,14 +155,14 @@ def rhs(t, y, p, dydt):
     a8 = a**2*m2
     a9 = b**2*m1
     a10 = 1/(a7*a8 + a7*a9)
-    a11 = a10*a4
-    a12 = a11*r0*math.sin(2*theta)
+    a11 = a10*sin_theta
+    a12 = 6*a11*a3*cos_theta*r0
     dydt[3] = Q_delta_x*a1 + a0*delta_y_dot + a2*a5*delta_x
     dydt[4] = Q_delta_y*a1 - a0*delta_x_dot + a5 + (3/2)*a6*delta_x**2 + (9/2)*a6*delta_y**2
-    dydt[5] = 2*Q_theta*a10*r0 + 3*a**3*a10*a3*m2*sin_theta - a11*b**3*m1*sin_theta - a12*a8 - a12*a9
+    dydt[5] = 2*Q_theta*a10*r0 + 3*a**3*a10*a3*m2*sin_theta - a11*a4*b**3*m1 - a12*a8 - a12*a9
 
 
-N_TRANSCENDENTAL = 3
+N_TRANSCENDENTAL = 2
 LANES = 8  # row stride of the lane arrays: the most lanes (AVX-512)
 
 
@@ -178,7 +178,6 @@ def rhs_lanes(t, y, p, dydt, s):
         theta = y[2*LANES + k]
         s[0*LANES + k] = math.sin(theta)
         s[1*LANES + k] = math.cos(theta)
-        s[2*LANES + k] = math.sin(2*theta)
     for k in range(t.shape[0]):
         delta_x = y[0*LANES + k]
         delta_y = y[1*LANES + k]
@@ -277,13 +276,11 @@ def rhs_lanes(t, y, p, dydt, s):
         a8 = a**2*m2
         a9 = b**2*m1
         a10 = 1/(a7*a8 + a7*a9)
-        a11 = a10*a4
-        a12 = a11*r0*s[2*LANES + k]
+        a11 = a10*sin_theta
+        a12 = 6*a11*a3*cos_theta*r0
         dydt[3*LANES + k] = Q_delta_x*a1 + a0*delta_y_dot + a2*a5*delta_x
         dydt[4*LANES + k] = Q_delta_y*a1 - a0*delta_x_dot + a5 + (3/2)*a6*delta_x**2 + (9/2)*a6*delta_y**2
-        dydt[5*LANES + k] = (
-                2*Q_theta*a10*r0 + 3*a**3*a10*a3*m2*sin_theta - a11*b**3*m1*sin_theta - a12*a8 -
-                a12*a9)
+        dydt[5*LANES + k] = 2*Q_theta*a10*r0 + 3*a**3*a10*a3*m2*sin_theta - a11*a4*b**3*m1 - a12*a8 - a12*a9
 
 
 @njit(cache=True)
@@ -724,7 +721,7 @@ def jacobian(t, y, p, J):
     ja9 = b**2*m1
     ja10 = 1/(ja7*ja8 + ja7*ja9)
     ja11 = ja10*ja7
-    ja12 = 6*ja10*ja2*r0*math.cos(2*theta)
+    ja12 = 6*ja10*ja2*r0*(cos_theta**2 - sin_theta**2)
     J[3, 0] = dQ0_0*ja0 + delta_y*ja4
     J[3, 1] = dQ0_1*ja0 + ja5
     J[3, 2] = dQ0_2*ja0

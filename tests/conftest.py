@@ -13,9 +13,8 @@ import pytest
 @functools.cache
 def _derived(name: str):
     # derive/ (sympy) is imported only by the tests that use these fixtures
-    from derive.models import BY_NAME
-    from derive.pipeline import derive
-    return derive(BY_NAME[name])
+    from derive.reference import derived
+    return derived(name)
 
 
 @pytest.fixture(scope="session")

@@ -1,53 +1,22 @@
-"""Print a DerivedModel3D as a numba module (cse'd straight-line code).
-
-Kernels, with the planar signatures (derive/codegen.py) and 12-entry states:
-
-``rhs(t, y, p, dydt)``        state derivative
-``family_forces(y, p, out)``  out[f, k]: generalized force of family f on q_k, out (7, 6)
-``jacobi(y, p)``              Jacobi integral + taut-tether spring energy [J]
-
-No ``jacobian``: the 3-D models' Jacobian is the central differences of rhs
-(tethersim/engine/jacobian.py; the roll modes and the 3-D equilibrium use it).
+"""The 3-D circular models' solve of M q̈ = Q − f (derive/emit.py prints the rest).
 
 q̈ comes from M q̈ = Q − f: the balloon block is m3·1; the 3×3 attitude block
-is solved numerically (Cramer's rule on the symmetric matrix).  Where the
-axial inertia J_ax = I1_yaw + I2_yaw is zero (point masses: the boom has no
-inertia about its own axis) the ψ row and column of M vanish, ψ is not a
-degree of freedom, and the kernels solve the 2×2 (φ, θ) block and set ψ̈ = 0
-(docs/three-d.md).  Output is deterministic (explicit orders, fixed cse prefixes).
+is solved numerically (Cramer's rule on the symmetric matrix, the helper
+kernels :data:`SOLVERS` printed before ``rhs``).  Where the axial inertia
+J_ax = I1_yaw + I2_yaw is zero (point masses: the boom has no inertia about
+its own axis) the ψ row and column of M vanish, ψ is not a degree of freedom,
+and the kernels solve the 2×2 (φ, θ) block and set ψ̈ = 0 (docs/three-d.md).
+No ``jacobian``: the 3-D models' Jacobian is the central differences of rhs
+(tethersim/engine/jacobian.py; the roll modes and the 3-D equilibrium use it).
+Code names: :func:`prepare` (also used by the 3-D free-orbit models).
 """
 from __future__ import annotations
 
 import sympy as sp
 
-from ..printer import (
-    INDENT,
-    NumbaPrinter,
-    Printing,
-    constant,
-    cse_block,
-    family_forces_source,
-    forces_lines,
-    index_tables,
-    jacobi_source,
-    kernel,
-    paragraph,
-    unpack_lines,
-)
-from .forces3d import FAMILY_ORDER
-from .pipeline3d import DerivedModel3D
-from .symbols3d import (
-    N_Q,
-    PARAMETERS,
-    ROTATION,
-    STATE_MEANINGS,
-    STATE_NAMES,
-    STATE_SYMBOLS,
-    STATE_UNITS,
-    TETHER_LENGTHS,
-    TETHER_REST,
-    TRANSLATION,
-)
+from ..model import DerivedModel
+from ..printer import INDENT, Printing, cse_block, forces_lines, kernel
+from .symbols3d import N_Q, PARAMETERS, ROTATION, STATE_NAMES, STATE_SYMBOLS, TRANSLATION
 
 _CODE_NAMES = {p.symbol: sp.Symbol(p.name, real=True) for p in PARAMETERS}
 _ANGLES = STATE_SYMBOLS[3:6]
@@ -91,23 +60,7 @@ def block(targets, exprs, prefix, indent, op="=", skip_zero=False):
     return cse_block(targets, [prepare(e) for e in exprs], prefix, indent, op, skip_zero)
 
 
-UNPACK = unpack_lines(STATE_NAMES, PARAMETERS, ("phi", "theta", "psi"))
-JACOBI_DOC = ("Jacobi integral h = Σ q̇ ∂L/∂q̇ − L plus taut-tether spring energy [J].", "",
-              f"{INDENT}Constant with drag and dampers off; otherwise dh/dt = power of drag and dampers.")
-
-
-def printing(model: DerivedModel3D) -> Printing:
-    """The 3-D models' code names; exactly-zero force components are not printed."""
-    return Printing(UNPACK, block, lambda j, indent: _length_line(model, j, indent), N_Q,
-                    "N or N m", skip_zero=True)
-
-
-def _length_line(model: DerivedModel3D, j: int, indent: str) -> str:
-    lam = TETHER_LENGTHS[j]
-    return f"{indent}{lam} = {NumbaPrinter().doprint(prepare(model.length_defs[lam]))}"
-
-
-def _mass_block(model: DerivedModel3D, indent) -> list:
+def _mass_block(model: DerivedModel, indent) -> list:
     M = model.mass_matrix
     return block(list(_M.values()), [M[k, m] for k, m in _M], "mm", indent)
 
@@ -127,13 +80,14 @@ def _solve_lines(indent, targets, rhs, zero_axial) -> list:
 ZERO_AXIAL = "I1_yaw + I2_yaw == 0.0"
 
 
-def rhs_source(model: DerivedModel3D) -> list:
+def rhs_source(model: DerivedModel, pr: Printing) -> list:
+    """``rhs(t, y, p, dydt)``: the summed forces, the balloon rows, the attitude solve."""
     i1 = INDENT
     head = ['@njit(cache=True, inline="always")', "def rhs(t, y, p, dydt):",
             f'{i1}"""State derivative dy/dt of model {model.name!r} (SI; layout in STATE)."""']
     out = []
     qn = [f"Q{k}" for k in range(N_Q)]
-    out += forces_lines(printing(model), model.families, qn)
+    out += forces_lines(pr, model.families, qn)
     out.append(f"{i1}# M q'' + f(q, q') = Q (Lagrange, 3.26-3.31 in 3-D)")
     out += [f"{i1}dydt[{k}] = {STATE_NAMES[k + N_Q]}" for k in range(N_Q)]
     rn = [f"R{k}" for k in ROTATION]
@@ -142,64 +96,4 @@ def rhs_source(model: DerivedModel3D) -> list:
                  + [sp.Symbol(qn[k]) - model.f[k] for k in ROTATION], "a", i1)
     out += _mass_block(model, i1)
     out += _solve_lines(i1, [f"dydt[{N_Q + k}]" for k in ROTATION], rn, ZERO_AXIAL)
-    return kernel(head, UNPACK, out)
-
-
-def layout_constants() -> list:
-    """STATE, PARAMETERS ... tuples (the same in every 3-D module and layout3d)."""
-    return [*constant("STATE", STATE_NAMES), *constant("STATE_UNITS", STATE_UNITS),
-            *constant("PARAMETERS", tuple(p.name for p in PARAMETERS)),
-            *constant("PARAMETER_UNITS", tuple(p.unit for p in PARAMETERS)),
-            *constant("FAMILIES", FAMILY_ORDER)]
-
-
-def geometry_lines() -> list:
-    """tether_margins and body_radii of the 3-D models (positions in the local frame L)."""
-    from ..geometry import geometry_source
-    from .kinematics3d import kinematics_3d
-    from .symbols3d import state_substitution
-
-    kin = kinematics_3d()
-    sub = state_substitution()
-    printer = NumbaPrinter()
-
-    def comps(vec):
-        return [printer.doprint(prepare(sp.sympify(c).subs(sub))) for c in kin.components(vec)]
-
-    return geometry_source(list(UNPACK), [comps(v) for v in kin.tether_vectors],
-                           [str(_CODE_NAMES[r]) for r in TETHER_REST],
-                           [comps(r) for r in kin.positions], " (docs/three-d.md)")
-
-
-def module_source(model: DerivedModel3D, geometry=()) -> str:
-    """Source text of one generated 3-D module.
-
-    Parameters
-    ----------
-    model : DerivedModel3D
-        The derived model.
-
-    Returns
-    -------
-    str
-        Header (index tables, layout tuples), solvers, the three kernels and the
-        geometry kernels (``geometry``: tether_margins, body_radii).
-    """
-    head = ['"""GENERATED FILE - DO NOT EDIT.', "",
-            *paragraph(f"Model {model.name!r}: {model.definition.description}."),
-            "Produced by `make derive` (python -m derive) from derive/three_d/; regenerate",
-            f"instead of editing.  sympy {sp.__version__}.  Conventions: docs/three-d.md.", "",
-            *index_tables(STATE_NAMES, STATE_UNITS, PARAMETERS, STATE_MEANINGS), '"""',
-            "import math", "", "from numba import njit", "",
-            f"MODEL = {model.name!r}", *constant("DESCRIPTION", model.definition.description),
-            'GEOMETRY = "3d"  # roll, pitch, yaw and an out-of-plane balloon',
-            'ORBIT = "circular"  # the COM held on a circle of radius r0 at rate ω',
-            *layout_constants()]
-    assert tuple(f.name for f in model.families) == FAMILY_ORDER
-    lines = head + SOLVERS + ["", ""] + rhs_source(model)
-    pr = printing(model)
-    lines += ["", ""] + family_forces_source(pr, model.families)
-    lines += ["", ""] + jacobi_source(pr, model.families, model.jacobi, JACOBI_DOC)
-    if geometry:
-        lines += ["", ""] + list(geometry)
-    return "\n".join(lines) + "\n"
+    return kernel(head, pr.unpack, out)

@@ -34,7 +34,7 @@ z_i²)/r² and (x_i, y_i, z_i) its offset from G in L:
   with the out-of-plane state and the inertias zero it is the planar free
   model's potential.  The z-dependent J2 term 3 μ m J2 R_E² z²/(2 r⁵) is kept
   to that degree (z² and z² y/r).
-* no exact-gravity twin: ``Free3DDefinition(..., exact_power, None, ...)`` derives one
+* no exact-gravity twin: a definition with ``exact_power`` and no truncation derives one
   (|r_i|^(2n) through H(u), G(u)), but its printed kernels are ~19 000 lines
   (Jacobian of the unexpanded H, G terms in 16 states) and it alone adds
   ~3 minutes to ``make derive``; not emitted (docs/orbit.md).
@@ -42,16 +42,14 @@ z_i²)/r² and (x_i, y_i, z_i) its offset from G in L:
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass, replace
 
 import sympy as sp
 
-from ..orbit import FREE_PARAMETERS, J2, R_E, FreeDerivedModel, _tidy, _truncate_degree, nu, r_ref
-from ..symbols import TETHER_LENGTHS
+from ..model import Equations
+from ..orbit import FREE_PARAMETERS, J2, R_E, _truncate_degree, nu, r_ref
 from .energy3d import binomial_power, box_potential, kinetic_energy, point_potential, series_power
-from .forces3d import objective_families, thesis_families
 from .kinematics3d import Kinematics3D, kinematics_3d
-from .pipeline3d import ModelDefinition3D, lagrange_terms
+from .pipeline3d import lagrange_terms
 from .symbols3d import COORDINATE_NAMES, COORDINATE_UNITS, COORDINATES, INERTIAS, P, t
 
 FREE3D_COORDINATES = COORDINATES + (r_ref, nu)
@@ -68,17 +66,6 @@ FREE3D_Q_SYMBOLS = tuple(sp.Symbol(f"Q_{n}", real=True) for n in _NAMES)
 FREE3D_PARAMETERS = FREE_PARAMETERS + INERTIAS
 MU = P["mu"]
 TRUNCATION_DEGREE = 3  # highest degree in the offsets kept in V (derive/orbit.py)
-
-
-@dataclass(frozen=True)
-class Free3DDefinition(ModelDefinition3D):
-    """A 3-D free-orbit variant: a 3-D definition plus its circular twin's name.
-
-    ``power`` gives |r_i|^(2n) about r(t); ``truncation`` is the degree in the
-    offsets V is cut at (None: no truncation).
-    """
-
-    circular: str = ""
 
 
 def free3d_substitution() -> dict:
@@ -124,12 +111,12 @@ def truncate_offsets(expr, degree: int):
     return _truncate_degree(sp.sympify(expr).xreplace(scale), eps, degree)
 
 
-def free3d_potential(kin: Kinematics3D, defn: Free3DDefinition) -> sp.Expr:
-    """V = points + boxes + J2 in the state symbols, truncated as the definition says [J]."""
-    V = (point_potential(kin, defn.power, MU) + box_potential(kin, defn.power, MU)
-         + j2_potential(kin, defn.power))
+def free3d_potential(kin: Kinematics3D, power, truncation) -> sp.Expr:
+    """V = points + boxes + J2 in the state symbols, truncated at degree ``truncation`` [J]."""
+    V = (point_potential(kin, power, MU) + box_potential(kin, power, MU)
+         + j2_potential(kin, power))
     V = to_free3d_symbols(V)
-    return V if defn.truncation is None else truncate_offsets(V, defn.truncation)
+    return V if truncation is None else truncate_offsets(V, truncation)
 
 
 @functools.cache
@@ -137,50 +124,12 @@ def _lagrange(power, truncation) -> tuple:
     """(M, f, T + V) for one gravity law (variants that differ in forces share it)."""
     kin = free3d_kinematics()
     T = to_free3d_symbols(kinetic_energy(kin))
-    V = free3d_potential(kin, Free3DDefinition("", "", power, truncation, None))
+    V = free3d_potential(kin, power, truncation)
     M, f = lagrange_terms(T, V, 0, FREE3D_STATE_SYMBOLS)
     M = M.applyfunc(lambda e: sp.factor_terms(sp.expand(sp.trigsimp(e))))
     return M, f, sp.expand(T) + V
 
 
-def derive_free3d(defn: Free3DDefinition) -> FreeDerivedModel:
-    """Lagrange's equations (3.26) of the 8-coordinate model, forces by Eq 3.31.
-
-    Parameters
-    ----------
-    defn : Free3DDefinition
-        Gravity law, truncation, force families and circular twin.
-
-    Returns
-    -------
-    FreeDerivedModel
-        lhs = M q̈ + f (8 rows), M, f, families (8 components), T + V.
-    """
-    kin = free3d_kinematics()
-    M, f, energy = _lagrange(defn.power, defn.truncation)
-    acc = FREE3D_ACCELERATION_SYMBOLS
-    lhs = tuple(sum(M[k, m] * acc[m] for m in range(len(acc))) + f[k] for k in range(len(acc)))
-    families = tuple(replace(fam, Q=tuple(_tidy(to_free3d_symbols(q), fam.tether) for q in fam.Q),
-                             potential=None if fam.potential is None
-                             else to_free3d_symbols(fam.potential))
-                     for fam in defn.families(kin))
-    return FreeDerivedModel(defn, lhs, M, f, families, energy, None)
-
-
-def length_definitions() -> dict:
-    """λ1, λ2 → 3-D tether lengths in the state symbols."""
-    return {lam: to_free3d_symbols(free3d_kinematics().tether_length_defs[lam])
-            for lam in TETHER_LENGTHS}
-
-
-FREE3D_DEFINITIONS = (
-    Free3DDefinition("3d-free", "3-D model on a free orbit (r, nu as coordinates), thesis "
-                     "gravity binomial truncated at third degree in the offsets, J2 at each "
-                     "body's latitude, thesis dampers", taylor_power, TRUNCATION_DEGREE,
-                     thesis_families, "3d"),
-    Free3DDefinition("3d-free-objective-damper", "3-D model on a free orbit (r, nu as "
-                     "coordinates), truncated binomial gravity, J2 at each body's latitude, "
-                     "Kelvin-Voigt tether dampers", taylor_power, TRUNCATION_DEGREE,
-                     objective_families, "3d-objective-damper"),
-)
-FREE3D_BY_NAME = {d.name: d for d in FREE3D_DEFINITIONS}
+def equations(defn, kin=None) -> Equations:
+    """Lagrange's equations (3.26) of the 8-coordinate model (``defn.potential``: |r_i|^(2n) about r)."""
+    return Equations(*_lagrange(defn.potential, defn.truncation))

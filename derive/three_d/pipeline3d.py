@@ -19,21 +19,17 @@ is a polynomial in r0, so truncating V first gives the same equations.
 from __future__ import annotations
 
 import functools
-from collections.abc import Callable
-from dataclasses import dataclass, replace
 
 import sympy as sp
 
+from ..model import Equations
 from ..pipeline import truncate_inverse_r0
 from .energy3d import box_potential, exact_potential_for_jacobi, kinetic_energy, point_potential
 from .kinematics3d import Kinematics3D, kinematics_3d
 from .symbols3d import (
-    ACCELERATION_SYMBOLS,
     N_Q,
-    PARAMETERS,
     ROTATION,
     STATE_SYMBOLS,
-    TETHER_LENGTHS,
     TRANSLATION,
     P,
     to_state_symbols,
@@ -41,59 +37,6 @@ from .symbols3d import (
 
 Q_SYMBOLS = tuple(sp.Symbol(f"Q_{s}", real=True) for s in
                   ("delta_x", "delta_y", "delta_z", "phi", "theta", "psi"))
-
-
-@dataclass(frozen=True)
-class ModelDefinition3D:
-    """One 3-D model variant.
-
-    Attributes
-    ----------
-    name, description : str
-        Model name (``3d`` ...) and one line for the generated header.
-    power : callable
-        ``power(kin, i, n)`` → |r_i|^(2n), binomial (thesis) or exact.
-    truncation : int or None
-        Highest power of 1/r0 kept in the equations, or None.
-    families : callable
-        Kinematics3D → tuple of ForceFamily in FAMILY_ORDER.
-    """
-
-    name: str
-    description: str
-    power: Callable
-    truncation: int | None
-    families: Callable
-
-
-@dataclass(frozen=True)
-class DerivedModel3D:
-    """M q̈ + f = Σ Q in the plain state symbols (derive.three_d.symbols3d).
-
-    Attributes
-    ----------
-    mass_matrix : sympy.Matrix
-        6×6, depends on φ, ψ and the inertias only.
-    f : tuple
-        The six non-acceleration terms (Coriolis, centrifugal, gravity) [N, N m].
-    families : tuple of ForceFamily
-        Generalized forces (6 components each), λ1, λ2 as symbols.
-    jacobi : sympy.Expr
-        h = Σ q̇ ∂L/∂q̇ − L without state-free constants [J].
-    length_defs : dict
-        λ1, λ2 → 3-D tether lengths in the state symbols.
-    """
-
-    definition: ModelDefinition3D
-    mass_matrix: sp.Matrix
-    f: tuple
-    families: tuple
-    jacobi: object
-    length_defs: dict
-
-    @property
-    def name(self) -> str:
-        return self.definition.name
 
 
 def _speed_symbols():
@@ -135,12 +78,12 @@ def lagrange_terms(T, V, V_unexpanded=0, state=STATE_SYMBOLS) -> tuple:
     return M, tuple(f)
 
 
-def potential(kin: Kinematics3D, defn: ModelDefinition3D) -> tuple:
-    """(V to expand, V not to expand) in state symbols, truncated as the definition says."""
-    Vp = to_state_symbols(point_potential(kin, defn.power))
-    Vb = to_state_symbols(box_potential(kin, defn.power))
-    if defn.truncation is not None:
-        return truncate_inverse_r0(Vp + Vb, defn.truncation), sp.S.Zero
+def potential(kin: Kinematics3D, power, truncation) -> tuple:
+    """(V to expand, V not to expand) in state symbols, truncated at 1/r0**truncation."""
+    Vp = to_state_symbols(point_potential(kin, power))
+    Vb = to_state_symbols(box_potential(kin, power))
+    if truncation is not None:
+        return truncate_inverse_r0(Vp + Vb, truncation), sp.S.Zero
     return Vp, Vb
 
 
@@ -159,36 +102,16 @@ def _lagrange(power, truncation) -> tuple:
     """(M, f, jacobi) for one gravity law (shared by variants that differ in forces only)."""
     kin = kinematics_3d()
     T = to_state_symbols(kinetic_energy(kin))
-    defn = ModelDefinition3D("", "", power, truncation, None)
-    V, V_boxes = potential(kin, defn)
+    V, V_boxes = potential(kin, power, truncation)
     M, f = lagrange_terms(T, V, V_boxes)
     M = M.applyfunc(lambda e: sp.factor_terms(sp.expand(sp.trigsimp(e))))
     _check_block_diagonal(M)
     return M, f, jacobi_integral(T, V, V_boxes, truncation)
 
 
-def derive3d(defn: ModelDefinition3D) -> DerivedModel3D:
-    """Run the 3-D pipeline for one definition.
-
-    Parameters
-    ----------
-    defn : ModelDefinition3D
-        Gravity law, truncation and force families of the variant.
-
-    Returns
-    -------
-    DerivedModel3D
-        M, f, families, Jacobi integral and tether lengths in the state symbols.
-    """
-    kin = kinematics_3d()
-    M, f, jac = _lagrange(defn.power, defn.truncation)
-    fams = tuple(replace(fam, Q=tuple(to_state_symbols(q) for q in fam.Q),
-                         potential=None if fam.potential is None
-                         else to_state_symbols(fam.potential))
-                 for fam in defn.families(kin))
-    defs = {lam: to_state_symbols(d) for lam, d in kin.tether_length_defs.items()}
-    _check_symbols(defn.name, list(M) + list(f) + [q for fam in fams for q in fam.Q] + [jac])
-    return DerivedModel3D(defn, M, f, fams, jac, defs)
+def equations(defn, kin=None) -> Equations:
+    """The Lagrange step of the 3-D circular models (``defn.potential`` gives |r_i|^(2n))."""
+    return Equations(*_lagrange(defn.potential, defn.truncation))
 
 
 def _check_block_diagonal(M) -> None:
@@ -199,13 +122,3 @@ def _check_block_diagonal(M) -> None:
             if sp.simplify(M[k, m] - want) != 0 or sp.simplify(M[m, k] - want) != 0:
                 raise ValueError(f"mass matrix not block diagonal at {k}, {m}")
     assert all(M[k, m] == M[m, k] for k in ROTATION for m in ROTATION)
-
-
-def _check_symbols(name: str, exprs) -> None:
-    """Fail at generation time if an expression uses a symbol with no slot."""
-    allowed = (set(STATE_SYMBOLS) | set(ACCELERATION_SYMBOLS) | set(Q_SYMBOLS)
-               | {p.symbol for p in PARAMETERS} | set(TETHER_LENGTHS))
-    for e in exprs:
-        extra = sp.sympify(e).free_symbols - allowed
-        if extra:
-            raise ValueError(f"model {name!r}: symbols without a slot: {sorted(map(str, extra))}")

@@ -1,28 +1,23 @@
-"""The committed 3-D kernels against the symbolic derivation (check (d)).
+"""The 3-D circular kernels' layout and their zero-axial-inertia rule.
 
-Truth: derive.three_d.reference.Reference3D, the DerivedModel3D's M, f, family
-forces and Jacobi integral evaluated with mpmath at 40 digits and solved there
-(M q̈ = Σ Q − f), at the same float64 inputs.  The Jacobian is checked against
-a 40-digit central difference of that truth (step 1e-12 relative: truncation
-error ~1e-24).
+Each generated kernel equals its own derivation for every model
+(tests/derive/test_contract_symbolic.py, 40-digit truth of derive/reference.py);
+here: the layout tables are the derivation's symbols, and the rule for point
+masses (ψ̈ = 0, the (φ, θ) block alone) is the limit of a vanishing axial inertia.
 """
 from __future__ import annotations
 
 import math
 
-import mpmath
 import numpy as np
 import pytest
 
 import tethersim.generated as generated
+from derive.models import THREE_D_DEFINITIONS as DEFINITIONS_3D
 from derive.printer import module_filename
 from derive.three_d import symbols3d as s3
 from derive.three_d.forces3d import FAMILY_ORDER
-from derive.three_d.models3d import DEFINITIONS_3D
-from derive.three_d.reference import Reference3D, derived_3d
-from tethersim.engine.jacobian import jacobian
 from tethersim.generated import three_d as layout3d  # every 3-D model has this layout
-from tethersim.model.registry import BY_NAME
 
 MODELS = tuple(n for n, m in generated.MODELS.items()
                if m.GEOMETRY == "3d" and m.ORBIT == "circular")
@@ -30,11 +25,6 @@ SEED = 20051303
 N_POINTS = 16
 R0 = 6.578e6
 MU = 3.986004418e14
-REL_TOL = 1e-11  # per component, relative to max(|truth|, FLOOR)
-FLOOR = 1e-15
-# per entry, relative to the largest truth entry of its row: the central differences of
-# tethersim/engine/jacobian.py (its docstring: rounding of the air speed in the rate columns)
-JAC_TOL = 1e-8
 PI = s3.PARAMETER_NAMES.index
 
 
@@ -75,16 +65,6 @@ def sample():
     return [draw(rng, cases[n % 4], axial=(n // 4) % 2 == 0) for n in range(N_POINTS)]
 
 
-@pytest.fixture(scope="module")
-def reference():
-    return {name: Reference3D(derived_3d(name)) for name in MODELS}
-
-
-def rel_err(got, truth):
-    with mpmath.workdps(40):
-        return float(abs(mpmath.mpf(float(got)) - truth) / max(abs(truth), mpmath.mpf(FLOOR)))
-
-
 def test_layout_tables_match_derive_symbols():
     assert layout3d.STATE == s3.STATE_NAMES and layout3d.PARAMETERS == s3.PARAMETER_NAMES
     assert layout3d.STATE_UNITS == s3.STATE_UNITS and layout3d.FAMILIES == FAMILY_ORDER
@@ -93,76 +73,6 @@ def test_layout_tables_match_derive_symbols():
         assert module.__name__.endswith(module_filename(name)[:-3])
         assert (module.STATE, module.PARAMETERS, module.FAMILIES) == (
             layout3d.STATE, layout3d.PARAMETERS, layout3d.FAMILIES)
-
-
-def test_sample_gates_agree_and_cover_every_case(sample, reference):
-    seen = set()
-    for y, p in sample:
-        lam = _lengths(y, p)
-        taut = (lam[0] > p[PI("l10")], lam[1] > p[PI("l20")])
-        assert reference["3d"].forces(y, p)[1] == taut
-        seen.add(taut)
-    assert len(seen) == 4
-
-
-@pytest.mark.parametrize("name", MODELS)
-def test_generated_rhs_equals_symbolic_at_40_digits(sample, reference, name):
-    worst = 0.0
-    for y, p in sample:
-        d = np.full(12, np.nan)
-        generated.MODELS[name].rhs(0.0, y, p, d)
-        assert np.array_equal(d[:6], y[6:])
-        truth = reference[name].qdd(y, p)
-        worst = max(worst, *(rel_err(d[6 + k], truth[k]) for k in range(6)))
-    assert worst <= REL_TOL, worst
-
-
-@pytest.mark.parametrize("name", MODELS)
-def test_generated_family_forces_equal_symbolic_at_40_digits(sample, reference, name):
-    worst = 0.0
-    for y, p in sample:
-        out = np.full((7, 6), np.nan)
-        generated.MODELS[name].family_forces(y, p, out)
-        fam, taut = reference[name].forces(y, p)
-        for f in range(7):
-            worst = max(worst, *(rel_err(out[f, k], fam[f][k]) for k in range(6)))
-        assert np.all(out[:, 5] == 0.0)  # no family has a moment about the boom axis
-    assert worst <= REL_TOL, worst
-
-
-@pytest.mark.parametrize("name", MODELS)
-def test_generated_jacobi_equals_symbolic_at_40_digits(sample, reference, name):
-    worst = max(rel_err(generated.MODELS[name].jacobi(y, p), reference[name].jacobi(y, p))
-                for y, p in sample)
-    assert worst <= REL_TOL, worst
-
-
-def fd_jacobian(ref, y, p):
-    """12x12 central difference of the 40-digit rhs, step 1e-12 max(1, |y_c|)."""
-    cols = []
-    with mpmath.workdps(40):
-        for c in range(12):
-            h = 1e-12 * max(1.0, abs(y[c]))
-            yp, ym = list(map(mpmath.mpf, y)), list(map(mpmath.mpf, y))
-            yp[c] += h
-            ym[c] -= h
-            fp, fm = ref.rhs(yp, p), ref.rhs(ym, p)
-            cols.append([(fp[i] - fm[i]) / (2 * h) for i in range(12)])
-    return np.array([[float(cols[c][i]) for c in range(12)] for i in range(12)])
-
-
-@pytest.mark.slow
-@pytest.mark.parametrize("name", MODELS)
-def test_jacobian_equals_symbolic_difference_quotient(sample, reference, name):
-    """The engine's Jacobian (central differences of the generated rhs) against the 40-digit one."""
-    worst = 0.0
-    for y, p in sample[::3]:
-        J = np.full((12, 12), np.nan)
-        jacobian(BY_NAME[name].index, 0.0, y, p, J)
-        truth = fd_jacobian(reference[name], y, p)
-        scale = np.maximum(np.max(np.abs(truth), axis=1, keepdims=True), FLOOR)
-        worst = max(worst, float(np.max(np.abs(J - truth) / scale)))
-    assert worst <= JAC_TOL, worst
 
 
 @pytest.mark.parametrize("name", MODELS)

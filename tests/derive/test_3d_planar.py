@@ -16,8 +16,8 @@ import pytest
 import sympy as sp
 
 import tethersim.generated as generated
+from derive.reference import derived as derived_3d
 from derive.three_d import symbols3d as s3
-from derive.three_d.reference import derived_3d
 from tethersim.engine.jacobian import jacobian
 from tethersim.generated import layout
 from tethersim.generated import three_d as layout3d  # every 3-D model has this layout

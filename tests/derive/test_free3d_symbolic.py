@@ -15,15 +15,14 @@ import functools
 import pytest
 import sympy as sp
 
-from derive.orbit import FREE_BY_NAME, circular_substitution, derive_free
+from derive.models import FREE_3D_DEFINITIONS as FREE3D_DEFINITIONS
+from derive.orbit import circular_substitution
+from derive.reference import derived
+from derive.reference import derived as derived_3d
 from derive.three_d.free3d import (
     FREE3D_ACCELERATION_SYMBOLS,
-    FREE3D_BY_NAME,
-    FREE3D_DEFINITIONS,
     FREE3D_STATE_SYMBOLS,
-    derive_free3d,
 )
-from derive.three_d.reference import derived_3d
 from derive.three_d.symbols3d import ACCELERATION_SYMBOLS, INERTIAS
 
 pytestmark = pytest.mark.slow  # sympy derivations of minutes
@@ -35,7 +34,7 @@ PLANAR_FREE_TWIN = {"3d-free": "free", "3d-free-objective-damper": "free-objecti
 
 @functools.cache
 def free3d(name):
-    return derive_free3d(FREE3D_BY_NAME[name])
+    return derived(name)
 
 
 def _zero(expr) -> bool:
@@ -79,7 +78,7 @@ def _planar_state() -> dict:
 def test_in_the_plane_with_point_masses_it_is_the_planar_free_model(name):
     """δx, δy, θ, r, ν rows (J2 on) = derive/orbit.py's; δz and φ rows and forces vanish."""
     model = free3d(name)
-    planar = derive_free(FREE_BY_NAME[PLANAR_FREE_TWIN[name]])
+    planar = derived(PLANAR_FREE_TWIN[name])
     sub = _planar_state()
     acc = {s: 0 for s in FREE3D_ACCELERATION_SYMBOLS[2:4]}  # out-of-plane q̈ (δz, φ)
     acc[FREE3D_ACCELERATION_SYMBOLS[5]] = 0  # ψ̈: no ψ row or column with I = 0

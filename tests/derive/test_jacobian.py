@@ -29,7 +29,7 @@ STATES = {
 }
 
 
-@pytest.mark.parametrize("model", THESIS_VARIANTS)  # 6-state models; 3-D: test_3d_generated
+@pytest.mark.parametrize("model", THESIS_VARIANTS)  # 6-state models; every model: test_contract_symbolic
 @pytest.mark.parametrize("case", STATES)
 @pytest.mark.parametrize("preset", ["satI", "dumbsat"])
 def test_generated_jacobian_matches_finite_differences(model, case, preset):

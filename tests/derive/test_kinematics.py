@@ -11,7 +11,6 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from derive.codegen import NumbaPrinter
 from derive.energy import (
     InverseCubeMinusOne,
     InverseSqrt,
@@ -19,6 +18,7 @@ from derive.energy import (
     inverse_distance_exact,
 )
 from derive.pipeline import to_state_symbols
+from derive.printer import NumbaPrinter
 from derive.symbols import COORDINATES, STATE_SYMBOLS, TETHER_LENGTHS, P, t
 
 a, b, r0, omega = P["a"], P["b"], P["r0"], P["omega"]

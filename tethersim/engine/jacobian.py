@@ -22,9 +22,9 @@ gravity that cancels against the centrifugal term (δ columns good to ~1e-4 of t
 O(ω²) entries: ample for the RK4 step warning, the free models' only use).  A
 column whose step crosses a tether's taut/slack switch (λ_j = l_j0 within h_c)
 averages the two sides.  tests/engine/test_jacobian.py checks it against the
-generated planar Jacobians; tests/derive/test_3d_generated.py and
-test_orbit_symbolic.py against difference quotients of the symbolic models in
-40 and 30 digits, tests/derive/test_3d_modes.py its modes against closed forms.
+generated planar Jacobians; tests/derive/test_contract_symbolic.py against the
+40-digit difference quotient of every model's derivation, and
+tests/derive/test_3d_modes.py its modes against closed forms.
 """
 from __future__ import annotations
 
