@@ -122,12 +122,13 @@ def _dyneema(sat, lengths=(30.83, 28.92)):
     return ts.with_tethers(sat.replace(l10=lengths[0], l20=lengths[1]), "dyneema-sk75", 1e-3)
 
 
-def test_real_lines_need_the_implicit_scheme_and_say_so_before_any_run():
-    from tethersim.experiments.feasibility import FeasibilitySpec
+def test_real_lines_need_the_implicit_scheme_and_say_so_before_any_run(tmp_path):
+    from tethersim.experiments.feasibility import FeasibilitySpec, run_feasibility
     sat = _dyneema(ts.load_preset("satI"), (6.0, 6.0))  # axial period 0.05 s
     with pytest.raises(ValueError) as exc:
-        FeasibilitySpec(sat, (200.0,))
+        run_feasibility(FeasibilitySpec(sat, (200.0,)), tmp_path / "store")
     assert "method='implicit'" in str(exc.value) and "\n" not in str(exc.value)
+    assert not (tmp_path / "store").exists()
     with pytest.raises(ValueError, match="method = 'rk4': allowed values adaptive, implicit"):
         FeasibilitySpec(sat, (200.0,), method="rk4")
     spec = FeasibilitySpec(sat, (200.0,), method="implicit", rtol=1e-6)

@@ -167,7 +167,8 @@ class DesignSpec:
         """The feasibility point of a design (its runs, and the check tolerance)."""
         return FeasibilitySpec(sat, (sat.altitude / 1e3,), (sat.A3,), SOLAR_CASES,
                                periods=self.periods, max_lifetime_h=self.max_lifetime_h,
-                               model=self.model, rtol=self.rtol)
+                               model=self.model, rtol=self.rtol,
+                               method="implicit" if self.method == "implicit" else "adaptive")
 
     def lowest_altitude(self) -> float:
         """The lowest start altitude [m] a design can have (the most orbits per free run)."""

@@ -119,7 +119,6 @@ class FeasibilitySpec:
                              f"{RTOL_RANGE[1]:g}")
         if self.method not in METHODS:
             raise ValueError(f"method = {self.method!r}: allowed values {', '.join(METHODS)}")
-        check_scheme(self.satellite, self.method)  # real lines: before any point runs
         _check_atlas_fields(self.satellite)
         if not self.areas:
             object.__setattr__(self, "areas", (self.satellite.A3,))
@@ -349,6 +348,7 @@ def run_feasibility(spec: FeasibilitySpec, out, workers: int | None = None,
     ValueError
         When ``out`` holds another spec's points (one line, naming the folder).
     """
+    check_scheme(spec.satellite, spec.method)  # real lines: before any store or run
     out = Path(out)
     with LineStore(out, POINTS_FILE, spec.to_json(), "a feasibility atlas") as store:
         done = {_key(row): row for row in store.rows()}
