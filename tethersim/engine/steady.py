@@ -248,11 +248,9 @@ def _hung(sat, theta: float, pull, iterations: int = 30):
     l_j0 (1 + T_j / E_j) and the position is iterated with the load at it.  None where
     the geometry has no answer (the lines cannot meet, or no load).
     """
-    s, c = math.sin(theta), math.cos(theta)
-    ends = (np.array([sat.b * s, sat.b * c]), np.array([-sat.a * s, -sat.a * c]))
+    ends = _ends(sat, theta)
     rest, ea = (sat.l10, sat.l20), (sat.E1, sat.E2)
-    lengths = list(rest)
-    x = _apex(ends, lengths)
+    x = _apex(ends, rest)
     if x is None:
         return None
     for _ in range(iterations):
@@ -279,6 +277,12 @@ def _hung(sat, theta: float, pull, iterations: int = 30):
     return x
 
 
+def _ends(sat, theta: float) -> tuple:
+    """The tethers' attachment points at pitch θ: tip-mass (+b along the boom), bus (−a)."""
+    s, c = math.sin(theta), math.cos(theta)
+    return np.array([sat.b * s, sat.b * c]), np.array([-sat.a * s, -sat.a * c])
+
+
 def _apex(ends, lengths):
     """The wake-side (+x) point at distances ``lengths`` from ``ends``, or None."""
     p1, p2 = ends
@@ -303,8 +307,7 @@ class _Unbalanced(Exception):
 def _candidates(sat, theta: float) -> list:
     """Guesses of the balloon's (δx, δy) at pitch θ: the bridle triangle's apex on the
     wake side (+x) and each line straight downstream of its attachment point."""
-    s, c = math.sin(theta), math.cos(theta)
-    p1, p2 = np.array([sat.b * s, sat.b * c]), np.array([-sat.a * s, -sat.a * c])
+    p1, p2 = _ends(sat, theta)
     out = [p1 + [sat.l10, 0.0], p2 + [sat.l20, 0.0]]
     apex = _apex((p1, p2), (sat.l10, sat.l20))
     if apex is not None:
