@@ -29,8 +29,9 @@ import numpy as np
 from peers import _error
 from timing import cpu_clock, interleave
 
-MODEL = "objective-damper"
-LENGTHS = (30.83, 28.92)  # m: the thesis's stretched equilibrium geometry
+from tethersim.experiments.real_tethers import REAL_MODEL as MODEL
+from tethersim.experiments.real_tethers import STRETCHED_LENGTHS as LENGTHS
+
 DENSITY = 0.5  # x nominal: the solar cycle's step from rest
 PERIODS = 50
 TS_RTOLS = (1e-6, 1e-8, 1e-10)
@@ -43,16 +44,12 @@ SAMPLES = 200  # per orbit: the metrics grid
 
 def start_satellite():
     """SatI on 1 mm Dyneema lines at LENGTHS, at rest at its nominal-air equilibrium,
-    flying at DENSITY x nominal air."""
+    flying at DENSITY x nominal air (tethersim.experiments.real_tethers)."""
     from tethersim.engine.start import equilibrium_satellite
-    from tethersim.model.materials import tether_parameters
+    from tethersim.experiments.real_tethers import real_lines
     from tethersim.model.presets import load_preset
-    sat = load_preset("satI")
-    ch = {}
-    for j, l0 in zip((1, 2), LENGTHS):
-        t = tether_parameters("dyneema-sk75", 1e-3, l0, sat.m3)
-        ch.update({f"l{j}0": l0, f"E{j}": t["EA"], f"c{j}": t["c"], f"Fb{j}": t["breaking_load"]})
-    return equilibrium_satellite(sat.replace(**ch), MODEL).replace(density_scale=DENSITY)
+    sat = real_lines(load_preset("satI"), LENGTHS)
+    return equilibrium_satellite(sat, MODEL).replace(density_scale=DENSITY)
 
 
 def bench_stiff(rep, q, log, periods: float | None = None) -> None:

@@ -16,10 +16,11 @@ from tethersim.output.report import MAPS, build_report
 @pytest.fixture(scope="module")
 def report(tmp_path_factory):
     out = tmp_path_factory.mktemp("report")
-    # the roll section compiles the 3-D kernels (minutes on a cold cache): it is built and
-    # checked in the slow tier, tests/output/test_roll_section.py
+    # the roll section compiles the 3-D kernels (minutes on a cold cache), the real-tether
+    # section the implicit loop of objective-damper (~15 s): each is built and checked in the
+    # slow tier, tests/output/test_roll_section.py and test_real_section.py
     return build_report(out, grid=3, periods=2.0, progress=False, log=lambda *a: None,
-                        roll=False)
+                        roll=False, real=False)
 
 
 def test_report_links_only_figures_that_exist(report):

@@ -8,7 +8,8 @@ eigenvalues, with their agreement; the torque balance E2/E1 vs b/a; and a
 table that sets each surviving statement of the thesis (docs/sources.md, "The thesis")
 beside what this project computes; whether the design works in a real orbit
 (balloon lost and re-entry of the free orbit, settling, trim across the solar cycle:
-docs/feasibility.md);
+docs/feasibility.md); the same satellite on real (Dyneema) lines: trim, its move with
+the air, decay, and the tensions of a run into doubled air (docs/real-tethers.md);
 and whether the balloon makes the satellite resist rolling (the 3-D models:
 linear roll and yaw modes against the boom alone, two disturbed runs;
 docs/roll.md).
@@ -34,6 +35,7 @@ from tethersim.output.feasibility_section import section_feasibility
 from tethersim.output.page import Page, write_html
 from tethersim.output.page import pre as _pre
 from tethersim.output.page import table as _table
+from tethersim.output.real_section import section_real
 from tethersim.output.roll_section import section_roll
 
 SATS = ("satI", "satII", "dumbsat")
@@ -340,7 +342,8 @@ def section_facts(page: Page) -> None:
 
 
 def build_report(out, grid: int = 41, periods: float = 50.0, workers=None,
-                 progress: bool | None = None, log=print, roll: bool = True) -> Path:
+                 progress: bool | None = None, log=print, roll: bool = True,
+                 real: bool = True) -> Path:
     """Run every section and write OUT/index.html; return its path.
 
     Parameters
@@ -361,6 +364,9 @@ def build_report(out, grid: int = 41, periods: float = 50.0, workers=None,
     roll : bool, optional
         Include the roll section (the 3-D models; their first compile takes a
         minute or two on a cold cache).
+    real : bool, optional
+        Include the real-tether section (the implicit scheme's loop of the
+        objective-damper model: ~15 s to compile on a cold cache).
 
     Returns
     -------
@@ -378,6 +384,8 @@ def build_report(out, grid: int = 41, periods: float = 50.0, workers=None,
              ("force breakdowns", lambda: section_forces(page, periods)),
              ("moduli only", lambda: section_moduli_only(page)),
              ("feasibility in a real orbit", lambda: section_feasibility(page, periods, workers))]
+    if real:
+        steps.append(("real tethers", lambda: section_real(page, periods)))
     if roll:
         steps.append(("roll and yaw (3-D)", lambda: section_roll(page, periods)))
     maps = []

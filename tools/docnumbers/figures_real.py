@@ -1,7 +1,7 @@
 """Figures of docs/real-tethers.md: SatI on real (Dyneema SK75, 1 mm) lines (issue 21).
 
-Every configuration is SatI with both lines from ``tether_parameters("dyneema-sk75",
-1e-3, l0, m3)`` (EA, the loss factor's damping c, the breaking load Fb), in the
+Every configuration is SatI on the lines of ``tethersim.experiments.real_tethers``
+(``real_lines``: EA, the loss factor's damping c, the breaking load Fb), in the
 objective-damper model (a Kelvin-Voigt line: the damper acts on the stretch rate);
 "thesis" is SatI's own tethers in the same model.  The linear figures are fast; the
 nonlinear runs (Radau IIA, 50 orbits each) are the slow tier.
@@ -17,15 +17,21 @@ from tethersim.analysis.equilibrium import find_equilibrium
 from tethersim.analysis.tethers import tether_loads
 from tethersim.engine.simulate import simulate
 from tethersim.engine.start import equilibrium_satellite
-from tethersim.model.materials import MAX_FAILURE_STRAIN, REAL_TETHER_EA, tether_parameters
+from tethersim.experiments.real_tethers import (
+    REAL_MODEL,
+    RUN_TOLERANCES,
+    STRETCHED_LENGTHS,
+    density_step,
+    real_lines,
+)
+from tethersim.model.materials import MAX_FAILURE_STRAIN, REAL_TETHER_EA
 from tethersim.model.presets import load_preset
 from tools.docnumbers.check import Figure
 
 D = "docs/real-tethers.md"
-MODEL = "objective-damper"
-LENGTHS = {"6 m": (6.0, 6.0), "stretched": (30.83, 28.92)}
+MODEL = REAL_MODEL
+LENGTHS = {"6 m": (6.0, 6.0), "stretched": STRETCHED_LENGTHS}
 RUN_ORBITS = 50
-RUN_TOLERANCES = dict(rtol=1e-8, atol=1e-10)
 
 
 def _sat():
@@ -35,14 +41,7 @@ def _sat():
 @cache
 def real(config: str):
     """SatI on Dyneema 1 mm lines of rest lengths ``LENGTHS[config]``; ``"thesis"``: SatI."""
-    sat = _sat()
-    if config == "thesis":
-        return sat
-    ch = {}
-    for j, l0 in zip((1, 2), LENGTHS[config]):
-        t = tether_parameters("dyneema-sk75", 1e-3, l0, sat.m3)
-        ch.update({f"l{j}0": l0, f"E{j}": t["EA"], f"c{j}": t["c"], f"Fb{j}": t["breaking_load"]})
-    return sat.replace(**ch)
+    return _sat() if config == "thesis" else real_lines(_sat(), LENGTHS[config])
 
 
 @cache
@@ -82,9 +81,7 @@ def balloon_in_boom_frame(config: str) -> tuple:
 def run(config: str, density: float):
     """RUN_ORBITS orbits from the nominal-density equilibrium, flying at ``density`` x the
     nominal air: the solar cycle's step in drag, met from rest."""
-    start = equilibrium_satellite(real(config), MODEL).replace(density_scale=density)
-    return simulate(start, periods=RUN_ORBITS, method="implicit", model=MODEL,
-                    progress=False, start="given", **RUN_TOLERANCES)
+    return density_step(real(config), RUN_ORBITS, density, MODEL)
 
 
 def run_row(config: str, density: float, column: str) -> float:

@@ -1,0 +1,56 @@
+"""The report's real-tether section (tethersim/output/real_section.py): its table holds the
+trim of each configuration as tethersim.experiments.real_tethers computes it afresh, and
+its run's loads are the run's own."""
+from __future__ import annotations
+
+import html
+import re
+
+import pytest
+
+from tethersim.analysis.tethers import tether_loads
+from tethersim.experiments.real_tethers import trim
+from tethersim.output.page import Page, write_html
+from tethersim.output.real_section import section_real
+
+# the implicit loop of objective-damper (~15 s to compile cold): the slow tier (CI runs it)
+pytestmark = pytest.mark.slow
+PERIODS = 2.0
+
+
+@pytest.fixture(scope="module")
+def built(tmp_path_factory):
+    out = tmp_path_factory.mktemp("real_report")
+    (out / "img").mkdir()
+    page = Page(out)
+    nums = section_real(page, PERIODS)
+    return page, nums, write_html(page).read_text()
+
+
+def _tables(text: str) -> list:
+    return [[[html.unescape(c) for c in re.findall(r"<t[dh]>(.*?)</t[dh]>", r)]
+             for r in re.findall(r"<tr>(.*?)</tr>", t, re.S)]
+            for t in re.findall(r"<table.*?</table>", text, re.S)]
+
+
+def test_the_trim_table_is_each_configurations_trim_computed_afresh(built):
+    page, nums, text = built
+    rows = {r[0]: r for r in next(t for t in _tables(text) if t[0][0] == "tethers")[1:]}
+    assert len(rows) == 3
+    for label, (sat, _) in nums["rows"].items():
+        t = trim(sat)
+        assert rows[label][3] == f"{t['theta']:+.4f}"
+        assert rows[label][6] == f"{t['slowest_decay_h']:.3g}"
+    # the stretched real lines hold the trim band over the air's range, the thesis's do not
+    verdicts = [r[5] for r in rows.values()]
+    assert verdicts[0] == "no" and verdicts[-1] == "yes"
+
+
+def test_the_loads_table_is_the_runs_own_and_the_figure_exists(built):
+    page, nums, text = built
+    loads = tether_loads(nums["run"])
+    table = next(t for t in _tables(text) if t[0][0] == "tether")
+    assert [r[1] for r in table[1:]] == [f"{ld.peak:.4g}" for ld in loads]
+    assert nums["run"].t[-1] == pytest.approx(PERIODS * nums["run"].satellite.period)
+    assert (page.out / "img" / "real_tensions.png").is_file()
+    assert "And on real tethers?" in text

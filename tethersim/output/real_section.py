@@ -1,0 +1,102 @@
+"""The report's section "and on real tethers?" (docs/real-tethers.md, issue 21 item 5).
+
+Computed at report time with :mod:`tethersim.experiments.real_tethers`: SatI's trim,
+its move with the air density and its slowest decay on the thesis's tethers and on
+1 mm Dyneema lines of two geometries (SatI's 6 m, and cut to the thesis's stretched
+equilibrium); then a run of the stretched lines from rest at the nominal-air
+equilibrium into doubled air (the solar cycle's step in drag), its tensions against
+the breaking load plotted.
+"""
+from __future__ import annotations
+
+import html
+import math
+
+from tethersim.output.page import Page
+from tethersim.output.page import table as _table
+
+BAND = 0.05  # rad: the thesis's pitch trim band (p. 5-18)
+STEP_DENSITY = 2.0  # x nominal air: the run's step in drag
+
+
+def real_numbers(sat, periods: float) -> dict:
+    """Everything the section prints, computed.
+
+    Parameters
+    ----------
+    sat : Satellite
+        The satellite on its own (thesis) tethers.
+    periods : float
+        Orbits of the density-step run.
+
+    Returns
+    -------
+    dict
+        ``rows``: {label: (satellite, :func:`~tethersim.experiments.real_tethers.trim`)};
+        ``run``: the density-step run of the stretched lines; ``loads``: its
+        :class:`~tethersim.analysis.tethers.TetherLoads`.
+    """
+    from tethersim.analysis.tethers import tether_loads
+    from tethersim.experiments.real_tethers import (
+        LINE,
+        STRETCHED_LENGTHS,
+        density_step,
+        real_lines,
+        trim,
+    )
+
+    line = f"{LINE[0]} {LINE[1] * 1e3:g} mm"
+    stretched = real_lines(sat, STRETCHED_LENGTHS)
+    sats = {"thesis tethers": sat,
+            f"{line}, {sat.l10:g} / {sat.l20:g} m lines": real_lines(sat),
+            f"{line}, {STRETCHED_LENGTHS[0]:g} / {STRETCHED_LENGTHS[1]:g} m lines": stretched}
+    run = density_step(stretched, periods, STEP_DENSITY)
+    return {"rows": {k: (s, trim(s)) for k, s in sats.items()}, "run": run,
+            "loads": tether_loads(run)}
+
+
+def section_real(page: Page, periods: float, sat_name: str = "satI") -> dict:
+    """Add the section (module docstring) to ``page``; return :func:`real_numbers`."""
+    from tethersim.model.presets import load_preset
+    from tethersim.output.plots.run import plot_tensions
+
+    sat = load_preset(sat_name)
+    nums = real_numbers(sat, periods)
+    rows = []
+    for label, (s, t) in nums["rows"].items():
+        lo, hi = (t["theta_at"][k] for k in sorted(t["theta_at"]))
+        holds = all(abs(v) <= BAND for v in (t["theta"], lo, hi))
+        rows.append([label, f"{s.E1:.3g} / {s.E2:.3g}", f"{t['delta_x']:.3f}",
+                     f"{t['theta']:+.4f}", f"{lo:+.4f} / {hi:+.4f}", "yes" if holds else "no",
+                     f"{t['slowest_decay_h']:.3g}", f"{t['axial_mode']:.3g}"])
+    k_lo, k_hi = sorted(next(iter(nums["rows"].values()))[1]["theta_at"])
+    body = [_table(["tethers", "EA1 / EA2 [N]", "δx [m]", "trim θ [rad]",
+                    f"θ at ×{k_lo:g} / ×{k_hi:g} air [rad]", f"trim within ±{BAND:g} rad",
+                    "slowest decay [h]", "fastest mode [rad/s]"], rows)]
+    run, loads = nums["run"], nums["loads"]
+    png = plot_tensions(run, page.out / "img" / "real_tensions.png")
+    excursion = float(max(abs(v - run.theta[0]) for v in run.theta))
+    body.append(_table(
+        ["tether", "peak tension [N]", "snap tension [N]", "breaking load [N]",
+         "safety factor", "slack [% of the time]"],
+        [[str(ld.tether), f"{ld.peak:.4g}", "—" if not math.isfinite(ld.snap) else
+          f"{ld.snap:.4g}", f"{fb:.4g}", f"{ld.safety_factor:.4g}",
+          f"{100 * ld.slack_fraction:.3g}"]
+         for ld, fb in zip(loads, (run.satellite.Fb1, run.satellite.Fb2))],
+        caption=f"The stretched lines from rest at the nominal-air equilibrium into "
+                f"×{STEP_DENSITY:g} air, {run.t[-1] / sat.period:.3g} orbits on the implicit "
+                f"scheme (status {run.status}): θ moves by at most {excursion:.3g} rad"))
+    body.append(page.img(png, "Tensions of the stretched Dyneema lines after the step in "
+                              "drag, with each breaking load."))
+    body.append(f"<p class='note'>{html.escape(_note())}</p>")
+    page.add("And on real tethers?", "\n".join(body))
+    return nums
+
+
+def _note() -> str:
+    return ("The thesis's tethers are rubber bands (E·1 mm² = 0.004 and 0.0427 N for SatI, a "
+            "4-43 kPa modulus); here the same satellite flies on Dyneema SK75 lines (EA, "
+            "breaking load and the material's loss factor as a Kelvin-Voigt damper, model "
+            "objective-damper). The trim and its move with the air are the equilibria of the "
+            "full model; the decay and the fastest mode are from its linearisation. "
+            "docs/real-tethers.md.")
