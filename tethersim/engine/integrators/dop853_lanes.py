@@ -1,0 +1,149 @@
+"""DOP853 on SIMD lanes: a step, its error norm and its dense output over K lanes.
+
+The lane twins of ``steps.dop853_step``, ``steps.dop853_error_norm``,
+``steps.dop853_dense`` and ``steps.dop853_interpolate``, in the structure-of-arrays
+layout of engine/integrators/lanes.py: row i of a lane quantity sits at
+[i*LANES, i*LANES + K), stage s of the stage array ``Ks`` at rows [s*n, (s+1)*n)
+(n the state's length, a compile-time constant, so every row is at a constant offset).
+Each lane has its own step H[k].  Every lane computes each component with the
+scalar functions' operations in their order (the stage sums from 0.0 over j in
+order, the error norms summed over i in order): no fast-math, so each lane's
+numbers are those of the scalar step bit for bit
+(tests/engine/test_dop853_lanes.py), and LLVM vectorises across the lanes.
+"""
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from tethersim.engine.dynamics import model_size
+from tethersim.engine.integrators.dop853_tableau import E3, E5, N_STAGES, A, D
+from tethersim.engine.integrators.lanes import LANES, model_rhs_lanes
+from tethersim.engine.integrators.steps import N_K
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _stage_state_lanes(n, s, Y, H, Ks, YS, ACC):
+    """YS = Y + H Σ_{j<s} A[s, j] K_j on every lane (steps._stage_state's sums, per lane
+    from 0.0 over j in order; ACC holds the partial sums)."""
+    K = H.shape[0]
+    for i in range(n):
+        for k in range(K):
+            ACC[i * LANES + k] = 0.0
+        for j in range(s):
+            c = A[s, j]
+            o = (j * n + i) * LANES
+            for k in range(K):
+                ACC[i * LANES + k] += c * Ks[o + k]
+        for k in range(K):
+            r = i * LANES + k
+            YS[r] = Y[r] + H[k] * ACC[r]
+
+
+# error_model="numpy": a float division gives inf or NaN (IEEE) instead of a branch that
+# raises, which would keep LLVM from vectorising the lane loops (integrators/lanes.py)
+@njit(cache=True, error_model="numpy")
+def dop853_lanes_step(model, Y, H, P, Ks, YS, ACC, Y_new, S):
+    """One DOP853 step of every lane: lane k from Y by H[k] into Y_new.
+
+    Stage 0 of ``Ks`` must hold f(t, Y) (the FSAL stage of the lane's last accepted
+    step); stages 1..12 are written, stage 12 = f(t + H, Y_new).  The model is
+    autonomous in uniform air (the lane rhs reads no time).
+
+    Parameters
+    ----------
+    model : int literal
+        Model index (a model with a lane rhs, integrators/lanes.py ``has_lanes``).
+    Y, Y_new : ndarray
+        (n*LANES,) start states, end states.
+    H : ndarray
+        (K,) steps, K <= LANES.
+    P : ndarray
+        (parameters*LANES,) parameter vectors.
+    Ks : ndarray
+        (N_K*n*LANES,) stages.
+    YS, ACC : ndarray
+        (n*LANES,) scratch: the stage state, its sums.
+    S : ndarray
+        (model_transcendentals(model)*LANES,) scratch of the lane rhs.
+    """
+    n = model_size(model)
+    m = n * LANES
+    for s in range(1, N_STAGES + 1):
+        _stage_state_lanes(n, s, Y, H, Ks, YS, ACC)
+        model_rhs_lanes(model, H, YS, P, Ks[s * m:(s + 1) * m], S)
+    # row N_STAGES of A is B: the FSAL stage's state is the solution (steps.dop853_step)
+    _stage_state_lanes(n, N_STAGES, Y, H, Ks, Y_new, ACC)
+
+
+@njit(cache=True, error_model="numpy")
+def dop853_lanes_error(n, Ks, H, Y, Y_new, rtol, atol, E5S, E3S, err):
+    """err[k]: ``steps.dop853_error_norm`` of lane k's last step (E5S, E3S: (K,) scratch)."""
+    K = H.shape[0]
+    for k in range(K):
+        E5S[k] = 0.0
+        E3S[k] = 0.0
+    for i in range(n):
+        for k in range(K):
+            r = i * LANES + k
+            scale = atol + max(abs(Y[r]), abs(Y_new[r])) * rtol
+            s5, s3 = 0.0, 0.0
+            for j in range(N_STAGES + 1):
+                v = Ks[(j * n + i) * LANES + k]
+                s5 += E5[j] * v
+                s3 += E3[j] * v
+            E5S[k] += (s5 / scale) ** 2
+            E3S[k] += (s3 / scale) ** 2
+    for k in range(K):
+        e5, e3 = E5S[k], E3S[k]
+        if e5 == 0.0 and e3 == 0.0:
+            err[k] = 0.0
+        else:
+            err[k] = abs(H[k]) * e5 / math.sqrt((e5 + 0.01 * e3) * n)
+
+
+@njit(cache=True, error_model="numpy")
+def dop853_lanes_dense(model, Y, Y_new, H, P, Ks, YS, ACC, F, S):
+    """F ((7*n)*LANES,): every lane's interpolant coefficients (``steps.dop853_dense``),
+    row r of coefficient q at [(q*n + r)*LANES, ...); stages 13..15 of Ks are written."""
+    n = model_size(model)
+    m = n * LANES
+    K = H.shape[0]
+    for s in range(N_STAGES + 1, N_K):
+        _stage_state_lanes(n, s, Y, H, Ks, YS, ACC)
+        model_rhs_lanes(model, H, YS, P, Ks[s * m:(s + 1) * m], S)
+    for i in range(n):
+        for k in range(K):
+            r = i * LANES + k
+            h = H[k]
+            dy = Y_new[r] - Y[r]
+            k0 = Ks[r]
+            F[r] = dy
+            F[m + r] = h * k0 - dy
+            F[2 * m + r] = 2.0 * dy - h * (Ks[N_STAGES * m + r] + k0)
+        for q in range(D.shape[0]):
+            for k in range(K):
+                ACC[i * LANES + k] = 0.0
+            for j in range(N_K):
+                c = D[q, j]
+                for k in range(K):
+                    ACC[i * LANES + k] += c * Ks[j * m + i * LANES + k]
+            for k in range(K):
+                F[(3 + q) * m + i * LANES + k] = H[k] * ACC[i * LANES + k]
+
+
+@njit(cache=True)
+def dop853_lanes_interpolate(n, k, F, Y, x, out):
+    """Lane k's dense output at fraction x of its step into out (``steps.dop853_interpolate``)."""
+    m = n * LANES
+    q = F.shape[0] // m
+    for i in range(n):
+        acc = 0.0
+        for c in range(q):
+            acc += F[(q - 1 - c) * m + i * LANES + k]
+            if c % 2 == 0:
+                acc *= x
+            else:
+                acc *= 1.0 - x
+        out[i] = acc + Y[i * LANES + k]
