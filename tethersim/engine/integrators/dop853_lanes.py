@@ -24,27 +24,38 @@ from tethersim.engine.integrators.steps import N_K
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def _stage_state_lanes(n, s, Y, H, Ks, YS, ACC):
+def _stage_state_lanes(n, s, Y, H, Ks, YS):
     """YS = Y + H Σ_{j<s} A[s, j] K_j on every lane (steps._stage_state's sums, per lane
-    from 0.0 over j in order; ACC holds the partial sums)."""
-    K = H.shape[0]
+    from 0.0 over j in order).
+
+    Four lanes at a time, each in its own scalar accumulator (LLVM packs the four into
+    one vector register): a sum kept in memory would chain every term through a store
+    and a load.  K (H's length) is a multiple of 4.
+    """
     for i in range(n):
-        for k in range(K):
-            ACC[i * LANES + k] = 0.0
-        for j in range(s):
-            c = A[s, j]
-            o = (j * n + i) * LANES
-            for k in range(K):
-                ACC[i * LANES + k] += c * Ks[o + k]
-        for k in range(K):
-            r = i * LANES + k
-            YS[r] = Y[r] + H[k] * ACC[r]
+        for kb in range(0, H.shape[0], 4):
+            a0 = 0.0
+            a1 = 0.0
+            a2 = 0.0
+            a3 = 0.0
+            for j in range(s):
+                c = A[s, j]
+                o = (j * n + i) * LANES + kb
+                a0 += c * Ks[o]
+                a1 += c * Ks[o + 1]
+                a2 += c * Ks[o + 2]
+                a3 += c * Ks[o + 3]
+            r = i * LANES + kb
+            YS[r] = Y[r] + H[kb] * a0
+            YS[r + 1] = Y[r + 1] + H[kb + 1] * a1
+            YS[r + 2] = Y[r + 2] + H[kb + 2] * a2
+            YS[r + 3] = Y[r + 3] + H[kb + 3] * a3
 
 
 # error_model="numpy": a float division gives inf or NaN (IEEE) instead of a branch that
 # raises, which would keep LLVM from vectorising the lane loops (integrators/lanes.py)
 @njit(cache=True, error_model="numpy")
-def dop853_lanes_step(model, Y, H, P, Ks, YS, ACC, Y_new, S):
+def dop853_lanes_step(model, Y, H, P, Ks, YS, Y_new, S):
     """One DOP853 step of every lane: lane k from Y by H[k] into Y_new.
 
     Stage 0 of ``Ks`` must hold f(t, Y) (the FSAL stage of the lane's last accepted
@@ -58,43 +69,63 @@ def dop853_lanes_step(model, Y, H, P, Ks, YS, ACC, Y_new, S):
     Y, Y_new : ndarray
         (n*LANES,) start states, end states.
     H : ndarray
-        (K,) steps, K <= LANES.
+        (K,) steps; K <= LANES, a multiple of 4.
     P : ndarray
         (parameters*LANES,) parameter vectors.
     Ks : ndarray
         (N_K*n*LANES,) stages.
-    YS, ACC : ndarray
-        (n*LANES,) scratch: the stage state, its sums.
+    YS : ndarray
+        (n*LANES,) scratch: the stage state.
     S : ndarray
         (model_transcendentals(model)*LANES,) scratch of the lane rhs.
     """
     n = model_size(model)
     m = n * LANES
     for s in range(1, N_STAGES + 1):
-        _stage_state_lanes(n, s, Y, H, Ks, YS, ACC)
+        _stage_state_lanes(n, s, Y, H, Ks, YS)
         model_rhs_lanes(model, H, YS, P, Ks[s * m:(s + 1) * m], S)
     # row N_STAGES of A is B: the FSAL stage's state is the solution (steps.dop853_step)
-    _stage_state_lanes(n, N_STAGES, Y, H, Ks, Y_new, ACC)
+    _stage_state_lanes(n, N_STAGES, Y, H, Ks, Y_new)
 
 
 @njit(cache=True, error_model="numpy")
 def dop853_lanes_error(n, Ks, H, Y, Y_new, rtol, atol, E5S, E3S, err):
-    """err[k]: ``steps.dop853_error_norm`` of lane k's last step (E5S, E3S: (K,) scratch)."""
+    """err[k]: ``steps.dop853_error_norm`` of lane k's last step (E5S, E3S: (K,) scratch).
+
+    Per lane the scalar function's sums in its order; the lanes in fours, each lane's
+    sums in registers (_stage_state_lanes says why).
+    """
     K = H.shape[0]
     for k in range(K):
         E5S[k] = 0.0
         E3S[k] = 0.0
     for i in range(n):
-        for k in range(K):
-            r = i * LANES + k
-            scale = atol + max(abs(Y[r]), abs(Y_new[r])) * rtol
-            s5, s3 = 0.0, 0.0
+        for kb in range(0, K, 4):
+            r = i * LANES + kb
+            p0 = 0.0
+            p1 = 0.0
+            p2 = 0.0
+            p3 = 0.0
+            q0 = 0.0
+            q1 = 0.0
+            q2 = 0.0
+            q3 = 0.0
             for j in range(N_STAGES + 1):
-                v = Ks[(j * n + i) * LANES + k]
-                s5 += E5[j] * v
-                s3 += E3[j] * v
-            E5S[k] += (s5 / scale) ** 2
-            E3S[k] += (s3 / scale) ** 2
+                c5 = E5[j]
+                c3 = E3[j]
+                o = (j * n + i) * LANES + kb
+                p0 += c5 * Ks[o]
+                p1 += c5 * Ks[o + 1]
+                p2 += c5 * Ks[o + 2]
+                p3 += c5 * Ks[o + 3]
+                q0 += c3 * Ks[o]
+                q1 += c3 * Ks[o + 1]
+                q2 += c3 * Ks[o + 2]
+                q3 += c3 * Ks[o + 3]
+            _norm_terms(r, kb, p0, q0, Y, Y_new, rtol, atol, E5S, E3S)
+            _norm_terms(r + 1, kb + 1, p1, q1, Y, Y_new, rtol, atol, E5S, E3S)
+            _norm_terms(r + 2, kb + 2, p2, q2, Y, Y_new, rtol, atol, E5S, E3S)
+            _norm_terms(r + 3, kb + 3, p3, q3, Y, Y_new, rtol, atol, E5S, E3S)
     for k in range(K):
         e5, e3 = E5S[k], E3S[k]
         if e5 == 0.0 and e3 == 0.0:
@@ -103,15 +134,22 @@ def dop853_lanes_error(n, Ks, H, Y, Y_new, rtol, atol, E5S, E3S, err):
             err[k] = abs(H[k]) * e5 / math.sqrt((e5 + 0.01 * e3) * n)
 
 
+@njit(cache=True, inline="always", error_model="numpy")
+def _norm_terms(r, k, s5, s3, Y, Y_new, rtol, atol, E5S, E3S):
+    scale = atol + max(abs(Y[r]), abs(Y_new[r])) * rtol
+    E5S[k] += (s5 / scale) ** 2
+    E3S[k] += (s3 / scale) ** 2
+
+
 @njit(cache=True, error_model="numpy")
-def dop853_lanes_dense(model, Y, Y_new, H, P, Ks, YS, ACC, F, S):
+def dop853_lanes_dense(model, Y, Y_new, H, P, Ks, YS, F, S):
     """F ((7*n)*LANES,): every lane's interpolant coefficients (``steps.dop853_dense``),
     row r of coefficient q at [(q*n + r)*LANES, ...); stages 13..15 of Ks are written."""
     n = model_size(model)
     m = n * LANES
     K = H.shape[0]
     for s in range(N_STAGES + 1, N_K):
-        _stage_state_lanes(n, s, Y, H, Ks, YS, ACC)
+        _stage_state_lanes(n, s, Y, H, Ks, YS)
         model_rhs_lanes(model, H, YS, P, Ks[s * m:(s + 1) * m], S)
     for i in range(n):
         for k in range(K):
@@ -123,14 +161,23 @@ def dop853_lanes_dense(model, Y, Y_new, H, P, Ks, YS, ACC, F, S):
             F[m + r] = h * k0 - dy
             F[2 * m + r] = 2.0 * dy - h * (Ks[N_STAGES * m + r] + k0)
         for q in range(D.shape[0]):
-            for k in range(K):
-                ACC[i * LANES + k] = 0.0
-            for j in range(N_K):
-                c = D[q, j]
-                for k in range(K):
-                    ACC[i * LANES + k] += c * Ks[j * m + i * LANES + k]
-            for k in range(K):
-                F[(3 + q) * m + i * LANES + k] = H[k] * ACC[i * LANES + k]
+            for kb in range(0, K, 4):
+                a0 = 0.0
+                a1 = 0.0
+                a2 = 0.0
+                a3 = 0.0
+                for j in range(N_K):
+                    c = D[q, j]
+                    o = j * m + i * LANES + kb
+                    a0 += c * Ks[o]
+                    a1 += c * Ks[o + 1]
+                    a2 += c * Ks[o + 2]
+                    a3 += c * Ks[o + 3]
+                r = (3 + q) * m + i * LANES + kb
+                F[r] = H[kb] * a0
+                F[r + 1] = H[kb + 1] * a1
+                F[r + 2] = H[kb + 2] * a2
+                F[r + 3] = H[kb + 3] * a3
 
 
 @njit(cache=True)

@@ -164,13 +164,13 @@ def _located(model, air, k, T, P, EV, Y, Ks, TL, H, lane, out_y, g0, g1, y, f, y
 
 @njit(cache=True, nogil=True)
 def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, tol,
-                   ss_fraction, rec_f, rec_i, Y, PL, Ks, YS, ACC, Y_new, S, Fd, H, TL, HL, HN,
+                   ss_fraction, rec_f, rec_i, Y, PL, Ks, YS, Y_new, S, Fd, H, TL, HL, HN,
                    TE, err, e5, e3, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm):
     air, T, Y0, P, span, EV, cols = (borrow(air), borrow(T), borrow(Y0), borrow(P),
                                      borrow(span), borrow(EV), borrow(cols))
     rec_f, rec_i, Y, PL, Ks, YS = (borrow(rec_f), borrow(rec_i), borrow(Y), borrow(PL),
                                    borrow(Ks), borrow(YS))
-    ACC, Y_new, S, Fd, H, TL = (borrow(ACC), borrow(Y_new), borrow(S), borrow(Fd), borrow(H),
+    Y_new, S, Fd, H, TL = (borrow(Y_new), borrow(S), borrow(Fd), borrow(H),
                                 borrow(TL))
     HL, HN, TE, err, e5, e3 = (borrow(HL), borrow(HN), borrow(TE), borrow(err), borrow(e5),
                                borrow(e3))
@@ -204,7 +204,7 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
                 nxt += 1
         if active == 0:
             return
-        dop853_lanes_step(model, Y, H, PL, Ks, YS, ACC, Y_new, S)
+        dop853_lanes_step(model, Y, H, PL, Ks, YS, Y_new, S)
         dop853_lanes_error(ns, Ks, H, Y, Y_new, rtol, atol, e5, e3, err)
         dense = False
         for k in range(K):
@@ -240,7 +240,7 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
                     lane[k, DENSE] = 3
                     dense = True
         if dense:  # the interpolant's 3 extra stages, only when an output falls in a step
-            dop853_lanes_dense(model, Y, Y_new, H, PL, Ks, YS, ACC, Fd, S)
+            dop853_lanes_dense(model, Y, Y_new, H, PL, Ks, YS, Fd, S)
         for k in range(K):
             d = lane[k, DENSE]
             if d == 0:
@@ -287,16 +287,18 @@ def sweep_block_lanes853(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, 
         As :func:`tethersim.experiments.sweep.kernel.sweep_block` (T: each point's
         output grid; span: each point's end time [s]).  Y0 is not overwritten.
     K : int
-        Lanes, at most LANES (engine/integrators/lanes.py ``lane_count``).
+        Lanes: 4 or 8, at most LANES (engine/integrators/lanes.py ``lane_count``).
     """
     literally(model)
+    if K % 4 != 0 or not 0 < K <= LANES:
+        raise ValueError("K: the lanes must be 4 or 8")
     ns, npar = Y0.shape[1], P.shape[1]
     rows = T.shape[1]
     m = ns * LANES
     Y = np.zeros(m)  # an idle lane steps zeros, never uninitialised (denormal) data
     PL = np.zeros(npar * LANES)
     Ks = np.zeros(N_K * m)
-    YS, ACC, Y_new = np.zeros(m), np.zeros(m), np.zeros(m)
+    YS, Y_new = np.zeros(m), np.zeros(m)
     S = np.zeros(model_transcendentals(model) * LANES)
     Fd = np.zeros(7 * m)
     H, TL, HL, HN, TE = np.zeros(K), np.zeros(K), np.zeros(K), np.zeros(K), np.zeros(K)
@@ -314,5 +316,5 @@ def sweep_block_lanes853(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, 
     buf = np.empty(rows)
     pm = np.empty(N_PITCH)
     _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, tol,
-                   ss_fraction, rec_f, rec_i, Y, PL, Ks, YS, ACC, Y_new, S, Fd, H, TL, HL, HN,
+                   ss_fraction, rec_f, rec_i, Y, PL, Ks, YS, Y_new, S, Fd, H, TL, HL, HN,
                    TE, err, e5, e3, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm)
