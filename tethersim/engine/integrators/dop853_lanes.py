@@ -89,18 +89,22 @@ def dop853_lanes_step(model, Y, H, P, Ks, YS, Y_new, S):
 
 
 @njit(cache=True, error_model="numpy")
-def dop853_lanes_error(n, Ks, H, Y, Y_new, rtol, atol, E5S, E3S, err):
-    """err[k]: ``steps.dop853_error_norm`` of lane k's last step (E5S, E3S: (K,) scratch).
+def dop853_lanes_error(n, Ks, H, Y, Y_new, rtol, atol, err):
+    """err[k]: ``steps.dop853_error_norm`` of lane k's last step.
 
     Per lane the scalar function's sums in its order; the lanes in fours, each lane's
     sums in registers (_stage_state_lanes says why).
     """
-    K = H.shape[0]
-    for k in range(K):
-        E5S[k] = 0.0
-        E3S[k] = 0.0
-    for i in range(n):
-        for kb in range(0, K, 4):
+    for kb in range(0, H.shape[0], 4):
+        e50 = 0.0
+        e51 = 0.0
+        e52 = 0.0
+        e53 = 0.0
+        e30 = 0.0
+        e31 = 0.0
+        e32 = 0.0
+        e33 = 0.0
+        for i in range(n):
             r = i * LANES + kb
             p0 = 0.0
             p1 = 0.0
@@ -122,23 +126,30 @@ def dop853_lanes_error(n, Ks, H, Y, Y_new, rtol, atol, E5S, E3S, err):
                 q1 += c3 * Ks[o + 1]
                 q2 += c3 * Ks[o + 2]
                 q3 += c3 * Ks[o + 3]
-            _norm_terms(r, kb, p0, q0, Y, Y_new, rtol, atol, E5S, E3S)
-            _norm_terms(r + 1, kb + 1, p1, q1, Y, Y_new, rtol, atol, E5S, E3S)
-            _norm_terms(r + 2, kb + 2, p2, q2, Y, Y_new, rtol, atol, E5S, E3S)
-            _norm_terms(r + 3, kb + 3, p3, q3, Y, Y_new, rtol, atol, E5S, E3S)
-    for k in range(K):
-        e5, e3 = E5S[k], E3S[k]
-        if e5 == 0.0 and e3 == 0.0:
-            err[k] = 0.0
-        else:
-            err[k] = abs(H[k]) * e5 / math.sqrt((e5 + 0.01 * e3) * n)
+            sc0 = atol + max(abs(Y[r]), abs(Y_new[r])) * rtol
+            sc1 = atol + max(abs(Y[r + 1]), abs(Y_new[r + 1])) * rtol
+            sc2 = atol + max(abs(Y[r + 2]), abs(Y_new[r + 2])) * rtol
+            sc3 = atol + max(abs(Y[r + 3]), abs(Y_new[r + 3])) * rtol
+            e50 += (p0 / sc0) ** 2
+            e51 += (p1 / sc1) ** 2
+            e52 += (p2 / sc2) ** 2
+            e53 += (p3 / sc3) ** 2
+            e30 += (q0 / sc0) ** 2
+            e31 += (q1 / sc1) ** 2
+            e32 += (q2 / sc2) ** 2
+            e33 += (q3 / sc3) ** 2
+        _norm(n, H[kb], e50, e30, err, kb)
+        _norm(n, H[kb + 1], e51, e31, err, kb + 1)
+        _norm(n, H[kb + 2], e52, e32, err, kb + 2)
+        _norm(n, H[kb + 3], e53, e33, err, kb + 3)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def _norm_terms(r, k, s5, s3, Y, Y_new, rtol, atol, E5S, E3S):
-    scale = atol + max(abs(Y[r]), abs(Y_new[r])) * rtol
-    E5S[k] += (s5 / scale) ** 2
-    E3S[k] += (s3 / scale) ** 2
+def _norm(n, h, e5, e3, err, k):
+    if e5 == 0.0 and e3 == 0.0:
+        err[k] = 0.0
+    else:
+        err[k] = abs(h) * e5 / math.sqrt((e5 + 0.01 * e3) * n)
 
 
 @njit(cache=True, error_model="numpy")

@@ -165,15 +165,14 @@ def _located(model, air, k, T, P, EV, Y, Ks, TL, H, lane, out_y, g0, g1, y, f, y
 @njit(cache=True, nogil=True)
 def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, tol,
                    ss_fraction, rec_f, rec_i, Y, PL, Ks, YS, Y_new, S, Fd, H, TL, HL, HN,
-                   TE, err, e5, e3, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm):
+                   TE, err, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm):
     air, T, Y0, P, span, EV, cols = (borrow(air), borrow(T), borrow(Y0), borrow(P),
                                      borrow(span), borrow(EV), borrow(cols))
     rec_f, rec_i, Y, PL, Ks, YS = (borrow(rec_f), borrow(rec_i), borrow(Y), borrow(PL),
                                    borrow(Ks), borrow(YS))
     Y_new, S, Fd, H, TL = (borrow(Y_new), borrow(S), borrow(Fd), borrow(H),
                                 borrow(TL))
-    HL, HN, TE, err, e5, e3 = (borrow(HL), borrow(HN), borrow(TE), borrow(err), borrow(e5),
-                               borrow(e3))
+    HL, HN, TE, err = borrow(HL), borrow(HN), borrow(TE), borrow(err)
     lane, g0, g1, out_y, y, f = (borrow(lane), borrow(g0), borrow(g1), borrow(out_y),
                                  borrow(y), borrow(f))
     yn, pw, work, Fs, g, buf, pm = (borrow(yn), borrow(pw), borrow(work), borrow(Fs),
@@ -205,7 +204,7 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
         if active == 0:
             return
         dop853_lanes_step(model, Y, H, PL, Ks, YS, Y_new, S)
-        dop853_lanes_error(ns, Ks, H, Y, Y_new, rtol, atol, e5, e3, err)
+        dop853_lanes_error(ns, Ks, H, Y, Y_new, rtol, atol, err)
         dense = False
         for k in range(K):
             lane[k, DENSE] = 0
@@ -302,7 +301,7 @@ def sweep_block_lanes853(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, 
     S = np.zeros(model_transcendentals(model) * LANES)
     Fd = np.zeros(7 * m)
     H, TL, HL, HN, TE = np.zeros(K), np.zeros(K), np.zeros(K), np.zeros(K), np.zeros(K)
-    err, e5, e3 = np.zeros(K), np.zeros(K), np.zeros(K)
+    err = np.zeros(K)
     lane = np.zeros((K, 9), dtype=np.int64)
     for k in range(K):
         lane[k, ST] = EMPTY
@@ -317,4 +316,4 @@ def sweep_block_lanes853(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, 
     pm = np.empty(N_PITCH)
     _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, tol,
                    ss_fraction, rec_f, rec_i, Y, PL, Ks, YS, Y_new, S, Fd, H, TL, HL, HN,
-                   TE, err, e5, e3, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm)
+                   TE, err, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm)
