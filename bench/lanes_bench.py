@@ -5,8 +5,10 @@ the 64-point grid of bench/peers.py and the 144-point grid of bench/sweep_bench.
 trajectories per second with the lanes (batch.USE_LANES) and without, the records
 checked equal.  One thread: ``batch.run_satellites`` in this thread, timed in thread
 CPU time; two threads: ``run_plan(workers=2)``, process CPU time and wall time.
-Best of interleaved repeats.  ``python bench/lanes_bench.py [repeats]`` runs it alone
-and prints the CPU and the load averages beside every figure.
+Best of interleaved repeats.  The adaptive (DOP853) case: the 64-point grid on lanes
+(sweep/lanes853.py) vs point by point, one thread.  ``python bench/lanes_bench.py
+[repeats]`` runs it alone and prints the CPU and the load averages beside every figure
+(``python bench/lanes_bench.py 3 adaptive``: the adaptive case alone).
 """
 from __future__ import annotations
 
