@@ -5,8 +5,10 @@ the 64-point grid of bench/peers.py and the 144-point grid of bench/sweep_bench.
 trajectories per second with the lanes (batch.USE_LANES) and without, the records
 checked equal.  One thread: ``batch.run_satellites`` in this thread, timed in thread
 CPU time; two threads: ``run_plan(workers=2)``, process CPU time and wall time.
-Best of interleaved repeats.  ``python bench/lanes_bench.py [repeats]`` runs it alone
-and prints the CPU and the load averages beside every figure.
+Best of interleaved repeats.  The adaptive (DOP853) case: the 64-point grid on lanes
+(sweep/lanes853.py) vs point by point, one thread.  ``python bench/lanes_bench.py
+[repeats]`` runs it alone and prints the CPU and the load averages beside every figure
+(``python bench/lanes_bench.py 3 adaptive``: the adaptive case alone).
 """
 from __future__ import annotations
 
@@ -94,6 +96,39 @@ def bench_lanes(rep, q, log) -> None:
                 f"block (process CPU)", cpu["lanes"] / cpu["scalar"], "x", note=_load())
 
 
+def bench_lanes_adaptive(rep, q, log) -> None:
+    """The adaptive (DOP853) 64-point sweep: lanes (sweep/lanes853.py) vs the point-by-point
+    block, 1 thread, thread CPU time, the records checked equal."""
+    from tethersim.engine.integrators.lanes import lane_count
+    from tethersim.experiments.sweep import Plan, batch
+
+    plan = Plan(periods=float(PERIODS))
+    sats = _sats(64)
+    recs = {}
+
+    def one(lanes):
+        def t():
+            batch.USE_LANES = lanes
+            try:
+                t0 = cpu_clock()
+                recs[lanes] = batch.run_satellites(plan, sats)
+                return cpu_clock() - t0
+            finally:
+                batch.USE_LANES = True
+        return t
+
+    s1 = interleave({"lanes": one(True), "scalar": one(False)}, q.get("sweep_repeats", 3))
+    same = [repr(sorted(r.items())) for r in recs[True]] == \
+           [repr(sorted(r.items())) for r in recs[False]]
+    rep.check("lanes: the adaptive 64-point records equal the scalar block's", same)
+    best = {k: len(sats) / min(v) for k, v in s1.items()}
+    log(f"  adaptive lanes 64 points x {PERIODS} orbits, 1 thread (K = {lane_count()}): "
+        f"{best['lanes']:.0f} vs scalar {best['scalar']:.0f} trajectories/s (thread CPU), "
+        f"{best['lanes'] / best['scalar']:.2f}x; {_load()}")
+    rep.fig("lanes.adaptive.64.one", "adaptive sweep 64 points, 1 thread: lanes / scalar "
+            "block", best["lanes"] / best["scalar"], "x", note=_load())
+
+
 def bench_lanes_heyoka(rep, q, log) -> None:
     """The 64-point faithful sweep on lanes vs heyoka's SIMD batches at the faithful run's
     final-state error (first point, against tethersim DOP853 at rtol 1e-13), one thread.
@@ -179,7 +214,11 @@ if __name__ == "__main__":
                platform.processor())
     print(f"CPU: {cpu}; {os.cpu_count()} cores; {_load()}")
     reps = int(sys.argv[1]) if len(sys.argv) > 1 else 3
+    if "adaptive" in sys.argv[2:]:  # the adaptive case alone
+        bench_lanes_adaptive(_Print(), {"sweep_repeats": reps}, print)
+        sys.exit(0)
     bench_lanes(_Print(), {"sweep_repeats": reps}, print)
+    bench_lanes_adaptive(_Print(), {"sweep_repeats": reps}, print)
     try:
         import heyoka  # noqa: F401
     except ImportError:

@@ -764,6 +764,7 @@ def main(argv=None) -> int:
         elif args.only == "lanes":
             import lanes_bench
             lanes_bench.bench_lanes(rep, q, log)
+            lanes_bench.bench_lanes_adaptive(rep, q, log)
         else:
             sweep_bench.bench_report(rep, q, REPO)
         print_table(rep, clock() - t_start, "(not written with --only)")
@@ -800,6 +801,7 @@ def main(argv=None) -> int:
     stiff.bench_stiff(rep, q, log)
     import lanes_bench
     lanes_bench.bench_lanes(rep, q, log)
+    lanes_bench.bench_lanes_adaptive(rep, q, log)
     if not args.skip_slow:
         bench_derive(rep, q)
         bench_cli(rep, q)

@@ -40,6 +40,7 @@ from tethersim.experiments.sweep.kernel import (
     sweep_block_implicit,
 )
 from tethersim.experiments.sweep.lanes import sweep_block_lanes
+from tethersim.experiments.sweep.lanes853 import sweep_block_lanes853
 from tethersim.experiments.sweep.plan import ATOL_PER_RTOL, SCHEMES, Plan
 from tethersim.experiments.sweep.point import record
 from tethersim.experiments.sweep.spec import SweepSpec
@@ -47,9 +48,10 @@ from tethersim.model.air.vector import UNIFORM
 from tethersim.model.inputs import air_vector, initial_model_state, parameter_vector
 from tethersim.model.registry import get_model, model_for_orbit, model_index
 
-# faithful blocks of one lane model in uniform air run K points per step on SIMD lanes
-# (sweep/lanes.py), the same records bit for bit; False runs every block point by point
-# (the benchmark's and the tests' comparison: bench/lanes_bench.py)
+# faithful and adaptive blocks of one lane model in uniform air run K points per step on
+# SIMD lanes (sweep/lanes.py, RK4; sweep/lanes853.py, DOP853), the same records; False runs
+# every block point by point (the benchmark's and the tests' comparison:
+# bench/lanes_bench.py)
 USE_LANES = True
 
 _F = {name: i for i, name in enumerate(F_FIELDS)}
@@ -166,6 +168,11 @@ def _compiled(sats: list, plan: Plan, model: str, air: np.ndarray) -> list:
         # K points per step on SIMD lanes, the same records bit for bit (sweep/lanes.py)
         args = (air, Y0, P, span, n_steps, *measure, lane_count())
         specialised(sweep_block_lanes, m, args)(m, *args)  # releases the GIL
+    elif USE_LANES and plan.method == "adaptive" and n >= 2 and air[0] == UNIFORM \
+            and has_lanes(m):
+        # DOP853 with K points per step on SIMD lanes, the same records (sweep/lanes853.py)
+        args = (air, T, Y0, P, span, *tolerances, *measure, lane_count())
+        specialised(sweep_block_lanes853, m, args)(m, *args)  # releases the GIL
     else:
         args = (air, faithful, T, Y0, P, span, n_steps, *tolerances, *measure)
         specialised(sweep_block, m, args)(m, *args)  # releases the GIL

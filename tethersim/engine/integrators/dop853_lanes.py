@@ -1,0 +1,207 @@
+"""DOP853 on SIMD lanes: a step, its error norm and its dense output over K lanes.
+
+The lane twins of ``steps.dop853_step``, ``steps.dop853_error_norm``,
+``steps.dop853_dense`` and ``steps.dop853_interpolate``, in the structure-of-arrays
+layout of engine/integrators/lanes.py: row i of a lane quantity sits at
+[i*LANES, i*LANES + K), stage s of the stage array ``Ks`` at rows [s*n, (s+1)*n)
+(n the state's length, a compile-time constant, so every row is at a constant offset).
+Each lane has its own step H[k].  Every lane computes each component with the
+scalar functions' operations in their order (the stage sums from 0.0 over j in
+order, the error norms summed over i in order): no fast-math, so each lane's
+numbers are those of the scalar step bit for bit
+(tests/engine/test_dop853_lanes.py), and LLVM vectorises across the lanes.
+"""
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from tethersim.engine.dynamics import model_size
+from tethersim.engine.integrators.dop853_tableau import E3, E5, N_STAGES, A, D
+from tethersim.engine.integrators.lanes import LANES, model_rhs_lanes
+from tethersim.engine.integrators.steps import N_K
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _stage_state_lanes(n, s, Y, H, Ks, YS):
+    """YS = Y + H Σ_{j<s} A[s, j] K_j on every lane (steps._stage_state's sums, per lane
+    from 0.0 over j in order).
+
+    Four lanes at a time, each in its own scalar accumulator (LLVM packs the four into
+    one vector register): a sum kept in memory would chain every term through a store
+    and a load.  K (H's length) is a multiple of 4.
+    """
+    for i in range(n):
+        for kb in range(0, H.shape[0], 4):
+            a0 = 0.0
+            a1 = 0.0
+            a2 = 0.0
+            a3 = 0.0
+            for j in range(s):
+                c = A[s, j]
+                o = (j * n + i) * LANES + kb
+                a0 += c * Ks[o]
+                a1 += c * Ks[o + 1]
+                a2 += c * Ks[o + 2]
+                a3 += c * Ks[o + 3]
+            r = i * LANES + kb
+            YS[r] = Y[r] + H[kb] * a0
+            YS[r + 1] = Y[r + 1] + H[kb + 1] * a1
+            YS[r + 2] = Y[r + 2] + H[kb + 2] * a2
+            YS[r + 3] = Y[r + 3] + H[kb + 3] * a3
+
+
+# error_model="numpy": a float division gives inf or NaN (IEEE) instead of a branch that
+# raises, which would keep LLVM from vectorising the lane loops (integrators/lanes.py)
+@njit(cache=True, error_model="numpy")
+def dop853_lanes_step(model, Y, H, P, Ks, YS, Y_new, S):
+    """One DOP853 step of every lane: lane k from Y by H[k] into Y_new.
+
+    Stage 0 of ``Ks`` must hold f(t, Y) (the FSAL stage of the lane's last accepted
+    step); stages 1..12 are written, stage 12 = f(t + H, Y_new).  The model is
+    autonomous in uniform air (the lane rhs reads no time).
+
+    Parameters
+    ----------
+    model : int literal
+        Model index (a model with a lane rhs, integrators/lanes.py ``has_lanes``).
+    Y, Y_new : ndarray
+        (n*LANES,) start states, end states.
+    H : ndarray
+        (K,) steps; K <= LANES, a multiple of 4.
+    P : ndarray
+        (parameters*LANES,) parameter vectors.
+    Ks : ndarray
+        (N_K*n*LANES,) stages.
+    YS : ndarray
+        (n*LANES,) scratch: the stage state.
+    S : ndarray
+        (model_transcendentals(model)*LANES,) scratch of the lane rhs.
+    """
+    n = model_size(model)
+    m = n * LANES
+    for s in range(1, N_STAGES + 1):
+        _stage_state_lanes(n, s, Y, H, Ks, YS)
+        model_rhs_lanes(model, H, YS, P, Ks[s * m:(s + 1) * m], S)
+    # row N_STAGES of A is B: the FSAL stage's state is the solution (steps.dop853_step)
+    _stage_state_lanes(n, N_STAGES, Y, H, Ks, Y_new)
+
+
+@njit(cache=True, error_model="numpy")
+def dop853_lanes_error(n, Ks, H, Y, Y_new, rtol, atol, err):
+    """err[k]: ``steps.dop853_error_norm`` of lane k's last step.
+
+    Per lane the scalar function's sums in its order; the lanes in fours, each lane's
+    sums in registers (_stage_state_lanes says why).
+    """
+    for kb in range(0, H.shape[0], 4):
+        e50 = 0.0
+        e51 = 0.0
+        e52 = 0.0
+        e53 = 0.0
+        e30 = 0.0
+        e31 = 0.0
+        e32 = 0.0
+        e33 = 0.0
+        for i in range(n):
+            r = i * LANES + kb
+            p0 = 0.0
+            p1 = 0.0
+            p2 = 0.0
+            p3 = 0.0
+            q0 = 0.0
+            q1 = 0.0
+            q2 = 0.0
+            q3 = 0.0
+            for j in range(N_STAGES + 1):
+                c5 = E5[j]
+                c3 = E3[j]
+                o = (j * n + i) * LANES + kb
+                p0 += c5 * Ks[o]
+                p1 += c5 * Ks[o + 1]
+                p2 += c5 * Ks[o + 2]
+                p3 += c5 * Ks[o + 3]
+                q0 += c3 * Ks[o]
+                q1 += c3 * Ks[o + 1]
+                q2 += c3 * Ks[o + 2]
+                q3 += c3 * Ks[o + 3]
+            sc0 = atol + max(abs(Y[r]), abs(Y_new[r])) * rtol
+            sc1 = atol + max(abs(Y[r + 1]), abs(Y_new[r + 1])) * rtol
+            sc2 = atol + max(abs(Y[r + 2]), abs(Y_new[r + 2])) * rtol
+            sc3 = atol + max(abs(Y[r + 3]), abs(Y_new[r + 3])) * rtol
+            e50 += (p0 / sc0) ** 2
+            e51 += (p1 / sc1) ** 2
+            e52 += (p2 / sc2) ** 2
+            e53 += (p3 / sc3) ** 2
+            e30 += (q0 / sc0) ** 2
+            e31 += (q1 / sc1) ** 2
+            e32 += (q2 / sc2) ** 2
+            e33 += (q3 / sc3) ** 2
+        _norm(n, H[kb], e50, e30, err, kb)
+        _norm(n, H[kb + 1], e51, e31, err, kb + 1)
+        _norm(n, H[kb + 2], e52, e32, err, kb + 2)
+        _norm(n, H[kb + 3], e53, e33, err, kb + 3)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _norm(n, h, e5, e3, err, k):
+    if e5 == 0.0 and e3 == 0.0:
+        err[k] = 0.0
+    else:
+        err[k] = abs(h) * e5 / math.sqrt((e5 + 0.01 * e3) * n)
+
+
+@njit(cache=True, error_model="numpy")
+def dop853_lanes_dense(model, Y, Y_new, H, P, Ks, YS, F, S):
+    """F ((7*n)*LANES,): every lane's interpolant coefficients (``steps.dop853_dense``),
+    row r of coefficient q at [(q*n + r)*LANES, ...); stages 13..15 of Ks are written."""
+    n = model_size(model)
+    m = n * LANES
+    K = H.shape[0]
+    for s in range(N_STAGES + 1, N_K):
+        _stage_state_lanes(n, s, Y, H, Ks, YS)
+        model_rhs_lanes(model, H, YS, P, Ks[s * m:(s + 1) * m], S)
+    for i in range(n):
+        for k in range(K):
+            r = i * LANES + k
+            h = H[k]
+            dy = Y_new[r] - Y[r]
+            k0 = Ks[r]
+            F[r] = dy
+            F[m + r] = h * k0 - dy
+            F[2 * m + r] = 2.0 * dy - h * (Ks[N_STAGES * m + r] + k0)
+        for q in range(D.shape[0]):
+            for kb in range(0, K, 4):
+                a0 = 0.0
+                a1 = 0.0
+                a2 = 0.0
+                a3 = 0.0
+                for j in range(N_K):
+                    c = D[q, j]
+                    o = j * m + i * LANES + kb
+                    a0 += c * Ks[o]
+                    a1 += c * Ks[o + 1]
+                    a2 += c * Ks[o + 2]
+                    a3 += c * Ks[o + 3]
+                r = (3 + q) * m + i * LANES + kb
+                F[r] = H[kb] * a0
+                F[r + 1] = H[kb + 1] * a1
+                F[r + 2] = H[kb + 2] * a2
+                F[r + 3] = H[kb + 3] * a3
+
+
+@njit(cache=True)
+def dop853_lanes_interpolate(n, k, F, Y, x, out):
+    """Lane k's dense output at fraction x of its step into out (``steps.dop853_interpolate``)."""
+    m = n * LANES
+    q = F.shape[0] // m
+    for i in range(n):
+        acc = 0.0
+        for c in range(q):
+            acc += F[(q - 1 - c) * m + i * LANES + k]
+            if c % 2 == 0:
+                acc *= x
+            else:
+                acc *= 1.0 - x
+        out[i] = acc + Y[i * LANES + k]
