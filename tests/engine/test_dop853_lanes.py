@@ -10,6 +10,7 @@ operation.
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from numba import njit
 
 from tethersim.engine.integrators.dop853_lanes import (
@@ -33,6 +34,11 @@ from tethersim.model.registry import KERNELS, model_index
 from .test_lanes import _bits, _flat, _points, _unflat
 
 MODEL = "derived"
+
+# the lane steps compiled on their own (~15 s cold) for a check the fast tier makes anyway
+# through the whole block (tests/experiments/test_sweep_lanes853.py: records equal the scalar
+# block's bit for bit): the slow tier (CI runs it)
+pytestmark = pytest.mark.slow
 
 
 @njit
