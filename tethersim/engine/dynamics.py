@@ -29,7 +29,7 @@ from numba.extending import overload
 from tethersim.engine.integrators.select import call
 from tethersim.model.air.vector import UNIFORM, body_density
 from tethersim.model.constants import R_EARTH
-from tethersim.model.registry import KERNELS, MODELS, bead_index, kernels_of, record
+from tethersim.model.registry import MODELS, bead_index, kernels_of, record
 
 
 def held_circle(model: int) -> bool:

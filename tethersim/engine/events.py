@@ -42,7 +42,7 @@ from numba.extending import overload
 from tethersim.engine.dynamics import literal_index, model_tether_margins
 from tethersim.engine.integrators.select import call
 from tethersim.model.constants import R_EARTH
-from tethersim.model.registry import MODELS, record
+from tethersim.model.registry import record
 
 Event = namedtuple("Event", "name terminal status")
 #: the single table of events: slot order of model_events' vector (module docstring)

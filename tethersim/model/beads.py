@@ -62,7 +62,6 @@ import math
 from collections import namedtuple
 from types import SimpleNamespace
 
-import numpy as np
 from numba import literally, njit, types
 from numba.extending import overload
 
