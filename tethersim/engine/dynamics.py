@@ -29,7 +29,13 @@ from numba.extending import overload
 from tethersim.engine.integrators.select import call
 from tethersim.model.air.vector import UNIFORM, body_density
 from tethersim.model.constants import R_EARTH
-from tethersim.model.registry import MODELS, bead_index, kernels_of, record
+from tethersim.model.registry import (  # noqa: F401  (KERNELS: re-exported, tests/engine)
+    KERNELS,
+    MODELS,
+    bead_index,
+    kernels_of,
+    record,
+)
 
 
 def held_circle(model: int) -> bool:
