@@ -4,9 +4,9 @@ from __future__ import annotations
 from tqdm.auto import tqdm
 
 
-def progress_bar(total, desc, progress):
+def progress_bar(total, desc, progress, factory=tqdm):
     """A tqdm bar over ``total`` orbits (None: shown after a second; False: never)."""
-    return tqdm(total=total, desc=desc, unit="orbit", delay=0.0 if progress else 1.0,
+    return factory(total=total, desc=desc, unit="orbit", delay=0.0 if progress else 1.0,
                 disable=(progress is False), leave=False,
                 bar_format="{l_bar}{bar}| {n:.1f}/{total:.1f} orbits [{elapsed}<{remaining}]")
 
