@@ -25,6 +25,7 @@ import tethersim as ts
 from derive.pipeline import truncate_inverse_r0
 from derive.symbols import P
 from tethersim.model import beads
+from tethersim.model.bead_layout import SCRATCH
 from tethersim.model.inputs import parameter_vector
 
 t = dynamicsymbols._t
@@ -148,7 +149,8 @@ def chain_equations(n: int, base: str):
 def reference_accelerations(n, base, y, p):
     M, f, terms, lengths = chain_equations(n, base)
     with mpmath.workdps(30):
-        args = [mpmath.mpf(float(v)) for v in list(y) + list(p)]
+        # the parameters without the kernel's scratch tail (bead_layout.SCRATCH)
+        args = [mpmath.mpf(float(v)) for v in list(y) + list(p[:len(p) - SCRATCH])]
         Mv, fv = M(*args), f(*args)
         taut = {k: lam(*args) > args[len(y) + (8 if k[0] == 0 else 9)] / (n + 1)
                 for k, lam in lengths.items()}

@@ -164,8 +164,8 @@ def test_jacobi_integral_of_a_bead_chain_is_conserved_without_drag_and_dampers()
     (dict(mt1=-1.0), "mt1 = -1.0: allowed 0 to 10000 kg"),
     (dict(mt2=0.0), "mt2 = 0.0: a chain of 2 beads needs a tether mass > 0"),
     (dict(CDt=9.0), "CDt = 9.0: allowed 0 to 4"),
-    (dict(n=65), "beads per tether N = 65: allowed an integer 0 to 64"),
-    (dict(n=1.5), "beads per tether N = 1.5: allowed an integer 0 to 64"),
+    (dict(n=65), "beads = 65: allowed an integer 0 to 64 (beads per tether)"),
+    (dict(n=1.5), "beads = 1.5: allowed an integer 0 to 64 (beads per tether)"),
 ])
 def test_bad_chain_input_is_one_line_naming_the_field_and_range(kw, words):
     args = dict(mt1=0.1, mt2=0.1, n=2) | kw

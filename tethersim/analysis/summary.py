@@ -41,8 +41,6 @@ def run_summary(res: SimResult, out: Outcome | None = None) -> dict:
     tension = res.tether_tensions()[:n].max(axis=0)
     lay = res.layout
     ix, iy, ith = (lay.state.index(s) for s in ("delta_x", "delta_y", "theta"))
-    peak = np.abs(res.forces[:n]).max(axis=0)[:, [ix, iy, ith]]  # (family, δx δy θ)
-    biggest = peak.argmax(axis=0)
     nan = float("nan")
     return {
         "label": res.label,
@@ -57,12 +55,7 @@ def run_summary(res: SimResult, out: Outcome | None = None) -> dict:
         "largest tension tether 2 [N]": float(tension[1]),
         # peak, snap, safety factor and slack on the metrics grid (analysis/tethers.py)
         **loads_summary(res),
-        "largest force on dx [N]": float(peak[biggest[0], 0]),
-        "largest force on dx: family": lay.families[biggest[0]],
-        "largest force on dy [N]": float(peak[biggest[1], 1]),
-        "largest force on dy: family": lay.families[biggest[1]],
-        "largest torque on theta [N m]": float(peak[biggest[2], 2]),
-        "largest torque on theta: family": lay.families[biggest[2]],
+        **_largest_forces(res, n, (ix, iy, ith)),
         "tumbled": bool(m.tumbled) if m else None,
         "upside down": bool(m.upside_down) if m else None,
         "final delta_x [m]": float(res.x[n - 1]),
@@ -138,3 +131,19 @@ def implausible_summary(sat, method: str) -> dict:
     from tethersim.model.plausibility import allowed_problems
     found = allowed_problems(sat, method)
     return {"implausible inputs (allowed)": "; ".join(found)} if found else {}
+
+
+def _largest_forces(res, n: int, cols) -> dict:
+    """The largest force family on δx, δy and θ; none for a bead chain (its forces are
+    not split into the generated families: tethersim.model.beads)."""
+    lay = res.layout
+    if not lay.families:
+        return {}
+    peak = np.abs(res.forces[:n]).max(axis=0)[:, list(cols)]  # (family, δx δy θ)
+    biggest = peak.argmax(axis=0)
+    out = {}
+    for k, (what, unit, name) in enumerate((("force", "N", "dx"), ("force", "N", "dy"),
+                                            ("torque", "N m", "theta"))):
+        out[f"largest {what} on {name} [{unit}]"] = float(peak[biggest[k], k])
+        out[f"largest {what} on {name}: family"] = lay.families[biggest[k]]
+    return out

@@ -51,6 +51,26 @@ class TetherLoads:
     slack_fraction: float
 
 
+def segment_tensions(res: SimResult) -> np.ndarray:
+    """Spring tension of every segment of a bead-chain run (n, 2, N + 1) [N], boom end
+    first, zero while slack (tethersim.model.beads.tensions); (n, 2, 0) for any other run.
+
+    A chain's ``tether_tensions`` (and so every load here) is its most stretched
+    segment's: the line breaks, snaps and goes slack where that segment does.
+    """
+    from tethersim.model.beads import tensions
+    from tethersim.model.registry import bead_split
+
+    chain = bead_split(res.model)
+    if chain is None:
+        return np.zeros((res.t.size, 2, 0))
+    out = np.zeros((res.t.size, 2, chain[1] + 1))
+    p = res.parameters.copy()  # the kernels write their scratch into its tail
+    for i, y in enumerate(res.states):
+        tensions(np.ascontiguousarray(y), p, out[i])
+    return out
+
+
 def metrics_grid(res: SimResult) -> SimResult:
     """``res`` on its metrics grid (``fine_t``) when it has one, else itself."""
     if res.fine_t is None:

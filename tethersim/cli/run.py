@@ -37,6 +37,9 @@ def add_parser(sub) -> None:
     options.add_model(p, "; see docs/errata.md")
     options.add_atol(p)
     options.add_start(p)
+    p.add_argument("--beads", type=int, default=None, metavar="N",
+                   help="each tether a chain of N point-mass beads, 0-64 (line masses: --set "
+                        "mt1=... mt2=... [kg]); adds tether_shape.png; docs/beads.md")
     options.add_out(p, "results/<satellite>, e.g. results/satI")
     p.add_argument("--no-plots", action="store_true", help="skip the PNG plots")
     p.add_argument("--no-check", action="store_true",
@@ -65,9 +68,13 @@ def run(args) -> int:
     from tethersim.engine.simulate import simulate
     from tethersim.output.plots.run import FILE_NAMES as PLOT_NAMES
     from tethersim.output.plots.run import TENSIONS_FILE, plot_result
+    from tethersim.output.plots.shape import SHAPE_FILE, plot_shape
     from tethersim.output.tables import write_netcdf, write_timeseries
 
     sat = options.satellite(args)
+    if args.beads is not None:  # before the folder's record: a chain's results are its own
+        from tethersim.model.bead_layout import check_beads
+        sat = sat.replace(beads=check_beads(args.beads))
     from tethersim.cli.overrides import refuse_unused
     refuse_unused(args, sat, (args.model,))  # its run would equal one without it
     cap = _resolve_periods(args, sat)
@@ -75,7 +82,8 @@ def run(args) -> int:
     out = Path(args.out) if args.out else options.default_out(args)
     preflight.check_run_size(args, how, "--periods/--steps", check=not args.no_check)
     plots = () if args.no_plots else (
-        "overview.png", "altitude.png", TENSIONS_FILE, *(f"{n}.png" for n in PLOT_NAMES.values()))
+        "overview.png", "altitude.png", TENSIONS_FILE, SHAPE_FILE,
+        *(f"{n}.png" for n in PLOT_NAMES.values()))
     preflight.check_files(out, ("timeseries.csv", "timeseries.nc", "summary.json", *plots))
     record = options.claim_folder(out, args, sat)
     res = simulate(sat, periods=args.periods, steps=how.steps, method=how.method,
@@ -88,6 +96,8 @@ def run(args) -> int:
     written = [out / "timeseries.csv", out / "timeseries.nc"]
     if not args.no_plots:
         written += plot_result(res, out)
+        if sat.beads is not None:
+            written.append(plot_shape(res, out))
     summary = run_summary(res)
     strict = {k: (None if isinstance(v, float) and not math.isfinite(v) else v)
               for k, v in summary.items()}  # NaN is not JSON: null means "never settled"

@@ -29,7 +29,13 @@ from numba.extending import overload
 from tethersim.engine.integrators.select import call
 from tethersim.model.air.vector import UNIFORM, body_density
 from tethersim.model.constants import R_EARTH
-from tethersim.model.registry import KERNELS, MODELS
+from tethersim.model.registry import (  # noqa: F401  (KERNELS: re-exported, tests/engine)
+    KERNELS,
+    MODELS,
+    bead_index,
+    kernels_of,
+    record,
+)
 
 
 def held_circle(model: int) -> bool:
@@ -38,7 +44,7 @@ def held_circle(model: int) -> bool:
     Such a model (every circular-orbit model) has no orbit state: its orbit is the
     closed form :func:`held_circle_orbit`; a free-orbit model integrates r and ν.
     """
-    return MODELS[model].orbit == "circular"
+    return record(model).orbit == "circular"
 
 
 def held_circle_orbit(r0: float, omega: float, t) -> np.ndarray:
@@ -77,12 +83,13 @@ def model_rhs(model, t, y, p, dydt):
     raise NotImplementedError("model_rhs is only callable from compiled code")
 
 
-def model_size(model):
+def model_size(model, y):
     """Length of model ``model``'s state (``Model.n_state``), a compile-time constant.
 
     The step functions loop over the state with this bound rather than the array's
     run-time length, so LLVM sees a constant trip count (the C ports' ``#define NS``)
-    and unrolls the stage sums; each component's arithmetic is unchanged.
+    and unrolls the stage sums; each component's arithmetic is unchanged.  A bead
+    chain's state size is its number of beads' (tethersim.model.beads): ``len(y)``.
     """
     raise NotImplementedError("model_size is only callable from compiled code")
 
@@ -101,7 +108,7 @@ def model_densities(model, t, y, p, pw, air):
 def _model_rhs(model, t, y, p, dydt):
     if (k := literal_index(model)) is None:
         return None
-    rhs = KERNELS[k].rhs
+    rhs = kernels_of(k).rhs
 
     def impl(model, t, y, p, dydt):
         rhs(t, y, p, dydt)
@@ -109,12 +116,16 @@ def _model_rhs(model, t, y, p, dydt):
 
 
 @overload(model_size, inline="always", prefer_literal=True)
-def _model_size(model):
+def _model_size(model, y):
     if (k := literal_index(model)) is None:
         return None
+    if bead_index(k):
+        def impl(model, y):
+            return y.shape[0]
+        return impl
     n = MODELS[k].n_state
 
-    def impl(model):
+    def impl(model, y):
         return n
     return impl
 
@@ -123,7 +134,7 @@ def _model_size(model):
 def _model_tether_margins(model, y, p, g):
     if (k := literal_index(model)) is None:
         return None
-    margins = KERNELS[k].tether_margins
+    margins = kernels_of(k).tether_margins
 
     def impl(model, y, p, g):
         margins(y, p, g)
@@ -134,17 +145,17 @@ def _model_tether_margins(model, y, p, g):
 def _model_densities(model, t, y, p, pw, air):
     if (k := literal_index(model)) is None:
         return None
-    radii = KERNELS[k].body_radii
-    i1, i2, i3 = (MODELS[k].parameters.index(n) for n in ("rho1", "rho2", "rho3"))
+    radii = kernels_of(k).body_radii
+    i1, i2, i3 = (record(k).parameters.index(n) for n in ("rho1", "rho2", "rho3"))
     # the inertial polar angle of the reference point, for the longitude under it:
     # ω t on the held circle (the COM starts on +X, held_circle_orbit), ν + π/2 on a free
     # orbit (R = r (−sin ν, cos ν), docs/orbit.md).  Every body takes this angle: the
     # bodies sit within ~100 m of it, 1.5e-5 rad of longitude, a 0.2 s shift of local
     # time (docs/air.md bounds the density error this makes)
     if held_circle(k):
-        i_angle, from_state, offset = MODELS[k].parameters.index("omega"), False, 0.0
+        i_angle, from_state, offset = record(k).parameters.index("omega"), False, 0.0
     else:
-        i_angle, from_state, offset = MODELS[k].state.index("nu"), True, 0.5 * math.pi
+        i_angle, from_state, offset = record(k).state.index("nu"), True, 0.5 * math.pi
 
     def impl(model, t, y, p, pw, air):
         for i in range(p.shape[0]):  # a loop: no slice-assignment error path to compile

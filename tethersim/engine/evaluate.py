@@ -17,12 +17,12 @@ import numpy as np
 from numba import literally, njit
 from numba.extending import overload
 
-from tethersim.engine.dynamics import KERNELS, literal_index, model_densities, model_tether_margins
+from tethersim.engine.dynamics import literal_index, model_densities, model_tether_margins
 from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.select import call
 from tethersim.engine.integrators.steps import copy_into
 from tethersim.model.air.vector import UNIFORM
-from tethersim.model.registry import MODELS
+from tethersim.model.registry import KERNELS, MODELS, kernels_of
 
 
 def model_family_forces(model, y, p, out):
@@ -55,7 +55,7 @@ def _model_family_forces(model, y, p, out):
 def _model_jacobi(model, y, p):
     if (k := literal_index(model)) is None:
         return None
-    f = KERNELS[k].jacobi
+    f = kernels_of(k).jacobi
 
     def impl(model, y, p):
         return f(y, p)

@@ -42,7 +42,7 @@ from numba.extending import overload
 from tethersim.engine.dynamics import literal_index, model_tether_margins
 from tethersim.engine.integrators.select import call
 from tethersim.model.constants import R_EARTH
-from tethersim.model.registry import MODELS
+from tethersim.model.registry import record
 
 Event = namedtuple("Event", "name terminal status")
 #: the single table of events: slot order of model_events' vector (module docstring)
@@ -134,7 +134,7 @@ def model_events(model, y, p, ev, g, switches):
 def _model_events(model, y, p, ev, g, switches):
     if (k := literal_index(model)) is None:
         return None
-    names = MODELS[k].state
+    names = record(k).state
     ix, iy = names.index("delta_x"), names.index("delta_y")
     iz = names.index("delta_z") if "delta_z" in names else -1
     i_r = names.index("r") if "r" in names else -1

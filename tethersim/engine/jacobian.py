@@ -34,14 +34,14 @@ from numba.extending import overload
 
 from tethersim.engine.dynamics import literal_index, model_rhs
 from tethersim.engine.integrators.select import call
-from tethersim.model.registry import KERNELS, MODELS
+from tethersim.model.registry import MODELS, kernels_of, record
 
 STEP = float(np.finfo(float).eps ** (1 / 3))  # relative step of the central differences
 
 
 def analytic(model: int) -> bool:
     """True when `make derive` generated model ``model``'s Jacobian (module ``jacobian``)."""
-    return hasattr(KERNELS[model], "jacobian")
+    return hasattr(kernels_of(model), "jacobian")
 
 
 def model_jacobian(model, t, y, p, J):
@@ -77,7 +77,7 @@ def _model_jacobian(model, t, y, p, J):
     if (k := literal_index(model)) is None:
         return None
     if analytic(k):
-        jac = KERNELS[k].jacobian
+        jac = kernels_of(k).jacobian
 
         def impl(model, t, y, p, J):
             jac(t, y, p, J)
@@ -103,10 +103,10 @@ def _differences(model, t, y, p, J):
 
 
 def _check(model: int, y, J) -> None:
-    n = MODELS[model].n_state
+    n = MODELS[model].n_state if model < len(MODELS) else y.shape[0]  # a chain: any N
     if y.shape != (n,) or J.shape != (n, n):
         raise ValueError(f"y has shape {y.shape} and J {J.shape}: model "
-                         f"{MODELS[model].name!r} needs ({n},) and ({n}, {n})")
+                         f"{record(model).name!r} needs ({n},) and ({n}, {n})")
 
 
 def central_differences(model: int, t: float, y, p, J) -> None:
@@ -143,6 +143,6 @@ def jacobian(model: int, t: float, y, p, J) -> None:
     """
     _check(model, y, J)
     if analytic(model):
-        KERNELS[model].jacobian(t, y, p, J)
+        kernels_of(model).jacobian(t, y, p, J)
     else:
         call(_jacobian, model, float(t), y, p, J)

@@ -36,8 +36,10 @@ from tethersim.engine.integrators.rk4 import STATUS_EVENT as RK4_EVENT
 from tethersim.engine.integrators.rk4 import rk4_run
 from tethersim.engine.integrators.select import specialised
 from tethersim.engine.linearise import rk4_amplification
+from tethersim.engine.progress import advance as _advance
+from tethersim.engine.progress import progress_bar
 from tethersim.engine.result import SimResult
-from tethersim.engine.start import atol_floor, atol_hint, check_start_mode, start_satellite
+from tethersim.engine.start import atol_floor, atol_hint, check_start_mode, start_run
 from tethersim.model.inputs import air_vector, initial_model_state, parameter_vector
 from tethersim.model.registry import DEFAULT_MODEL, model_for_orbit, model_index
 from tethersim.model.satellite import Satellite
@@ -78,7 +80,7 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
              rtol: float = 1e-10, atol: float = 1e-12, locate_switches: bool | None = None,
              samples: int | None = None, check: bool = False,
              progress: bool | None = None, step_warning: bool = True,
-             start: str = "auto") -> SimResult:
+             start: str = "auto", beads: int | None = None) -> SimResult:
     """Integrate a satellite for ``periods`` orbits with one model.
 
     Parameters
@@ -121,6 +123,9 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
         given state; a given state far from any physical one is refused
         (tethersim.engine.start).  The result's ``satellite.initial`` is where
         the run started, ``start`` says which.
+    beads : int, optional
+        Each tether a chain of 0-64 beads (``sat.beads``; line masses ``sat.mt1``,
+        ``sat.mt2``; docs/beads.md), started on the straight lines of the start above.
 
     Returns
     -------
@@ -162,9 +167,9 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
         raise ValueError(f"method = {method!r}: allowed values {', '.join(METHODS)}")
     check_start_mode(start)
     check_scheme(sat, method)
-    model = model_for_orbit(model, sat.orbit)  # orbit = "free": the model's free twin
-    # the run's own satellite: its initial state is where the run starts (engine/start.py)
-    sat, start = start_satellite(sat, model, start)
+    # the run's own satellite (its initial state is where the run starts, its beads the
+    # chain's; orbit = "free": the model's free twin) and model (engine/start.py)
+    sat, start, model = start_run(sat, model_for_orbit(model, sat.orbit), start, beads)
     if method == "rk4":
         steps = check_positive("steps", steps if steps is not None
                                 else max(1, round(STEPS_PER_PERIOD * periods)), integer=True)
@@ -240,16 +245,8 @@ def _with_error(run: SimResult, fine: SimResult) -> SimResult:
     return replace(run, error_estimate=err)
 
 
-def _bar(total, desc, progress):
-    return tqdm(total=total, desc=desc, unit="orbit", delay=0.0 if progress else 1.0,
-                disable=(progress is False), leave=False,
-                bar_format="{l_bar}{bar}| {n:.1f}/{total:.1f} orbits [{elapsed}<{remaining}]")
-
-
-def _advance(bar, orbits: float) -> None:
-    """Move the bar to ``orbits`` done, never past its total: the chunks' float sums
-    overshoot it by an ulp or so, and tqdm then warns 'clamping frac'."""
-    bar.update(max(0.0, min(orbits, bar.total) - bar.n))
+def _bar(total, desc, progress):  # tqdm looked up here: tests replace it
+    return progress_bar(total, desc, progress, tqdm)
 
 
 def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:

@@ -97,6 +97,21 @@ def start_satellite(sat: Satellite, model: str, start: str = "auto") -> tuple:
         return sat, "given"
 
 
+def start_run(sat: Satellite, model: str, start: str = "auto", beads=None) -> tuple:
+    """(satellite, start used, model) of a run: :func:`start_satellite` for the model the
+    satellite's lines hang from, then with ``beads`` (or ``sat.beads``) the chain over it,
+    tethersim.model.beads (its beads start on the straight lines: inputs.initial_model_state).
+    """
+    from tethersim.model.bead_layout import check_beads
+    from tethersim.model.registry import bead_model_name
+    if beads is not None:
+        sat = sat.replace(beads=check_beads(beads))
+    elif sat.beads is not None:
+        check_beads(sat.beads)
+    sat, start = start_satellite(sat, model, start)
+    return sat, start, model if sat.beads is None else bead_model_name(model, sat.beads)
+
+
 def equilibrium_satellite(sat: Satellite, model: str) -> Satellite:
     """A copy of ``sat`` whose initial state is its equilibrium in ``model`` (rates zero).
 

@@ -11,10 +11,10 @@ import math
 
 import numpy as np
 
-from tethersim.model.registry import get_model
+from tethersim.model.registry import BEAD_BASES, get_model
 
 #: the base models a chain can be added to (planar, circular orbit, derived tethers)
-BASES = ("derived", "exact-gravity", "objective-damper")
+BASES = BEAD_BASES
 #: beads per tether a chain may have
 N_MAX = 64
 #: parameters after the base model's: tether masses [kg], diameters [m], drag coefficient
@@ -28,7 +28,8 @@ _BASE_NAMES = ("m1", "m2", "m3", "A1", "A2", "A3", "a", "b", "l10", "l20", "E1",
 NB = len(_BASE_NAMES)  # length of the base models' parameter vector
 (_M1, _M2, _M3, _A1, _A2, _A3, _A, _B, _L10, _L20, _E1, _E2, _C1, _C2, _CD, _R0, _MU, _OMEGA,
  _OMEGA_E, _RHO1, _RHO2, _RHO3) = range(NB)
-
+#: floats of kernel scratch after the extra parameters (the base p, state, rates)
+SCRATCH = NB + 12
 
 
 def check_base(base: str) -> None:
@@ -43,7 +44,7 @@ def check_base(base: str) -> None:
 def check_beads(n) -> int:
     """N as an int; one-line ValueError unless 0 ≤ N ≤ :data:`N_MAX`."""
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 0 <= n <= N_MAX:
-        raise ValueError(f"beads per tether N = {n!r}: allowed an integer 0 to {N_MAX}")
+        raise ValueError(f"beads = {n!r}: allowed an integer 0 to {N_MAX} (beads per tether)")
     return int(n)
 
 
@@ -65,7 +66,8 @@ def state_names(base: str, n: int) -> tuple:
 
 def parameter_vector(base_p, mt1: float, mt2: float, dt1: float = 0.0, dt2: float = 0.0,
                      CDt: float = 0.0, n: int = 1) -> np.ndarray:
-    """The chain model's parameter vector: the base model's p, then :data:`EXTRA_PARAMETERS`.
+    """The chain model's parameter vector: the base model's p, then :data:`EXTRA_PARAMETERS`,
+    then :data:`SCRATCH` floats the kernels overwrite (their scratch: no allocation).
 
     Parameters
     ----------
@@ -98,7 +100,8 @@ def parameter_vector(base_p, mt1: float, mt2: float, dt1: float = 0.0, dt2: floa
         if n > 0 and name in ("mt1", "mt2") and v <= 0.0:
             raise ValueError(f"{name} = {v!r}: a chain of {n} beads needs a tether mass > 0 "
                              f"(up to {hi:g} kg)")
-    return np.concatenate([base_p, np.array([mt1, mt2, dt1, dt2, CDt], dtype=np.float64)])
+    return np.concatenate([base_p, np.array([mt1, mt2, dt1, dt2, CDt], dtype=np.float64),
+                           np.zeros(SCRATCH)])
 
 
 def straight_chain(y_base, n: int, p) -> np.ndarray:

@@ -50,16 +50,18 @@ tests/derive/test_beads_lagrange.py check it (docs/beads.md).
 
 Compiled code: one cached entry point per base (``rhs_derived`` ...), the base a
 literal that picks its generated kernels (as tethersim/engine/dynamics.py picks a
-model's).  Not yet fit for the engine's time loops: each evaluation allocates six
-small scratch arrays (the rule of tethersim/engine/integrators/borrow.py is none per
-step), and the chain is not in the model registry (docs/beads.md, "Not yet").
+model's).  No evaluation allocates: the base model's parameter vector, state and
+rates it builds live in the tail of the chain's parameter vector (``SCRATCH`` floats,
+bead_layout.parameter_vector), the rule of tethersim/engine/integrators/borrow.py.
+The engine runs it as a registered model (tethersim.model.registry.BEAD_INDEX,
+:func:`engine_kernels`).
 """
 from __future__ import annotations
 
 import math
 from collections import namedtuple
+from types import SimpleNamespace
 
-import numpy as np
 from numba import literally, njit, types
 from numba.extending import overload
 
@@ -89,6 +91,7 @@ from tethersim.model.bead_layout import (  # noqa: F401  (the layout, re-exporte
     EXTRA_UNITS,
     N_MAX,
     NB,
+    SCRATCH,
     check_base,
     check_beads,
     parameter_vector,
@@ -98,6 +101,11 @@ from tethersim.model.bead_layout import (  # noqa: F401  (the layout, re-exporte
 
 _GENERATED = {name: generated.MODELS[name] for name in BASES}
 Kernels = namedtuple("Kernels", "rhs jacobi tensions")
+# the kernels' scratch, the tail of the parameter vector (bead_layout.SCRATCH): base p,
+# base state, base rates
+_S_PB = NB + len(EXTRA_PARAMETERS)
+_S_YB = _S_PB + NB
+_S_DB = _S_YB + 6
 _OBJECTIVE = BASES.index("objective-damper")  # its segments damp along their stretch rate
 
 
@@ -134,76 +142,58 @@ def _base_jacobi_overload(kind, y, p):
 
 
 @njit(cache=True, inline="always")
-def _nodes(y, p, n, j, nodes):
-    """nodes[k] = (x, y, ẋ, ẏ) of tether j's node k: 0 boom end, 1..n beads, n+1 balloon."""
+def _node(y, p, n, j, k):
+    """(x, y, ẋ, ẏ) of tether j's node k in L: 0 boom end, 1..n beads, n+1 balloon."""
     nq = 3 + 4 * n
-    th, thd = y[2], y[nq + 2]
-    s, c = math.sin(th), math.cos(th)
-    arm = p[_B] if j == 0 else -p[_A]  # tip-mass at +b, bus at −a along the boom
-    nodes[0, 0] = arm * s
-    nodes[0, 1] = arm * c
-    nodes[0, 2] = arm * thd * c
-    nodes[0, 3] = -arm * thd * s
-    for k in range(n):
-        i = 3 + 2 * (j * n + k)
-        nodes[k + 1, 0] = y[i]
-        nodes[k + 1, 1] = y[i + 1]
-        nodes[k + 1, 2] = y[nq + i]
-        nodes[k + 1, 3] = y[nq + i + 1]
-    nodes[n + 1, 0] = y[0]
-    nodes[n + 1, 1] = y[1]
-    nodes[n + 1, 2] = y[nq]
-    nodes[n + 1, 3] = y[nq + 1]
+    if k == n + 1:
+        return y[0], y[1], y[nq], y[nq + 1]
+    if k == 0:
+        th, thd = y[2], y[nq + 2]
+        s, c = math.sin(th), math.cos(th)
+        arm = p[_B] if j == 0 else -p[_A]  # tip-mass at +b, bus at −a along the boom
+        return arm * s, arm * c, arm * thd * c, -arm * thd * s
+    i = 3 + 2 * (j * n + k - 1)
+    return y[i], y[i + 1], y[nq + i], y[nq + i + 1]
 
 
-@njit(cache=True)
-def _segment_forces(y, p, n, j, nodes, F, T, objective):
-    """F[k] += force on node k from tether j's segments; T[s] = segment s's tension [N]."""
+@njit(cache=True, inline="always")
+def _segment(y, p, n, j, s, objective):
+    """Tether j's segment s (node s to s+1): (force on the far node (x, y) from the
+    spring and damper, drag on each end node (x, y), spring tension [N], λ_s [m])."""
     l_s = p[_L10 + j] / (n + 1)
-    E = p[_E1 + j]
-    c_s = (n + 1) * p[_C1 + j]
+    x0, y0, u0, v0 = _node(y, p, n, j, s)
+    x1, y1, u1, v1 = _node(y, p, n, j, s + 1)
+    ddx, ddy = x1 - x0, y1 - y0
+    lam = math.sqrt(ddx * ddx + ddy * ddy)
+    tx, ty = ddx / lam, ddy / lam  # from the near node (s) to the far one (s+1)
     omega = p[_OMEGA]
-    w_air = omega - p[_OMEGA_E]  # air-relative rotation rate of L (Eq 3.33)
-    r0 = p[_R0]
-    cdt = 0.5 * p[_RHO3] * p[NB + 4] * p[NB + 2 + j]  # ½ ρ3 C_Dt d_j
-    for s in range(n + 1):
-        ddx = nodes[s + 1, 0] - nodes[s, 0]
-        ddy = nodes[s + 1, 1] - nodes[s, 1]
-        lam = math.sqrt(ddx * ddx + ddy * ddy)
-        tx, ty = ddx / lam, ddy / lam  # from the near node (s) to the far one (s+1)
+    fx = fy = ten = 0.0
+    if lam > l_s:  # taut (Eqs 3.35-3.36)
+        c_s = (n + 1) * p[_C1 + j]
         # inertial relative velocity of the ends: Δṙ_L + ω ẑ × Δr (Eq 3.13)
-        wx = nodes[s + 1, 2] - nodes[s, 2] - omega * ddy
-        wy = nodes[s + 1, 3] - nodes[s, 3] + omega * ddx
-        fx = fy = 0.0  # force on the far node
-        T[s] = 0.0
-        if lam > l_s:  # taut (Eqs 3.35-3.36)
-            ten = E * (lam / l_s - 1.0)
-            T[s] = ten
-            fx -= ten * tx
-            fy -= ten * ty
-            if objective:  # Kelvin-Voigt: c λ̇ along the segment
-                rate = tx * wx + ty * wy
-                fx -= c_s * rate * tx
-                fy -= c_s * rate * ty
-            else:  # thesis damper, Eqs 3.43-3.44
-                fx -= c_s * wx
-                fy -= c_s * wy
-        F[s + 1, 0] += fx
-        F[s + 1, 1] += fy
-        F[s, 0] -= fx
-        F[s, 1] -= fy
-        if cdt > 0.0:  # cross-flow drag of the segment, half to each end
-            mx = 0.5 * (nodes[s, 0] + nodes[s + 1, 0])
-            my = 0.5 * (nodes[s, 1] + nodes[s + 1, 1])
-            vx = 0.5 * (nodes[s, 2] + nodes[s + 1, 2]) - w_air * (r0 + my)
-            vy = 0.5 * (nodes[s, 3] + nodes[s + 1, 3]) + w_air * mx
-            along = vx * tx + vy * ty
-            nx, ny = vx - along * tx, vy - along * ty
-            k = -0.5 * cdt * lam * math.sqrt(nx * nx + ny * ny)
-            F[s, 0] += k * nx
-            F[s, 1] += k * ny
-            F[s + 1, 0] += k * nx
-            F[s + 1, 1] += k * ny
+        wx = u1 - u0 - omega * ddy
+        wy = v1 - v0 + omega * ddx
+        ten = p[_E1 + j] * (lam / l_s - 1.0)
+        fx -= ten * tx
+        fy -= ten * ty
+        if objective:  # Kelvin-Voigt: c λ̇ along the segment
+            rate = tx * wx + ty * wy
+            fx -= c_s * rate * tx
+            fy -= c_s * rate * ty
+        else:  # thesis damper, Eqs 3.43-3.44
+            fx -= c_s * wx
+            fy -= c_s * wy
+    dx = dy = 0.0
+    cdt = 0.5 * p[_RHO3] * p[NB + 4] * p[NB + 2 + j]  # ½ ρ3 C_Dt d_j
+    if cdt > 0.0:  # cross-flow drag of the segment, half to each end
+        w_air = omega - p[_OMEGA_E]  # air-relative rotation rate of L (Eq 3.33)
+        vx = 0.5 * (u0 + u1) - w_air * (p[_R0] + 0.5 * (y0 + y1))
+        vy = 0.5 * (v0 + v1) + w_air * 0.5 * (x0 + x1)
+        along = vx * tx + vy * ty
+        nx, ny = vx - along * tx, vy - along * ty
+        kd = -0.5 * cdt * lam * math.sqrt(nx * nx + ny * ny)
+        dx, dy = kd * nx, kd * ny
+    return fx, fy, dx, dy, ten, lam
 
 
 @njit(cache=True)
@@ -219,16 +209,37 @@ def _base_parameters(p, n, pb):
     pb[_M3] += e1 + e2
 
 
+@njit(cache=True, inline="always")
+def _add_force(dydt, p, n, j, k, fx, fy, sc, m3, inertia):
+    """Add a force (fx, fy) [N] on tether j's node k to the accelerations in dydt."""
+    nq = 3 + 4 * n
+    if k == 0:  # the boom end: Q_θ = F · ∂r_end/∂θ, r_end = arm (sin θ, cos θ) (Eq 3.31)
+        arm = p[_B] if j == 0 else -p[_A]
+        dydt[nq + 2] += arm * (fx * sc[1] - fy * sc[0]) / inertia
+    elif k == n + 1:
+        dydt[nq] += fx / m3
+        dydt[nq + 1] += fy / m3
+    else:
+        mb = p[NB + j] / (n + 1)
+        i = nq + 3 + 2 * (j * n + k - 1)
+        dydt[i] += fx / mb
+        dydt[i + 1] += fy / mb
+
+
 @njit(cache=True)
 def _rhs(kind, t, y, p, dydt):
-    """dy/dt of the chain model over base ``BASES[kind]`` (SI; layout: module docstring)."""
+    """dy/dt of the chain model over base ``BASES[kind]`` (SI; layout: module docstring).
+
+    Its scratch (the base p, state and rates) is the tail of p (:data:`SCRATCH`): no
+    allocation, as the engine's time loops require (integrators/borrow.py).
+    """
     literally(kind)
     nq = y.shape[0] // 2
     n = (nq - 3) // 4
-    pb = np.empty(NB)
+    pb = p[_S_PB:_S_PB + NB]
+    yb = p[_S_YB:_S_YB + 6]
+    db = p[_S_DB:_S_DB + 6]
     _base_parameters(p, n, pb)
-    yb = np.empty(6)
-    db = np.empty(6)
     for i in range(3):
         yb[i] = y[i]
         yb[3 + i] = y[nq + i]
@@ -252,37 +263,35 @@ def _rhs(kind, t, y, p, dydt):
     m1 = p[_M1] + p[NB] / (2.0 * (n + 1))
     m2 = p[_M2] + p[NB + 1] / (2.0 * (n + 1))
     inertia = m1 * p[_B] ** 2 + m2 * p[_A] ** 2
-    s, c = math.sin(y[2]), math.cos(y[2])
-    nodes = np.empty((n + 2, 4))
-    F = np.empty((n + 2, 2))
-    T = np.empty(n + 1)
+    sc = (math.sin(y[2]), math.cos(y[2]))
     for j in range(2):
-        _nodes(y, p, n, j, nodes)
-        F[:, :] = 0.0
-        _segment_forces(y, p, n, j, nodes, F, T, kind == _OBJECTIVE)
-        arm = p[_B] if j == 0 else -p[_A]
-        # Q_θ = F · ∂r_end/∂θ, r_end = arm (sin θ, cos θ) (Eq 3.31)
-        dydt[nq + 2] += arm * (F[0, 0] * c - F[0, 1] * s) / inertia
-        dydt[nq] += F[n + 1, 0] / m3
-        dydt[nq + 1] += F[n + 1, 1] / m3
-        if n > 0:
-            mb = p[NB + j] / (n + 1)
-            for k in range(n):
-                i = nq + 3 + 2 * (j * n + k)
-                dydt[i] += F[k + 1, 0] / mb
-                dydt[i + 1] += F[k + 1, 1] / mb
+        for s in range(n + 1):
+            fx, fy, dx, dy, _, _ = _segment(y, p, n, j, s, kind == _OBJECTIVE)
+            _add_force(dydt, p, n, j, s + 1, fx + dx, fy + dy, sc, m3, inertia)
+            _add_force(dydt, p, n, j, s, dx - fx, dy - fy, sc, m3, inertia)
 
 
 @njit(cache=True)
 def tensions(y, p, out):
     """out[j, s] = spring tension of tether j's segment s [N] (0 slack), boom end first."""
-    nq = y.shape[0] // 2
-    n = (nq - 3) // 4
-    nodes = np.empty((n + 2, 4))
-    F = np.zeros((n + 2, 2))
+    n = (y.shape[0] // 2 - 3) // 4
     for j in range(2):
-        _nodes(y, p, n, j, nodes)
-        _segment_forces(y, p, n, j, nodes, F, out[j], False)
+        for s in range(n + 1):
+            out[j, s] = _segment(y, p, n, j, s, False)[4]
+
+
+@njit(cache=True, inline="always")
+def tether_margins(y, p, g):
+    """g[j] = (N + 1) max_s (λ_s − l_s) [m]: the most stretched segment of tether j, as the
+    line's extension at that segment's tension (the events' stretch and break limits)."""
+    n = (y.shape[0] // 2 - 3) // 4
+    for j in range(2):
+        worst = -math.inf
+        for s in range(n + 1):
+            x0, y0, _, _ = _node(y, p, n, j, s)
+            x1, y1, _, _ = _node(y, p, n, j, s + 1)
+            worst = max(worst, (n + 1) * math.hypot(x1 - x0, y1 - y0))
+        g[j] = worst - p[_L10 + j]
 
 
 @njit(cache=True)
@@ -291,20 +300,20 @@ def _jacobi(kind, y, p):
 
     The base model's (tethers off, end masses added), each bead's as a balloon of
     the bead's mass with no boom, and ½ (E_j / l_s)(λ_s − l_s)² per taut segment.
+    Scratch: the tail of p, as :func:`_rhs`.
     """
     literally(kind)
     nq = y.shape[0] // 2
     n = (nq - 3) // 4
-    pb = np.empty(NB)
+    pb = p[_S_PB:_S_PB + NB]
+    yb = p[_S_YB:_S_YB + 6]
     _base_parameters(p, n, pb)
-    yb = np.empty(6)
     for i in range(3):
         yb[i] = y[i]
         yb[3 + i] = y[nq + i]
     h = _base_jacobi(kind, yb, pb)
     pb[_M1] = pb[_M2] = 0.0
     yb[2] = yb[5] = 0.0
-    nodes = np.empty((n + 2, 4))
     for j in range(2):
         if n > 0:
             pb[_M3] = p[NB + j] / (n + 1)
@@ -315,10 +324,9 @@ def _jacobi(kind, y, p):
                 yb[3] = y[nq + i]
                 yb[4] = y[nq + i + 1]
                 h += _base_jacobi(kind, yb, pb)
-        _nodes(y, p, n, j, nodes)
         l_s = p[_L10 + j] / (n + 1)
         for s in range(n + 1):
-            lam = math.hypot(nodes[s + 1, 0] - nodes[s, 0], nodes[s + 1, 1] - nodes[s, 1])
+            lam = _segment(y, p, n, j, s, False)[5]
             if lam > l_s:
                 h += 0.5 * p[_E1 + j] / l_s * (lam - l_s) ** 2
     return h
@@ -364,6 +372,17 @@ def jacobi_objective_damper(y, p):
 _KERNELS = {"derived": Kernels(rhs_derived, jacobi_derived, tensions),
             "exact-gravity": Kernels(rhs_exact_gravity, jacobi_exact_gravity, tensions),
             "objective-damper": Kernels(rhs_objective_damper, jacobi_objective_damper, tensions)}
+
+
+def engine_kernels(base: str) -> SimpleNamespace:
+    """The module interface the engine's compiled loops read (tethersim.engine.dynamics):
+    ``rhs``, ``tether_margins`` (the most stretched segment of each line), ``body_radii``
+    (the base model's: the beads' air is the balloon's, ``_segment``) and ``jacobi``."""
+    check_base(base)
+    k = _KERNELS[base]
+    return SimpleNamespace(rhs=k.rhs, jacobi=k.jacobi, tensions=tensions,
+                           tether_margins=tether_margins,
+                           body_radii=_GENERATED[base].body_radii)
 
 
 def kernels(base: str = "derived") -> Kernels:

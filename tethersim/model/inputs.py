@@ -26,7 +26,7 @@ from tethersim.model.air.vector import air_vector as _air_vector
 from tethersim.model.constants import J2_EARTH, MU_EARTH, R_EARTH
 from tethersim.model.inertia import body_inertias
 from tethersim.model.options import air_model
-from tethersim.model.registry import get_model
+from tethersim.model.registry import bead_split, get_model
 from tethersim.model.satellite import Satellite, parameters
 
 
@@ -49,7 +49,12 @@ def model_values(sat: Satellite) -> dict:
 
 
 def parameter_vector(sat: Satellite, model: str) -> np.ndarray:
-    """The parameter vector of ``model`` for ``sat`` (the model's PARAMETERS order)."""
+    """The parameter vector of ``model`` for ``sat`` (the model's PARAMETERS order; a bead
+    chain's then has its kernels' scratch, tethersim.model.bead_layout.parameter_vector)."""
+    if (chain := bead_split(model)) is not None:
+        from tethersim.model import bead_layout
+        return bead_layout.parameter_vector(parameter_vector(sat, chain[0]), sat.mt1, sat.mt2,
+                                            sat.dt1, sat.dt2, sat.CDt, n=chain[1])
     values = model_values(sat)
     return np.array([values[n] for n in get_model(model).parameters], dtype=np.float64)
 
@@ -65,7 +70,12 @@ def air_vector(sat: Satellite, duration_s: float) -> np.ndarray:
 
 
 def initial_model_state(sat: Satellite, model: str) -> np.ndarray:
-    """The model's own initial state (its STATE order) for ``sat``."""
+    """The model's own initial state (its STATE order) for ``sat``; a bead chain's: its
+    beads on the straight lines from the boom ends to the balloon (bead_layout.straight_chain)."""
+    if (chain := bead_split(model)) is not None:
+        from tethersim.model import bead_layout
+        return bead_layout.straight_chain(initial_model_state(sat, chain[0]), chain[1],
+                                          parameter_vector(sat, model))
     dx, dy, th, dxd, dyd, thd = sat.initial
     extra = {"delta_z": 0.0, "phi": 0.0, "psi": 0.0, "delta_z_dot": 0.0, "phi_dot": 0.0,
              "psi_dot": 0.0}

@@ -20,7 +20,7 @@ A free model's module names the circular model it reduces to (``CIRCULAR_TWIN``)
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from types import ModuleType
 
 import tethersim.generated as generated
@@ -100,6 +100,59 @@ THESIS_VARIANTS = tuple(m.name for m in MODELS if m.thesis_variant)
 KERNELS = tuple(m.module for m in MODELS)
 
 
+#: the base models a bead chain (tethersim/model/beads.py, docs/beads.md) runs over
+BEAD_BASES = ("derived", "exact-gravity", "objective-damper")
+#: each base's chain: a fixed index after the generated models (the compiled loops'
+#: literal and numba's cache key), never an order of registration at run time
+BEAD_INDEX = {base: len(MODELS) + i for i, base in enumerate(BEAD_BASES)}
+_BEAD_TAG = "+beads"
+
+
+def bead_model_name(base: str, n: int) -> str:
+    """The name of the chain of ``n`` beads a line over ``base`` (e.g. ``derived+beads4``)."""
+    if base not in BEAD_BASES:
+        raise ValueError(f"model = {base!r} with beads: allowed values {', '.join(BEAD_BASES)}")
+    return f"{base}{_BEAD_TAG}{int(n)}"
+
+
+def bead_split(name: str):
+    """(base, N) of a chain model's name, or None for any other name."""
+    base, tag, n = str(name).rpartition(_BEAD_TAG)
+    if not tag or base not in BEAD_BASES or not n.isdigit():
+        return None
+    return base, int(n)
+
+
+def _bead_model(base: str, n: int) -> Model:
+    from tethersim.model import beads  # beads imports this module: at call time only
+    m = BY_NAME[base]
+    state, units = beads.state_names(base, n)
+    return replace(m, name=bead_model_name(base, n), index=BEAD_INDEX[base],
+                   description=f"{m.description}; each tether a chain of {n} beads",
+                   state=state, state_units=units,
+                   parameters=m.parameters + beads.EXTRA_PARAMETERS,
+                   parameter_units=m.parameter_units + beads.EXTRA_UNITS,
+                   families=(), module=beads.engine_kernels(base))
+
+
+def record(index: int) -> Model:
+    """The model at compiled-loop index ``index``; a chain's with N = 0 (its coordinates
+    start with the base's; its state size is read from the state vector)."""
+    if index < len(MODELS):
+        return MODELS[index]
+    return _bead_model(BEAD_BASES[index - len(MODELS)], 0)
+
+
+def kernels_of(index: int):
+    """The kernels module (rhs, tether_margins, body_radii, ...) of loop index ``index``."""
+    return KERNELS[index] if index < len(KERNELS) else record(index).module
+
+
+def bead_index(index: int) -> bool:
+    """True for a bead chain's loop index (its state size is not a constant)."""
+    return index >= len(MODELS)
+
+
 def get_model(name: str, supported=None, what: str = "") -> Model:
     """The registered model called ``name``.
 
@@ -122,6 +175,8 @@ def get_model(name: str, supported=None, what: str = "") -> Model:
         One line naming the model and the allowed values.
     """
     allowed = NAMES if supported is None else tuple(supported)
+    if (chain := bead_split(name)) is not None and supported is None:
+        return _bead_model(*chain)
     if name not in BY_NAME:
         raise ValueError(f"model = {name!r}: allowed values {', '.join(allowed)}")
     if name not in allowed:

@@ -28,7 +28,7 @@ INITIAL_3D = {"delta_z": "m", "phi": "rad", "psi": "rad", "delta_z_dot": "m/s",
 ROLL_LIMIT_DEG = 80.0
 _OPTIONAL = ("Fb1", "Fb2", "allow_implausible", "orbit", "j2", "eccentricity",
              "reentry_altitude", "atmosphere", "epoch", "f107", "f107a", "ap", "density_scale",
-             "inertia", "I1", "I2")
+             "inertia", "I1", "I2", "beads", "mt1", "mt2", "dt1", "dt2", "CDt")
 UNITS = {"m1": "kg", "m2": "kg", "m3": "kg", "A1": "m^2", "A2": "m^2", "A3": "m^2",
          "a": "m", "b": "m", "l10": "m", "l20": "m", "E1": "N", "E2": "N",
          "c1": "N s/m", "c2": "N s/m", "CD": "1", "altitude": "m", "Fb1": "N", "Fb2": "N"}
@@ -136,6 +136,15 @@ class Satellite:
     inertia: str = "boxes"
     I1: tuple | None = None
     I2: tuple | None = None
+    # tethers with mass (docs/beads.md): beads per line (None: the massless springs of the
+    # chosen model; 0-64: a chain, tethersim.model.beads), line masses [kg], diameters [m]
+    # and the lines' drag coefficient (0: no line drag)
+    beads: int | None = None
+    mt1: float = 0.0
+    mt2: float = 0.0
+    dt1: float = 0.0
+    dt2: float = 0.0
+    CDt: float = 0.0
     density_auto: bool = field(default=False, init=False, compare=False, repr=False)
 
     def __post_init__(self):

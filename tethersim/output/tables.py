@@ -97,6 +97,7 @@ def _columns(res: SimResult) -> list:
     free orbit, the derived altitude, osculating elements and air densities
     (tethersim.analysis.free_orbit), then the tension of tethers 1 and 2."""
     from tethersim.analysis.free_orbit import free_orbit_series  # numba: only when writing one
+    from tethersim.analysis.tethers import segment_tensions
 
     lay = res.layout
     cols = [("t", res.t, "s")] + [(n, res.states[:, i], u)
@@ -106,8 +107,12 @@ def _columns(res: SimResult) -> list:
         cols += [(n, orbit[:, i], u) for i, (n, u) in enumerate(zip(ORBIT_COLUMNS, ORBIT_UNITS))]
     # the tethers' tensions, the model's own (SimResult.tether_tensions; zero while slack)
     tension = res.tether_tensions()
+    # a bead chain's segments, boom end first (tethersim.analysis.tethers.segment_tensions)
+    segments = segment_tensions(res)
     return (cols + free_orbit_series(res)
-            + [(f"tension_{j + 1}", tension[:, j], "N") for j in range(2)])
+            + [(f"tension_{j + 1}", tension[:, j], "N") for j in range(2)]
+            + [(f"tension_{j + 1}_{s + 1}", segments[:, j, s], "N") for j in range(2)
+               for s in range(segments.shape[2])])
 
 
 def write_timeseries(res: SimResult, path) -> Path:
@@ -128,7 +133,10 @@ def write_timeseries(res: SimResult, path) -> Path:
         the COM's altitude [m], osculating semi_major_axis [m] and eccentricity [1]
         and the air density at each body, rho_tip_mass, rho_bus, rho_balloon
         [kg/m^3] (tethersim.analysis.free_orbit); last the tethers' tensions
-        tension_1, tension_2 [N] (the model's spring tension, zero while slack).
+        tension_1, tension_2 [N] (the model's spring tension, zero while slack; a bead
+        chain's most stretched segment's), and for a bead chain each segment's,
+        tension_1_1 ... tension_2_{N+1} [N], boom end first (its bead positions
+        x_1_1, y_1_1, ... are states).
 
     Examples
     --------

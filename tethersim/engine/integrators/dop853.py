@@ -52,7 +52,7 @@ def _dop853_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out
     air, ev = borrow(air), borrow(ev)
     counters, work, y_new, f, F, g = (borrow(counters), borrow(work), borrow(y_new), borrow(f),
                                       borrow(F), borrow(g))
-    n = model_size(model)  # a compile-time constant: the loops below unroll
+    n = model_size(model, y)  # a compile-time constant: the loops below unroll
     K = work[:N_K]
     ys = work[N_K]
     g0, g1 = g[0], g[1]

@@ -101,7 +101,7 @@ def rk4_lanes_step(model, T, Y, H, P, k1, k2, k3, k4, ys, ts, Y_new, S):
     S : ndarray
         (model_transcendentals(model)*LANES,) scratch of the lane rhs.
     """
-    n = model_size(model)
+    n = model_size(model, Y)
     K = T.shape[0]
     for s in range(4):
         # one rhs call site (steps.py); each stage its own array, not a row of one: LLVM

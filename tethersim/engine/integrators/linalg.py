@@ -76,7 +76,7 @@ def fd_jacobian(model, air, t, y, f, p, pw, J, ys, fs):
     ~1e-8 in J, which only slows the simplified Newton iteration, never the
     accuracy of the converged step.  ys, fs: scratch vectors.
     """
-    n = model_size(model)
+    n = model_size(model, y)
     for i in range(n):
         ys[i] = y[i]
     for j in range(n):

@@ -63,7 +63,7 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
     air, ev, counters, carry = borrow(air), borrow(ev), borrow(counters), borrow(carry)
     Z, W, F, Q, J, LR, LC = borrow(Z), borrow(W), borrow(F), borrow(Q), borrow(J), borrow(LR), borrow(LC)
     pr, pc, v, bc, g = borrow(pr), borrow(pc), borrow(v), borrow(bc), borrow(g)
-    n = model_size(model)
+    n = model_size(model, y)
     f, y_new, f_new, ys, fs, scale, err, y_old = v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]
     br = v[8]
     # what the previous call left (carry): Jacobian, controller memory, last dense output

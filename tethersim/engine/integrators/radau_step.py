@@ -96,7 +96,7 @@ def radau_newton(model, air, t, y, h, p, pw, Z, W, F, ys, br, bc, scale, tol, LR
     Z holds the initial guess (stage states y + Z[i]).  Returns (converged,
     iterations, convergence rate or -1) as scipy's solve_collocation_system.
     """
-    n = model_size(model)
+    n = model_size(model, y)
     for i in range(n):
         for s in range(3):
             W[s, i] = TI[s, 0] * Z[0, i] + TI[s, 1] * Z[1, i] + TI[s, 2] * Z[2, i]

@@ -75,7 +75,7 @@ def _rk4_loop(model, air, k0, y, h, n_steps, stride, p, pw, ev, locate, out_t, o
     air, ev = borrow(air), borrow(ev)
     work, y_new, g = borrow(work), borrow(y_new), borrow(g)
     g0, g1 = g[0], g[1]
-    n = model_size(model)  # a compile-time constant: the loops below unroll
+    n = model_size(model, y)  # a compile-time constant: the loops below unroll
     row = row0
     switches = 0
     model_events(model, y, p, ev, g0, locate)

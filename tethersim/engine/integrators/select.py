@@ -57,8 +57,8 @@ def _in_cache(dispatcher, sig) -> bool:
 
 
 def _model(model: int):
-    from tethersim.model.registry import MODELS
-    return MODELS[model]
+    from tethersim.model.registry import record
+    return record(model)
 
 
 def _timing_path(model: int) -> Path:

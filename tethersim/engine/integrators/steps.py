@@ -56,7 +56,7 @@ def rk4_step(model, air, t, y, h, p, pw, work, y_new):
     y_new : ndarray
         Output: the state at t + h.
     """
-    n = model_size(model)
+    n = model_size(model, y)
     ys = work[4]
     for s in range(4):
         if s == 0:
@@ -131,7 +131,7 @@ def dop853_step(model, air, t, y, f, h, p, pw, K, ys, y_new):
     y_new receives the state at t + h; K[0..12] the stages, K[12] = f(t + h,
     y_new) (first same as last); ys is a stage-state scratch vector.
     """
-    n = model_size(model)
+    n = model_size(model, y)
     for i in range(n):
         K[0, i] = f[i]
     for s in range(1, N_STAGES + 1):
@@ -163,7 +163,7 @@ def dop853_error_norm(n, K, h, y, y_new, rtol, atol):
 @njit(cache=True)
 def dop853_dense(model, air, t, y, y_new, h, p, pw, K, ys, F):
     """Coefficients F (7, n) of the 7th-order interpolant on [t, t + h]."""
-    n = model_size(model)
+    n = model_size(model, y)
     for s in range(N_STAGES + 1, N_K):
         _stage_state(n, s, y, h, K, ys)
         derivative(model, air, t + C[s] * h, ys, p, pw, K[s])

@@ -55,7 +55,7 @@ def _trial(method, model, air, t, y, f, tau, p, pw, ev, work, y_new, g, switches
     elif method == 2:
         # Radau (integrators/radau.py): the step's collocation cubic, work[k] the
         # coefficient of τ^(k+1); the loop then retakes the step to land there
-        for i in range(model_size(model)):
+        for i in range(model_size(model, y)):
             y_new[i] = y[i] + tau * (work[0, i] + tau * (work[1, i] + tau * work[2, i]))
     else:
         dop853_step(model, air, t, y, f, tau, p, pw, work[:16], work[16], y_new)
