@@ -79,7 +79,7 @@ def dop853_lanes_step(model, Y, H, P, Ks, YS, Y_new, S):
     S : ndarray
         (model_transcendentals(model)*LANES,) scratch of the lane rhs.
     """
-    n = model_size(model)
+    n = model_size(model, Y)
     m = n * LANES
     for s in range(1, N_STAGES + 1):
         _stage_state_lanes(n, s, Y, H, Ks, YS)
@@ -156,7 +156,7 @@ def _norm(n, h, e5, e3, err, k):
 def dop853_lanes_dense(model, Y, Y_new, H, P, Ks, YS, F, S):
     """F ((7*n)*LANES,): every lane's interpolant coefficients (``steps.dop853_dense``),
     row r of coefficient q at [(q*n + r)*LANES, ...); stages 13..15 of Ks are written."""
-    n = model_size(model)
+    n = model_size(model, Y)
     m = n * LANES
     K = H.shape[0]
     for s in range(N_STAGES + 1, N_K):
