@@ -37,6 +37,7 @@ from tethersim.output.page import pre as _pre
 from tethersim.output.page import table as _table
 from tethersim.output.real_section import section_real
 from tethersim.output.roll_section import section_roll
+from tethersim.output.torque_section import section_torque_balance
 
 SATS = ("satI", "satII", "dumbsat")
 
@@ -303,34 +304,6 @@ def section_maps(page: Page, grid: int, periods: float, workers, progress) -> li
     return summary
 
 
-def section_torque_balance(page: Page, maps: list) -> None:
-    from tethersim.analysis.torque_balance import balanced_E2, torque_balance_ratio
-
-    rows = []
-    slopes = {r[0]: r[4] for r in maps if r[2].startswith("E1")}
-    for n in SATS:
-        sat = load_preset(n)
-        exact = balanced_E2(sat) / sat.E1
-        formula = torque_balance_ratio(sat)
-        rows.append((sat.name, f"{sat.b / sat.a:.4g}", f"{formula:.4g}", f"{exact:.4g}",
-                     f"{sat.E2 / sat.E1:.4g}", slopes.get(sat.name, "—")))
-        thesis_ratio, thesis = {"satI": (10.0, "about 10 (b/a a little over 10)"),
-                                "satII": (20.0, "about 20 (b/a ≈ 24)"),
-                                "dumbsat": (1.0, "1:1")}[n]
-        close = abs(exact / thesis_ratio - 1) <= 0.1
-        page.fact(f"{sat.name}: stable moduli around E2/E1 = {thesis}", "5-18, 5-19, 5-23",
-                  f"balanced E2/E1 = {exact:.4g}; b/a = {sat.b / sat.a:.4g}; sweep band slope "
-                  f"{slopes.get(sat.name, '—')}", "yes" if close else "partly",
-                  "torque balance of the two tethers about the COM: b T1 = a T2 with equal "
-                  "strains gives E2/E1 ≈ b/a (docs/torque-balance.md)"
-                  + ("" if close else f"; the thesis read about {thesis_ratio:g} off a coarse "
-                     f"map, the balance puts the band at {exact:.3g} ≈ b/a"))
-    page.add("Why E2/E1 ≈ b/a: torque balance (docs/torque-balance.md)", _table(
-        ("satellite", "b/a", "formula TB4", "exact balanced E2/E1", "preset E2/E1",
-         "sweep band slope"), rows,
-        reasons={"sweep band slope": "no stable band on the E1 x E2 grids of this report"}))
-
-
 def section_facts(page: Page) -> None:
     sat = load_preset("satI")
     steps = ((5, 1500, 17.7, "5-2"), (50, 10_000, 26.55, "5-7"), (2, 20_000, 0.531, "4-6"))
@@ -399,7 +372,7 @@ def build_report(out, grid: int = 41, periods: float = 50.0, workers=None,
     maps = section_maps(page, grid, periods, workers, progress)
     page.timings.append(("stability maps", time.perf_counter() - t0))
     t0 = time.perf_counter()
-    section_torque_balance(page, maps)
+    section_torque_balance(page, maps, SATS)
     section_facts(page)
     page.timings.append(("torque balance + facts", time.perf_counter() - t0))
     return write_html(page)
