@@ -3,9 +3,11 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
 from tethersim.analysis.classify import (
+    CLASSES,
     FAILED,
     OFFSET,
     SETTLING_REQUIREMENT,
@@ -13,6 +15,7 @@ from tethersim.analysis.classify import (
     TUMBLING,
     UNSETTLED,
     UPSIDE_DOWN,
+    agreement,
     classify,
 )
 from tethersim.analysis.metrics import PitchMetrics
@@ -40,3 +43,25 @@ def test_classes_follow_the_thesis_criteria_in_priority_order(metrics, expected)
 
 def test_tolerance_is_a_parameter():
     assert classify(m(ss=0.08), tol=0.1) == STABLE
+
+
+def test_agreement_counts_hand_made_maps():
+    predicted = np.array([[0, 0, 2], [1, 2, 4]], dtype=np.int8)
+    simulated = np.array([[0, 1, 2], [1, 3, 4]], dtype=np.int8)
+    r = agreement(predicted, simulated)
+    assert r["n"] == 6 and r["n_missing"] == 0
+    assert r["same_class"] == pytest.approx(4 / 6)  # (0,0), (0,2), (1,0), (1,2)
+    assert r["same_stability"] == pytest.approx(5 / 6)  # only (0,1): stable vs unsettled
+    expected = np.zeros((len(CLASSES), len(CLASSES)), dtype=int)
+    for p, s in [(0, 0), (0, 1), (2, 2), (1, 1), (2, 3), (4, 4)]:
+        expected[p, s] += 1
+    np.testing.assert_array_equal(r["confusion"], expected)
+    # the sweep store's fill (-1: not computed) is left out
+    simulated[0, 0] = -1
+    r = agreement(predicted, simulated)
+    assert r["n"] == 5 and r["n_missing"] == 1 and r["same_class"] == pytest.approx(3 / 5)
+    assert r["confusion"].sum() == 5
+    with pytest.raises(ValueError, match="shape"):
+        agreement(predicted, simulated[:, :2])
+    with pytest.raises(ValueError, match="not a class"):
+        agreement(predicted, np.full((2, 3), len(CLASSES)))

@@ -12,7 +12,6 @@ import pytest
 
 import tethersim as ts
 from tethersim.analysis.classify import (
-    CLASSES,
     FAILED,
     OFFSET,
     STABLE,
@@ -21,7 +20,7 @@ from tethersim.analysis.classify import (
     flag_attrs,
 )
 from tethersim.analysis.equilibrium import find_equilibrium
-from tethersim.analysis.predict import agreement, predicted_class, predicted_map
+from tethersim.analysis.predict import predicted_class, predicted_map
 from tethersim.analysis.torque_balance import (
     balanced_E2,
     balloon_trail_at_zero_pitch,
@@ -181,29 +180,6 @@ def test_predicted_map_labels_and_matches_predicted_class():
     assert ds.predicted_class.values[1, 1] == STABLE
     with pytest.raises(ts.SatelliteError, match="grid point"):
         predicted_map(sat, "m1", [10.0, 11.0], "E1", [0.004], progress=False)
-
-
-# --- agreement --------------------------------------------------------------------
-def test_agreement_counts_hand_made_maps():
-    predicted = np.array([[0, 0, 2], [1, 2, 4]], dtype=np.int8)
-    simulated = np.array([[0, 1, 2], [1, 3, 4]], dtype=np.int8)
-    r = agreement(predicted, simulated)
-    assert r["n"] == 6 and r["n_missing"] == 0
-    assert r["same_class"] == pytest.approx(4 / 6)  # (0,0), (0,2), (1,0), (1,2)
-    assert r["same_stability"] == pytest.approx(5 / 6)  # only (0,1): stable vs unsettled
-    expected = np.zeros((len(CLASSES), len(CLASSES)), dtype=int)
-    for p, s in [(0, 0), (0, 1), (2, 2), (1, 1), (2, 3), (4, 4)]:
-        expected[p, s] += 1
-    np.testing.assert_array_equal(r["confusion"], expected)
-    # the sweep store's fill (-1: not computed) is left out
-    simulated[0, 0] = -1
-    r = agreement(predicted, simulated)
-    assert r["n"] == 5 and r["n_missing"] == 1 and r["same_class"] == pytest.approx(3 / 5)
-    assert r["confusion"].sum() == 5
-    with pytest.raises(ValueError, match="shape"):
-        agreement(predicted, simulated[:, :2])
-    with pytest.raises(ValueError, match="not a class"):
-        agreement(predicted, np.full((2, 3), len(CLASSES)))
 
 
 # --- eigenvalues with no tethers and no drag (issue 5) --------------------------------

@@ -5,6 +5,7 @@ import csv
 
 import pytest
 
+from tests.tiers import VARIANT_LOOP
 from tethersim.analysis.classify import CLASSES
 from tethersim.cli.main import main
 from tethersim.model.registry import THESIS_VARIANTS as MODEL_NAMES
@@ -17,6 +18,7 @@ def _read_csv(path):
         return list(csv.DictReader(f))
 
 
+@VARIANT_LOOP
 def test_compare_writes_png_and_csv_and_prints_the_table(tmp_path, capsys):
     out = tmp_path / "cmp"
     code = main(["compare", "satI", "--periods", "1", "--out", str(out), "--quiet"])
@@ -41,6 +43,7 @@ def test_compare_writes_png_and_csv_and_prints_the_table(tmp_path, capsys):
     assert "all variants end" in stdout or "outcome classes differ" in stdout
 
 
+@VARIANT_LOOP
 def test_compare_applies_overrides_to_every_model(tmp_path, capsys):
     """--set c2=0 removes erratum E1: printed then tracks derived (θ to ~1e-10 rad)."""
     argv = ["compare", "satI", "--models", "derived,printed", "--periods", "1", "--quiet"]
@@ -55,13 +58,13 @@ def test_compare_applies_overrides_to_every_model(tmp_path, capsys):
 
 
 def test_compare_faithful_uses_fixed_step_rk4(tmp_path, capsys):
-    # derived and printed: the fixed-step loops the other faithful tests compile already
-    code = main(["compare", "satI", "--models", "derived,printed", "--periods", "1",
+    # the default model alone: a variant's loop is slow-tier (tests/tiers.py)
+    code = main(["compare", "satI", "--models", "derived", "--periods", "1",
                  "--faithful", "--steps", "300", "--out", str(tmp_path), "--quiet"])
     stdout = capsys.readouterr().out
     assert code == 0
     assert "RK4, fixed step 17.7 s (faithful)" in stdout  # 5309.64 s / 300
-    assert len(_read_csv(tmp_path / "compare.csv")) == 2
+    assert len(_read_csv(tmp_path / "compare.csv")) == 1
 
 
 def test_compare_unknown_model_exits_2_naming_allowed_values(tmp_path, capsys):
@@ -86,7 +89,7 @@ def test_compare_help_exits_zero(capsys):
 
 
 def test_compare_faithful_without_steps_runs_at_the_thesis_ch5_step(in_tmp, cli):
-    code, out, err = cli(["compare", "satI", "--models", "derived,printed", "--periods",
+    code, out, err = cli(["compare", "satI", "--models", "derived", "--periods",
                           "0.05", "--faithful", "--quiet"])
     assert code == 0, err
     assert "RK4, fixed step 26.55 s (faithful)" in out  # the runs' own label

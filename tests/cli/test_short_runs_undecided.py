@@ -5,6 +5,7 @@ from __future__ import annotations
 import csv
 import json
 
+from tests.tiers import VARIANT_LOOP
 from tethersim.analysis.metrics import min_run_orbits
 
 HINT = f"run at least {min_run_orbits():.4g} orbits"
@@ -32,6 +33,7 @@ def test_a_short_sweep_writes_undecided_in_its_csv_and_counts(cli, tmp_path):
     assert f"undecided    2: {HINT}" in stdout
 
 
+@VARIANT_LOOP
 def test_compare_of_short_runs_says_how_long_to_run(cli, tmp_path):
     code, stdout, _ = cli(["compare", "satI", "--periods", "0.1", "--models", "derived,printed",
                            "--out", str(tmp_path / "c"), "--quiet"])

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 import tethersim as ts
+from tests.tiers import models
 from tethersim.engine.simulate import simulate
 
 
@@ -14,7 +15,7 @@ def sat():
     return ts.load_preset("satI")
 
 
-@pytest.mark.parametrize("model", ["derived", "printed", "exact-gravity", "objective-damper"])
+@pytest.mark.parametrize("model", models("derived", "printed", "exact-gravity", "objective-damper"))
 def test_jacobi_integral_is_conserved_without_drag_and_dampers(sat, model):
     # Springs stay in: they are conservative and their energy is part of h.  The
     # run crosses taut/slack switches (balloon released 4 m behind).

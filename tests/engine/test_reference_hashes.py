@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 
 from tests.reference import assert_count_close, assert_final_close, stored_tolerances
+from tests.tiers import VARIANT_LOOP
 from tethersim import load_preset, simulate
 
 
@@ -84,9 +85,15 @@ NOT_REPRODUCED = {
 }
 
 
-@pytest.mark.parametrize("name", [
-    pytest.param(n, marks=pytest.mark.xfail(strict=True, reason=NOT_REPRODUCED[n]))
-    if n in NOT_REPRODUCED else n for n in sorted(REFERENCE)])
+def _marks(name):
+    """The reference's marks: xfail where NOT_REPRODUCED, slow for a variant's loop."""
+    marks = [VARIANT_LOOP] if REFERENCE[name][1].get("model", "derived") != "derived" else []
+    if name in NOT_REPRODUCED:
+        marks.append(pytest.mark.xfail(strict=True, reason=NOT_REPRODUCED[name]))
+    return marks
+
+
+@pytest.mark.parametrize("name", [pytest.param(n, marks=_marks(n)) for n in sorted(REFERENCE)])
 def test_trajectory_matches_the_reference(sat, name):
     transform, kwargs, counts, final = REFERENCE[name]
     if kwargs.get("method") != "rk4":  # the steps the stored run took (tests/reference.py)
@@ -101,7 +108,8 @@ def test_trajectory_matches_the_reference(sat, name):
         assert r.n_switches == counts[2]
 
 
-@pytest.mark.parametrize("name", sorted(REFERENCE))
+@pytest.mark.parametrize("name", [
+    pytest.param(n, marks=[m for m in _marks(n) if m is VARIANT_LOOP]) for n in sorted(REFERENCE)])
 @pytest.mark.parametrize("progress", [True, None])
 def test_chunked_runs_are_bit_identical_to_one_call(sat, name, progress):
     # progress=True runs in chunks (pauses for the bar), None in chunks or, for a short

@@ -28,6 +28,7 @@ from tests.reference import (
     state_scales,
     stored_tolerances,
 )
+from tests.tiers import VARIANT_LOOP, models
 from tethersim.analysis.classify import classify
 from tethersim.analysis.metrics import PitchMetrics
 from tethersim.experiments.sweep import SweepSpec
@@ -57,6 +58,7 @@ def test_dop853_with_switch_location_matches_the_reference():
     assert res.n_switches == ref["n_switches"]
 
 
+@VARIANT_LOOP
 def test_rk4_with_switch_location_matches_the_reference():
     res = _run(ts.load_preset("satII"), periods=1, steps=300, method="rk4",
                locate_switches=True, model="objective-damper")
@@ -65,7 +67,7 @@ def test_rk4_with_switch_location_matches_the_reference():
     assert (res.nfev, res.n_switches) == (ref["nfev"], ref["n_switches"])
 
 
-@pytest.mark.parametrize("model", ["derived", "printed", "exact-gravity", "objective-damper"])
+@pytest.mark.parametrize("model", models("derived", "printed", "exact-gravity", "objective-damper"))
 def test_every_model_matches_the_reference(model):
     res = _run(ts.load_preset("dumbsat"), periods=1, model=model, **stored_tolerances(model))
     ref = REF[f"dop853_dumbsat_{model}_1orbit"]

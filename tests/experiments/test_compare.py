@@ -13,6 +13,7 @@ import pytest
 from scipy.integrate import cumulative_trapezoid
 
 import tethersim as ts
+from tests.tiers import VARIANT_LOOP
 from tethersim.analysis.classify import CLASSES, classify
 from tethersim.analysis.metrics import pitch_metrics
 from tethersim.engine.result import SimResult
@@ -42,6 +43,7 @@ def _max_diff(results, a, b):
 
 # ------------------------------------------------------------- trajectories
 
+@VARIANT_LOOP
 def test_printed_equals_derived_without_tether2_damping(satI):
     """Erratum E1 (docs/errata.md) is the only difference and it is ∝ c2: with
     c2 = 0 (drag, springs and the tether-1 damper all on) the two trajectories
@@ -54,6 +56,7 @@ def test_printed_equals_derived_without_tether2_damping(satI):
     assert d[2] > 1e-3, d  # 8e-3 rad after one orbit
 
 
+@VARIANT_LOOP
 def test_printed_minus_derived_pitch_grows_as_double_integral_of_erratum_torque(satI):
     """Drag (CD = 0), springs (E = 0) and damper 1 off, c2 > 0, tether 2 taut
     (the balloon starts 29 m out, l20 = 6 m): θ̈_printed − θ̈_derived =
@@ -74,6 +77,7 @@ def test_printed_minus_derived_pitch_grows_as_double_integral_of_erratum_torque(
     assert np.sign(dth[-1]) == np.sign(-bare.omega)  # spurious torque −c2 a (a+b) ω at rest
 
 
+@VARIANT_LOOP
 def test_objective_damper_equals_derived_without_damping(satI):
     """c1 = c2 = 0: both damper laws vanish, the runs agree to integration
     tolerance (drag and springs on); with SatI's dampers they differ."""
@@ -85,6 +89,7 @@ def test_objective_damper_equals_derived_without_damping(satI):
     assert _max_diff(res, "derived", "objective-damper")[2] > 1e-3
 
 
+@VARIANT_LOOP
 def test_exact_gravity_differs_from_derived_by_order_length_over_r0(satI):
     """Note N2: the binomial expansion misses terms ~ offset/r0 of the Hill
     terms.  Over one orbit the pitch difference, relative to the libration
@@ -103,6 +108,7 @@ def test_exact_gravity_differs_from_derived_by_order_length_over_r0(satI):
     assert rows[1]["class"] == rows[0]["class"]  # a 1e-5 effect changes no outcome
 
 
+@VARIANT_LOOP
 def test_compare_runs_models_in_the_order_given_with_shared_settings(satI):
     # printed before derived: not the registry's order, and a fixed-step loop the CLI's
     # faithful tests compile anyway (each further model's loop is ~13 s of cold compile)

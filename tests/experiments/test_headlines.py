@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 import tethersim as ts
+from tests.tiers import VARIANT_LOOP
 from tethersim.analysis.metrics import wrap
 from tethersim.engine.linearise import rk4_max_step
 from tethersim.experiments import headlines as hl
@@ -179,6 +180,7 @@ def test_upright_and_upside_down_equilibria_are_mirror_images_without_rest_dampe
     assert a["eq0_stable"] and a["eqpi_stable"]
 
 
+@VARIANT_LOOP
 def test_objective_damper_equilibria_do_not_move_with_damping(sat):
     rows = hl.damping_scan(sat, factors=(1, 30), models=("objective-damper", "derived"),
                            periods=0.2, steps=40)

@@ -5,6 +5,7 @@ from __future__ import annotations
 import pytest
 
 import tethersim as ts
+from tests.tiers import VARIANT_LOOP
 from tethersim.analysis.metrics import min_run_orbits
 from tethersim.experiments import headlines as hl
 
@@ -59,6 +60,7 @@ def test_tune_refuses_runs_too_short_to_decide_before_running_anything():
         assert "\n" not in str(e.value) and f"{min_run_orbits():.4g}" in str(e.value)
 
 
+@VARIANT_LOOP
 def test_compare_of_short_runs_reports_undecided_variants():
     from tethersim.experiments.compare import compare, comparison_table, outcome_differences
     rows = comparison_table(compare(SAT, ("derived", "printed"), periods=0.1, progress=False))

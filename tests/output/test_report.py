@@ -9,6 +9,7 @@ import subprocess
 
 import pytest
 
+from tests.tiers import VARIANT_LOOP
 from tethersim.experiments.sweep.plan import CLASS_RTOL
 from tethersim.output.report import MAPS, build_report
 
@@ -18,11 +19,14 @@ def report(tmp_path_factory):
     out = tmp_path_factory.mktemp("report")
     # the roll section compiles the 3-D kernels (minutes on a cold cache), the real-tether
     # section the implicit loop of objective-damper (~15 s): each is built and checked in the
-    # slow tier, tests/output/test_roll_section.py and test_real_section.py
+    # slow tier, tests/output/test_roll_section.py and test_real_section.py; the headline
+    # cases run the loops of the printed and objective-damper models, so every test of the
+    # built page is slow-tier too (tests/tiers.py)
     return build_report(out, grid=3, periods=2.0, progress=False, log=lambda *a: None,
                         roll=False, real=False)
 
 
+@VARIANT_LOOP
 def test_report_links_only_figures_that_exist(report):
     text = report.read_text()
     srcs = re.findall(r'<img src="([^"]+)"', text)
@@ -31,6 +35,7 @@ def test_report_links_only_figures_that_exist(report):
         assert (report.parent / s).is_file(), s
 
 
+@VARIANT_LOOP
 def test_report_sets_thesis_statements_beside_ours_with_a_verdict(report):
     text = report.read_text()
     rows = re.findall(r'<tr class="(yes|no|partly)">', text)
@@ -40,6 +45,7 @@ def test_report_sets_thesis_statements_beside_ours_with_a_verdict(report):
     assert "no" in rows, "the report must say where we disagree with the thesis"
 
 
+@VARIANT_LOOP
 def test_report_map_table_shows_the_classes_its_stores_hold(report):
     """The numbers on the page are those of the stored sweeps, not written-in text."""
     from tethersim.experiments.sweep import open_dataset
@@ -53,6 +59,7 @@ def test_report_map_table_shows_the_classes_its_stores_hold(report):
         assert f"<td>{shown}</td>" in text, (store.name, shown)
 
 
+@VARIANT_LOOP
 def test_report_sweeps_are_stored_and_resumable(report):
     entries = sorted(p.name for p in (report.parent / "sweeps").iterdir())
     stores = [s for s in entries if s.endswith(".zarr")]
@@ -73,6 +80,7 @@ def _cells(table_html):
              for c in re.findall(r"<t[dh]>(.*?)</t[dh]>", r, re.S)] for r in rows]
 
 
+@VARIANT_LOOP
 def test_report_fact_rows_are_distinct_statements(report):
     text = report.read_text()
     facts = _cells(re.search(r"<table class='facts'>.*?</table>", text, re.S).group(0))[1:]
@@ -82,6 +90,7 @@ def test_report_fact_rows_are_distinct_statements(report):
     assert len(set(statements)) == len(statements), "two fact rows make the same statement"
 
 
+@VARIANT_LOOP
 def test_report_has_no_column_that_is_all_zero_or_empty(report):
     from tethersim.output.page import is_blank
     text = report.read_text()
@@ -98,6 +107,7 @@ def test_report_states_why_it_leaves_a_column_out():
     assert "<th>b</th>" not in out and "nothing to show" in out and "<th>a</th>" in out
 
 
+@VARIANT_LOOP
 def test_report_headline_results_are_a_table(report):
     text = report.read_text()
     heads = [t for t in re.findall(r"<table.*?</table>", text, re.S) if "<th>verdict</th>" in t]
@@ -144,6 +154,7 @@ def _measure(html_text, folder, width, profile):
     return int(m.group(1)), int(m.group(2)), int(m.group(3)), m.group(4)
 
 
+@VARIANT_LOOP
 @pytest.mark.parametrize("width", [1280, 800])
 def test_report_does_not_overflow_the_page_in_headless_chromium(report, tmp_path, width):
     window, scroll, client, wide = _measure(report.read_text(), report.parent, width, tmp_path)

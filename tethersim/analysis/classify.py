@@ -20,6 +20,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from tethersim.analysis.metrics import SETTLING_TOL, PitchMetrics, long_enough, min_run_orbits
 
 CLASSES = ("stable", "unsettled", "offset", "upside_down", "tumbling", "failed", "undecided")
@@ -76,3 +78,44 @@ def flag_attrs() -> dict:
     """CF attributes that label the class codes in a data set."""
     return {"flag_values": list(range(len(CLASSES))), "flag_meanings": " ".join(CLASSES),
             "long_name": "stability class (docs/metrics.md)"}
+
+
+def _codes(a, variable: str) -> np.ndarray:
+    if hasattr(a, "data_vars"):  # an xarray Dataset (xarray itself is not imported here)
+        a = a[variable]
+    return np.asarray(a)
+
+
+def agreement(predicted, simulated) -> dict:
+    """How often a predicted map matches a simulated one, point by point.
+
+    predicted, simulated: integer class codes of tethersim.analysis.classify, arrays of the
+    same shape (or a Dataset: its predicted_class / stability_class variable).
+    Negative codes are the sweep store's fill for points not computed.  They are
+    left out of the comparison and counted in n_missing.
+
+    Returns {"same_class": fraction of points with the same code, "same_stability":
+    fraction with the same stable / not-stable verdict (stable: code 0), "confusion":
+    counts, int array [predicted code, simulated code] of shape (6, 6), "classes":
+    CLASSES, "n": points compared, "n_missing": points left out}.
+    The fractions are NaN when no point is compared.
+    """
+    p = _codes(predicted, "predicted_class")
+    s = _codes(simulated, "stability_class")
+    if p.shape != s.shape:
+        raise ValueError(f"predicted has shape {p.shape}, simulated {s.shape}: must be equal")
+    for name, a in (("predicted", p), ("simulated", s)):
+        if a.size and not np.issubdtype(a.dtype, np.integer):
+            raise ValueError(f"{name}: class codes must be integers, got dtype {a.dtype}")
+        if a.size and a.max() >= len(CLASSES):
+            raise ValueError(f"{name}: code {a.max()} is not a class (0..{len(CLASSES) - 1})")
+    ok = (p >= 0) & (s >= 0)
+    pv, sv = p[ok].astype(np.intp), s[ok].astype(np.intp)
+    confusion = np.zeros((len(CLASSES), len(CLASSES)), dtype=np.int64)
+    np.add.at(confusion, (pv, sv), 1)
+    n = int(pv.size)
+    return {
+        "same_class": float(np.mean(pv == sv)) if n else math.nan,
+        "same_stability": float(np.mean((pv == STABLE) == (sv == STABLE))) if n else math.nan,
+        "confusion": confusion, "classes": CLASSES, "n": n, "n_missing": int(p.size - n),
+    }

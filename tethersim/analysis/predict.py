@@ -3,7 +3,8 @@
 The simulated class of a run (tethersim.analysis.classify, docs/metrics.md) is predicted from
 the equilibrium on the θ ≈ 0 branch and the eigenvalues of the generated Jacobian
 there (tethersim.analysis.equilibrium).  The lead overlays these maps on simulated sweeps
-(tethersim.experiments.sweep).  ``agreement`` scores a prediction against a sweep.
+(tethersim.experiments.sweep); tethersim.analysis.classify.agreement scores a prediction
+against a sweep.
 
 **Which equilibrium.** The balloon modes (≈ 0.08 rad/s) are about 20 times faster
 than the pitch libration (≈ 0.004 rad/s), so for the pitch the balloon sits at its
@@ -87,7 +88,6 @@ from scipy.optimize import brentq
 from tqdm.auto import tqdm
 
 from tethersim.analysis.classify import (
-    CLASSES,
     FAILED,
     OFFSET,
     SETTLING_REQUIREMENT,
@@ -366,46 +366,4 @@ def predicted_map(sat: Satellite, name_x: str, values_x, name_y: str, values_y,
                       attrs=attrs)
 
 
-# --- scoring a prediction against a sweep -------------------------------------------
-def _codes(a, variable: str) -> np.ndarray:
-    if isinstance(a, xr.Dataset):
-        a = a[variable]
-    return np.asarray(a)
-
-
-def agreement(predicted, simulated) -> dict:
-    """How often a predicted map matches a simulated one, point by point.
-
-    predicted, simulated: integer class codes of tethersim.analysis.classify, arrays of the
-    same shape (or a Dataset: its predicted_class / stability_class variable).
-    Negative codes are the sweep store's fill for points not computed.  They are
-    left out of the comparison and counted in n_missing.
-
-    Returns {"same_class": fraction of points with the same code, "same_stability":
-    fraction with the same stable / not-stable verdict (stable: code 0), "confusion":
-    counts, int array [predicted code, simulated code] of shape (6, 6), "classes":
-    tethersim.analysis.classify.CLASSES, "n": points compared, "n_missing": points left out}.
-    The fractions are NaN when no point is compared.
-    """
-    p = _codes(predicted, "predicted_class")
-    s = _codes(simulated, "stability_class")
-    if p.shape != s.shape:
-        raise ValueError(f"predicted has shape {p.shape}, simulated {s.shape}: must be equal")
-    for name, a in (("predicted", p), ("simulated", s)):
-        if a.size and not np.issubdtype(a.dtype, np.integer):
-            raise ValueError(f"{name}: class codes must be integers, got dtype {a.dtype}")
-        if a.size and a.max() >= len(CLASSES):
-            raise ValueError(f"{name}: code {a.max()} is not a class (0..{len(CLASSES) - 1})")
-    ok = (p >= 0) & (s >= 0)
-    pv, sv = p[ok].astype(np.intp), s[ok].astype(np.intp)
-    confusion = np.zeros((len(CLASSES), len(CLASSES)), dtype=np.int64)
-    np.add.at(confusion, (pv, sv), 1)
-    n = int(pv.size)
-    return {
-        "same_class": float(np.mean(pv == sv)) if n else math.nan,
-        "same_stability": float(np.mean((pv == STABLE) == (sv == STABLE))) if n else math.nan,
-        "confusion": confusion, "classes": CLASSES, "n": n, "n_missing": int(p.size - n),
-    }
-
-
-__all__ = ["agreement", "predicted_class", "predicted_map"]
+__all__ = ["predicted_class", "predicted_map"]

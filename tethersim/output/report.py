@@ -232,7 +232,8 @@ def section_moduli_only(page: Page) -> None:
 
 
 def section_maps(page: Page, grid: int, periods: float, workers, progress) -> list:
-    from tethersim.analysis.predict import agreement, predicted_map
+    from tethersim.analysis.classify import agreement
+    from tethersim.analysis.predict import predicted_map
     from tethersim.experiments.sweep import SweepSpec, run_sweep
     from tethersim.experiments.sweep.analysis import band_slope, class_counts, differences
     from tethersim.experiments.sweep.plan import CLASS_RTOL

@@ -1,0 +1,20 @@
+"""Why a test runs in the slow tier (make test-slow, which CI runs too).
+
+Every compiled time loop is specialised per model and scheme, and each costs 12-16 s to
+compile on a cold cache (mostly the model's generated rhs).  The fast tier runs the time
+loops of the default model (derived) and of the free-orbit twin only; the thesis
+variants' loops (printed, exact-gravity, objective-damper) are run by the tests marked
+``VARIANT_LOOP``, in the slow tier.  The variants themselves stay in the fast tier where
+no loop is compiled: their generated rhs against the sympy derivation and the hand-derived
+Eqs 3.48-3.50 (tests/derive), their Jacobians, forces and equilibria.
+"""
+from __future__ import annotations
+
+import pytest
+
+VARIANT_LOOP = pytest.mark.slow
+
+
+def models(*names):
+    """Parametrize values of model names: the variants' in the slow tier (VARIANT_LOOP)."""
+    return [n if n == "derived" else pytest.param(n, marks=VARIANT_LOOP) for n in names]
