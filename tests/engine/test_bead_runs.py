@@ -38,3 +38,70 @@ def test_a_bead_run_writes_bead_columns_and_the_tether_shape(tmp_path):
     for col in ("x_1_1", "y_1_2", "x_2_2", "tension_1_1", "tension_2_3"):
         assert col in header, col
     assert (out / "tether_shape.png").is_file()
+
+
+@pytest.mark.slow
+def test_a_bead_chain_run_conserves_the_jacobi_integral_to_1e_8_over_five_orbits():
+    """Two beads of 1/6 kg per line (0.5 kg lines), the thesis's springs, drag and
+    dampers off, from the preset's start (balloon 29 m behind): the compiled DOP853 loop
+    at rtol 1e-12 keeps the chain's Jacobi integral (tethersim.model.beads.jacobi, which
+    the loop never evaluates) to 1e-8 of |h| and of the spring energy exchanged, over five
+    orbits with segments going slack and taut (issue 21's energy target)."""
+    import numpy as np
+
+    import tethersim as ts
+    from tethersim.model import beads
+    n = 2
+    sat = ts.load_preset("satI").replace(CD=0.0, c1=0.0, c2=0.0, CDt=0.0, mt1=0.5, mt2=0.5)
+    r = ts.simulate(sat, 5.0, method="adaptive", rtol=1e-12, atol=1e-14, samples=5000,
+                    progress=False, beads=n)
+    assert r.status == "ok" and r.model == "derived+beads2" and r.n_switches > 0
+    k, p = beads.kernels("derived"), r.parameters
+    h = np.array([k.jacobi(y, p) for y in r.states])
+    T = np.empty((r.t.size, 2, n + 1))
+    for i, y in enumerate(r.states):
+        k.tensions(y, p, T[i])
+    stiffness = p[10:12, None] / (p[8:10, None] / (n + 1))  # E_j / l_s [N/m]
+    exchanged = np.ptp(np.sum(T**2 / (2 * stiffness), axis=(1, 2)))  # Σ ½ k (λ − l_s)²
+    taut = T > 0
+    assert np.any(taut.all(axis=0) != taut.any(axis=0))  # some segment went slack and taut
+    assert np.max(np.abs(h - h[0])) <= 1e-8 * min(exchanged, abs(h[0]))
+
+
+@pytest.mark.slow
+def test_a_chain_started_at_its_own_equilibrium_stays_there_for_an_orbit():
+    """SatI's thesis lines with 50 g each as two beads per line, drag and dampers on.  The
+    chain's own equilibrium (the root of its accelerations at rest, beads sagging off the
+    straight lines under their tidal load and the tension) is a fixed point of the
+    compiled DOP853 loop: from it, every coordinate stays within 1e-6 m (rates 1e-6 m/s)
+    over one orbit.  simulate's equilibrium start (the massless lines' equilibrium, beads
+    on the straight lines) is not one: its beads leave it by more than 1e-5 m."""
+    import numpy as np
+    from scipy.optimize import root
+
+    import tethersim as ts
+    from tethersim.engine.simulate import _run_adaptive
+    from tethersim.model import beads
+    from tethersim.model.inputs import parameter_vector
+    n, tol = 2, 1e-6
+    sat = ts.load_preset("satI").replace(mt1=0.05, mt2=0.05)
+    straight = ts.simulate(sat, 1.0, start="equilibrium", beads=n, progress=False)
+    assert straight.status == "ok" and straight.start == "equilibrium"
+    y0, run_sat = straight.states[0], straight.satellite
+    nq = y0.size // 2
+    p = parameter_vector(run_sat, straight.model)
+    k, d = beads.kernels("derived"), np.empty_like(y0)
+
+    def at_rest(q):
+        k.rhs(0.0, np.concatenate([q, np.zeros(nq)]), p, d)
+        return d[nq:].copy()
+    sol = root(at_rest, y0[:nq], method="hybr", options={"xtol": 1e-14})
+    assert np.max(np.abs(at_rest(sol.x))) < 1e-13  # m/s², against 3e-5 on the straight lines
+    y_eq = np.concatenate([sol.x, np.zeros(nq)])
+    # the loop simulate runs, started at the chain's equilibrium (engine/release.py's way)
+    held = _run_adaptive(run_sat, 1.0, 200, straight.model, 1e-10, 1e-12, True, False,
+                         start=y_eq)
+    assert held.status == "ok"
+    assert np.max(np.abs(held.states[:, :nq] - sol.x)) <= tol
+    assert np.max(np.abs(held.states[:, nq:])) <= tol
+    assert np.max(np.abs(straight.states[:, 3:nq] - y0[3:nq])) > 10 * tol

@@ -20,7 +20,7 @@ import pytest
 from numba import types
 
 from tethersim.engine.integrators import select
-from tethersim.model.registry import BY_NAME
+from tethersim.model.registry import BEAD_INDEX, BY_NAME
 
 ROOT = Path(__file__).parents[2]
 KERNEL = '''
@@ -83,6 +83,29 @@ def test_a_models_first_uncached_compile_is_announced_once_with_its_estimate(
     assert f"compiling numerical kernels once for the {name} model (~{rough} s)" in lines[0]
     # the 3-D estimates are the slow ones the issue timed (36-44 s), not the planar 20 s
     assert (rough > select.COLD_COMPILE_S[("planar", "circular")]) == (name != "derived")
+
+
+@pytest.mark.parametrize("name, words", [
+    ("derived+beads4", "the derived+beads model (4 beads per line; any N reuses these kernels)"),
+    ("objective-damper+beads0", "the objective-damper+beads model (0 beads per line; any N"),
+    (None, "the exact-gravity+beads model (any number of beads per line)"),
+])
+def test_a_chains_first_compile_names_its_base_and_the_runs_beads_not_beads0(
+        name, words, tmp_path, monkeypatch):
+    # one chain loop per base serves every N (the state size says N): the notice named
+    # every chain "derived+beads0", whatever N the run had
+    monkeypatch.setattr(numba.config, "CACHE_DIR", str(tmp_path / "key"))
+    monkeypatch.setattr(select, "_compiling", {})
+    monkeypatch.setattr(select, "_in_cache", lambda dispatcher, sig: False)
+    base = name.partition("+")[0] if name else "exact-gravity"
+    index = BEAD_INDEX[base]
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err):
+        select._compile(_FakeDispatcher(), _sig(index), index, name=name)
+    line = err.getvalue().strip()
+    assert f"compiling numerical kernels once for {words}" in line
+    assert "beads0 " not in line and f"(~{select.CHAIN_COLD_COMPILE_S} s)" in line
+    assert select._timing_path(index).name.endswith(f"-{base}+beads")  # one file per loop
 
 
 def test_a_series_kernels_first_compile_says_nothing_but_counts_for_an_announced_model(

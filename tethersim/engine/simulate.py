@@ -273,7 +273,7 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
     # this model's compiled loop, chosen (compiled or loaded) once, before the bar
     # starts: its rate, hence its ETA, then counts integration only
     loop = specialised(rk4_run, m, (air, 0, y, h, chunk, 1, p, pw, ev, locate, out_t, out_y,
-                                    row))
+                                    row), name=model)
     with _bar(periods, f"{sat.name} RK4", progress) as bar:
         try:
             while done < steps:
@@ -342,7 +342,7 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
     # this model's compiled loop, chosen (compiled or loaded) once, before the bar
     # starts: its rate, hence its ETA, then counts integration only
     loop = specialised(run_fn, m, (air, t, t_end, y, h, p, pw, ev, rtol, atol, locate,
-                                   out_t, out_y, i_out, max_steps, *kept, math.inf))
+                                   out_t, out_y, i_out, max_steps, *kept, math.inf), name=model)
     t0 = time.perf_counter()
     with _bar(periods, f"{sat.name} {name}", progress) as bar:
         try:

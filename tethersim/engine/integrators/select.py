@@ -30,6 +30,9 @@ from numba.core.dispatcher import Dispatcher
 # one planar loop; issue 19 timed 36-44 s for the first 3-D and 3-D free-orbit compiles)
 COLD_COMPILE_S = {("planar", "circular"): 20, ("planar", "free"): 30, ("3d", "circular"): 40,
                   ("3d", "free"): 45}
+# a bead chain's loop (tethersim.model.beads): 20-54 s cold on 2 cores, its base model's
+# generated kernels inlined once per segment and node
+CHAIN_COLD_COMPILE_S = 45
 ANNOUNCE_AFTER_S = 2.0  # compiles shorter than this are not worth recording
 _TIMING_FILE = "last-cold-compile-seconds"
 _lock = threading.Lock()
@@ -61,34 +64,55 @@ def _model(model: int):
     return record(model)
 
 
+def _loop_name(model: int) -> str:
+    """The name of loop ``model``'s kernels: the model's, or for a bead chain its base's
+    with the tag (``derived+beads``): one loop serves every N, read from the state size."""
+    from tethersim.model.registry import bead_index, bead_split
+    name = _model(model).name
+    return f"{bead_split(name)[0]}+beads" if bead_index(model) else name
+
+
 def _timing_path(model: int) -> Path:
     # one level above the source-keyed folder: survives a change of the key
-    return Path(numba.config.CACHE_DIR).parent / f"{_TIMING_FILE}-{_model(model).name}"
+    return Path(numba.config.CACHE_DIR).parent / f"{_TIMING_FILE}-{_loop_name(model)}"
 
 
 def estimate(model: int) -> float:
     """Seconds the model's first compile took last time here, else a rough figure."""
+    from tethersim.model.registry import bead_index
     try:
         return float(_timing_path(model).read_text())
     except (OSError, ValueError):
+        if bead_index(model):
+            return CHAIN_COLD_COMPILE_S
         m = _model(model)
         return COLD_COMPILE_S.get((m.geometry, m.orbit), max(COLD_COMPILE_S.values()))
 
 
-def announce(model: int) -> None:
-    """Say on stderr, once per model and process, that its kernels compile now."""
-    print(f"tethersim: compiling numerical kernels once for the {_model(model).name} model "
+def announce(model: int, name: str | None = None) -> None:
+    """Say on stderr, once per model and process, that its kernels compile now.
+
+    ``name`` is the run's model (a chain's says its N: ``derived+beads4``); a chain's
+    notice names the loop, which serves every N, and the run's N when given.
+    """
+    from tethersim.model.registry import bead_index, bead_split
+    what = f"the {_loop_name(model)} model"
+    if bead_index(model):
+        chain = bead_split(name) if name else None
+        what += (f" ({chain[1]} beads per line; any N reuses these kernels)" if chain
+                 else " (any number of beads per line)")
+    print(f"tethersim: compiling numerical kernels once for {what} "
           f"(~{estimate(model):.0f} s); later runs load them from "
           f"{os.path.dirname(numba.config.CACHE_DIR)}", file=sys.stderr, flush=True)
 
 
-def _compile(dispatcher, sig, model: int, loud: bool = True) -> None:
+def _compile(dispatcher, sig, model: int, loud: bool = True, name: str | None = None) -> None:
     with _lock:
         timed = model in _compiling
         if loud and not timed and not _in_cache(dispatcher, sig):
             _compiling[model] = 0.0
             timed = True
-            announce(model)
+            announce(model, name)
     t0 = time.perf_counter()
     dispatcher.compile(sig)
     dt = time.perf_counter() - t0
@@ -103,7 +127,8 @@ def _compile(dispatcher, sig, model: int, loud: bool = True) -> None:
                 pass  # the estimate is a courtesy, a read-only cache folder is fine
 
 
-def specialised(dispatcher, model: int, args: tuple, loud: bool = True):
+def specialised(dispatcher, model: int, args: tuple, loud: bool = True,
+                name: str | None = None):
     """Compiled entry point of ``dispatcher`` for a literal model index.
 
     Parameters
@@ -119,6 +144,8 @@ def specialised(dispatcher, model: int, args: tuple, loud: bool = True):
         Announce a first compile of this model (the run loops, tens of seconds);
         False for the short series kernels, which only add to an announced
         model's timing.
+    name : str, optional
+        The run's model name, for the notice (a bead chain's carries its N).
 
     Returns
     -------
@@ -134,7 +161,7 @@ def specialised(dispatcher, model: int, args: tuple, loud: bool = True):
     if entry is None:
         sig = (types.literal(int(model)),) + tuple(dispatcher.typeof_pyval(a) for a in args)
         if sig not in dispatcher.overloads:
-            _compile(dispatcher, sig, int(model), loud)
+            _compile(dispatcher, sig, int(model), loud, name)
         entry = _entries[key] = dispatcher.get_overload(sig)
     return entry
 
