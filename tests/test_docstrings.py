@@ -20,6 +20,8 @@ PUBLIC = sorted(n for n in tethersim.__all__
 RECORDS = {"Satellite", "SimResult", "Outcome", "Equilibrium", "SweepSpec", "Plan"}
 # exceptions and warnings are documented by a sentence
 PLAIN = {"SatelliteError", "RK4StepWarning"}
+# examples that compile a kernel no fast test needs (tests/tiers.py): the slow tier runs them
+SLOW_EXAMPLES = {"find_equilibrium"}  # its 3-D example: the 3-D finite-difference Jacobian
 
 
 def _sections(doc: str) -> set:
@@ -47,7 +49,8 @@ def test_public_api_has_numpydoc_sections(name):
     assert "Examples" in found, (name, found)
 
 
-@pytest.mark.parametrize("name", [n for n in PUBLIC if n not in PLAIN])
+@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.slow) if n in SLOW_EXAMPLES
+                                  else n for n in PUBLIC if n not in PLAIN])
 def test_public_api_examples_run(name):
     obj = getattr(tethersim, name)
     finder = doctest.DocTestFinder(recurse=False)

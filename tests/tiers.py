@@ -7,6 +7,11 @@ variants' loops (printed, exact-gravity, objective-damper) are run by the tests 
 ``VARIANT_LOOP``, in the slow tier.  The variants themselves stay in the fast tier where
 no loop is compiled: their generated rhs against the sympy derivation and the hand-derived
 Eqs 3.48-3.50 (tests/derive), their Jacobians, forces and equilibria.
+
+The same rule for the other kernels: a test that would be the only fast test to compile a
+kernel (the 3-D finite-difference Jacobian: tests/derive/test_3d_planar.py, the
+find_equilibrium example of tests/test_docstrings.py) runs in the slow tier, and a test
+of printed formulas calls the generated function uncompiled (``.py_func``).
 """
 from __future__ import annotations
 

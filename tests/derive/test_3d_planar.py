@@ -108,9 +108,10 @@ def test_family_forces_in_plane_equal_planar_and_out_of_plane_are_zero(sample, p
     assert worst <= REL_TOL, worst
 
 
-# each 3-D model's difference loop compiles for seconds cold: the variants' in the slow tier
-@pytest.mark.parametrize("planar, three_d", [PAIRS[0], *(pytest.param(*pair, marks=pytest.mark.slow)
-                                                        for pair in PAIRS[1:])])
+# each 3-D model's finite-difference Jacobian compiles for 15-20 s cold: the slow tier
+# (tests/tiers.py); the fast tier checks the 3-D rhs and forces in the plane above
+@pytest.mark.slow
+@pytest.mark.parametrize("planar, three_d", PAIRS)
 def test_jacobian_in_plane_block_equals_planar_and_planar_states_stay_planar(sample, planar, three_d):
     """∂(out-of-plane rates and accelerations)/∂(in-plane state) = 0: the plane is invariant."""
     worst = 0.0
