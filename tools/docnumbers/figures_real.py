@@ -14,6 +14,7 @@ from functools import cache
 import numpy as np
 
 from tethersim.analysis.equilibrium import find_equilibrium
+from tethersim.analysis.roll import roll_case, roll_drag_rate
 from tethersim.analysis.tethers import tether_loads
 from tethersim.engine.simulate import simulate
 from tethersim.engine.start import equilibrium_satellite
@@ -212,6 +213,35 @@ for _i, (_label, (_config, _density)) in enumerate(RUN_ROWS.items()):
         SLOW.append(Figure(D, (_R, f"| {_label} | ") + (" | ",) * _j, _key, slow=True,
                            absolute=_col == "final"))
 FIGURES += SLOW
+
+# roll with real lines: the out-of-plane modes at the planar equilibrium in the 3-D twin of
+# the objective-damper model (tethersim.analysis.roll; the 3-D finite-difference Jacobian
+# compiles for ~20 s cold, so these are slow-tier figures)
+ROLL_MODEL = "3d-objective-damper"
+_O = "| lines, 3-D objective-damper | roll ω [rad/s] |"
+ROLL_ROWS = {"thesis tethers": ("thesis", "balloon"),
+             "Dyneema 1 mm, 6 m lines": ("6 m", "balloon"),
+             "Dyneema 1 mm, 30.83 / 28.92 m lines": ("stretched", "balloon"),
+             "boom alone (no balloon)": ("stretched", "boom alone")}
+
+
+@cache
+def roll(config: str, case: str):
+    """:func:`tethersim.analysis.roll.roll_case` of ``config`` in ROLL_MODEL."""
+    return roll_case(real(config), case, ROLL_MODEL)
+
+
+ROLL_COLUMNS = (lambda rc: rc.mode("roll").frequency,
+                lambda rc: rc.mode("roll").decay_time / 3600,
+                lambda rc: rc.mode("balloon sideways").frequency,
+                lambda rc: rc.mode("balloon sideways").decay_time / 3600)
+for _i, (_label, _args) in enumerate(ROLL_ROWS.items()):
+    for _j, _col in enumerate(ROLL_COLUMNS[:2] if _args[1] == "boom alone" else ROLL_COLUMNS):
+        _key = f"real_roll_{_i}_{_j}"
+        QUANTITIES[_key] = (lambda col, a: lambda: col(roll(*a)))(_col, _args)
+        FIGURES.append(Figure(D, (_O, f"| {_label} | ") + (" | ",) * _j, _key, slow=True))
+QUANTITIES["real_roll_drag_h"] = lambda: 1 / roll_drag_rate(real("stretched")) / 3600
+FIGURES.append(Figure(D, ("the end bodies' own drag, D/(2 I_roll) = 1/(",), "real_roll_drag_h"))
 
 T = "docs/tethers.md"
 
