@@ -11,13 +11,18 @@ Eqs 3.48-3.50 (tests/derive), their Jacobians, forces and equilibria.
 The same rule for the other kernels: a test that would be the only fast test to compile a
 kernel (the 3-D finite-difference Jacobian: tests/derive/test_3d_planar.py, the
 find_equilibrium example of tests/test_docstrings.py) runs in the slow tier, and a test
-of printed formulas calls the generated function uncompiled (``.py_func``).
+of printed formulas calls the generated function uncompiled (``.py_func``).  The faithful
+sweep's RK4 lane block (``RK4_LANES``) and the variants' compiled finite-difference
+Jacobians follow it too; the adaptive sweep's lane block, the sweeps' default, stays fast.
 """
 from __future__ import annotations
 
 import pytest
 
 VARIANT_LOOP = pytest.mark.slow
+# the faithful (RK4) sweep block on SIMD lanes (experiments/sweep/lanes.py): 21 s of compile
+# for the three tests that run it, its equality with the scalar block and with simulate()
+RK4_LANES = pytest.mark.slow
 
 
 def models(*names):

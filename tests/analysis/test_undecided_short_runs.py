@@ -8,6 +8,7 @@ import math
 import pytest
 
 import tethersim as ts
+from tests.tiers import RK4_LANES
 from tethersim.analysis.classify import (
     CLASSES,
     FAILED,
@@ -73,7 +74,7 @@ def test_the_run_summary_says_how_long_to_run():
     assert s["run at least [orbits] to decide the class"] == min_run_orbits()
 
 
-@pytest.mark.parametrize("method", ["adaptive", "faithful"])
+@pytest.mark.parametrize("method", ["adaptive", pytest.param("faithful", marks=RK4_LANES)])
 def test_sweep_blocks_and_single_runs_draw_the_same_line(method):
     from tethersim.experiments.sweep import SweepSpec
     from tethersim.experiments.sweep.batch import run_block

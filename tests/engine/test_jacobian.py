@@ -11,6 +11,7 @@ import pytest
 
 import tethersim as ts
 from tests.messages import one_line
+from tests.tiers import models
 from tethersim.engine.integrators.select import call
 from tethersim.engine.jacobian import _jacobian, analytic, central_differences, jacobian
 from tethersim.model.inputs import initial_model_state, parameter_vector
@@ -24,9 +25,11 @@ def _states(preset, model):
 
 
 @pytest.mark.parametrize("preset", ("satI", "satII"))
-@pytest.mark.parametrize("model", THESIS_VARIANTS)
+@pytest.mark.parametrize("model", models(*THESIS_VARIANTS))
 def test_central_differences_equal_the_generated_jacobian(preset, model):
-    """Within 1e-9 of the largest entry (the documented error is ~ε^(2/3) ≈ 4e-11 of it)."""
+    """Within 1e-9 of the largest entry (the documented error is ~ε^(2/3) ≈ 4e-11 of it).
+    The variants' compiled differences (4 s of compile each) run in the slow tier
+    (tests/tiers.py)."""
     sat, states = _states(preset, model)
     m = BY_NAME[model].index
     p = parameter_vector(sat, model)

@@ -13,6 +13,7 @@ from collections import Counter
 import numpy as np
 import pytest
 
+from tests.tiers import RK4_LANES
 from tethersim import load_preset
 from tethersim.analysis.classify import CLASSES
 from tethersim.experiments.sweep import SweepSpec, run_point
@@ -32,20 +33,27 @@ def _bits(rec):
     return {k: repr(float(v)) for k, v in rec.items()}
 
 
-def _specs():
+def _specs(methods=("faithful", "adaptive")):
     for theta0 in (0.0, math.pi / 6, 3.0):  # upright, the preset's start, nearly inverted
         base = SAT.replace(initial=(SAT.initial[0], SAT.initial[1], theta0, 0.0, 0.0, 0.0))
         for name, axes in GRIDS.items():
             method = "faithful" if name == "faithful" else "adaptive"
+            if method not in methods:
+                continue
             # 3 orbits: long enough to decide a class (metrics.long_enough)
             yield SweepSpec(base, axes, periods=3.0, method=method)
-    # and one too short to decide: undecided points, equal on both paths too
-    yield SweepSpec(SAT, GRIDS["adaptive"], periods=1.0)
+    if "adaptive" in methods:  # and one too short to decide: undecided points, equal too
+        yield SweepSpec(SAT, GRIDS["adaptive"], periods=1.0)
 
 
-@pytest.fixture(scope="module")
-def blocks():
-    return [(spec, run_block(spec, list(range(spec.size)))) for spec in _specs()]
+def _blocks(methods):
+    return [(spec, run_block(spec, list(range(spec.size)))) for spec in _specs(methods)]
+
+
+# the faithful blocks run on the RK4 lanes, compiled for them alone: slow tier (tests/tiers.py)
+@pytest.fixture(scope="module", params=["adaptive", pytest.param("faithful", marks=RK4_LANES)])
+def blocks(request):
+    return _blocks((request.param,))
 
 
 def test_block_records_equal_the_per_point_records_bit_for_bit(blocks):
@@ -55,15 +63,17 @@ def test_block_records_equal_the_per_point_records_bit_for_bit(blocks):
             assert _bits(rec) == _bits(run_point(spec, k)), (spec.method, spec.values_at(k))
 
 
-def test_the_grids_reach_every_class_and_failure(blocks):
-    seen = Counter((rec["stability_class"], rec["status"]) for _, recs in blocks for _, rec in recs)
+@RK4_LANES
+def test_the_grids_reach_every_class_and_failure():
+    seen = Counter((rec["stability_class"], rec["status"]) for _, recs in _blocks(("faithful",
+                   "adaptive")) for _, rec in recs)
     assert {c for c, _ in seen} == set(range(len(CLASSES)))
     # left the domain (an unstable RK4 step), stored as the engine's status
     assert (CLASSES.index("failed"), STATUS["left-domain"]) in seen
 
 
 def test_a_record_does_not_depend_on_its_block(blocks):
-    spec, recs = blocks[1]
+    spec, recs = blocks[0]
     ks = list(range(spec.size))
     rng = np.random.default_rng(3)
     for size in (1, 2, 5):

@@ -15,6 +15,7 @@ from collections import Counter
 
 import pytest
 
+from tests.tiers import RK4_LANES
 from tethersim import load_preset
 from tethersim.engine.domain import reach
 from tethersim.engine.integrators.lanes import lane_count
@@ -22,6 +23,7 @@ from tethersim.experiments.sweep import Plan, batch
 from tethersim.experiments.sweep.point import STATUS
 
 SAT = load_preset("satI")
+pytestmark = RK4_LANES  # the RK4 lane block compiles for these tests only (tests/tiers.py)
 
 
 def _sats():
