@@ -125,7 +125,8 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
         the run started, ``start`` says which.
     beads : int, optional
         Each tether a chain of 0-64 beads (``sat.beads``; line masses ``sat.mt1``,
-        ``sat.mt2``; docs/beads.md), started on the straight lines of the start above.
+        ``sat.mt2``; docs/beads.md): a given start puts the beads on the straight
+        lines, an equilibrium start at the chain's own equilibrium (engine/start.py).
 
     Returns
     -------
@@ -169,12 +170,12 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
     check_scheme(sat, method)
     # the run's own satellite (its initial state is where the run starts, its beads the
     # chain's; orbit = "free": the model's free twin) and model (engine/start.py)
-    sat, start, model = start_run(sat, model_for_orbit(model, sat.orbit), start, beads)
+    sat, start, model, y0 = start_run(sat, model_for_orbit(model, sat.orbit), start, beads)
     if method == "rk4":
         steps = check_positive("steps", steps if steps is not None
                                 else max(1, round(STEPS_PER_PERIOD * periods)), integer=True)
         locate = False if locate_switches is None else bool(locate_switches)
-        run = _run_rk4(sat, periods, steps, model, locate, progress, step_warning)
+        run = _run_rk4(sat, periods, steps, model, locate, progress, step_warning, y0)
     else:
         rtol = check_range("rtol", rtol, RTOL_RANGE)
         atol = check_range("atol", atol, ATOL_RANGE)
@@ -190,7 +191,7 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
         # every refine-th sample of it, exactly the grid asked for (docs/metrics.md)
         refine = max(1, math.ceil(METRIC_SAMPLES_PER_PERIOD * periods / n_out))
         run = _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress, refine,
-                            scheme=method)
+                            start=y0, scheme=method)
     run = replace(run, start=start) if start != "given" else run
     return estimate_error(run) if check else run
 
@@ -225,13 +226,14 @@ def estimate_error(run: SimResult) -> SimResult:
     """
     if run.status != "ok" or run.periods is None:
         return run
+    y0 = run.states[0]  # where the run started (a bead chain's own equilibrium included)
     if run.method == "rk4":
         fine = _run_rk4(run.satellite, run.periods, 2 * run.n_accepted, run.model,
-                        run.locate_switches, False, False)
+                        run.locate_switches, False, False, y0)
     else:
         fine = _run_adaptive(run.satellite, run.periods, run.t.size - 1, run.model,
                              run.rtol / 100, max(run.atol / 100, atol_floor(run.satellite)),
-                             run.locate_switches, False, scheme=run.method)
+                             run.locate_switches, False, start=y0, scheme=run.method)
     return _with_error(run, fine)
 
 
@@ -249,7 +251,7 @@ def _bar(total, desc, progress):  # tqdm looked up here: tests replace it
     return progress_bar(total, desc, progress, tqdm)
 
 
-def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
+def _run_rk4(sat, periods, steps, model, locate, progress, warn, start) -> SimResult:
     m, air = _kernel_args(sat, model, periods * sat.period)
     p = parameter_vector(sat, model)
     pw = p.copy()
@@ -261,7 +263,7 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn) -> SimResult:
             f"numerically. "
             f"Use more steps or method='adaptive'."), stacklevel=3)
     ev = event_parameters(sat, model)
-    y = initial_model_state(sat, model)
+    y = np.array(start, dtype=float)
     out_t = np.empty(steps + 1)
     out_y = np.empty((steps + 1, y.size))
     out_t[0], out_y[0] = 0.0, y
@@ -320,7 +322,7 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
     m, air = _kernel_args(sat, model, t_end)
     p = parameter_vector(sat, model)
     pw = p.copy()
-    # start: an integrated state to continue from (engine/release.py), else the satellite's
+    # start: the run's start state (start_run) or one to continue from (release.py)
     y = (initial_model_state(sat, model) if start is None
          else np.array(start, dtype=float))
     out_t = refined_grid(t_end, n_out, refine)

@@ -35,6 +35,8 @@ from tethersim.model.satellite import Satellite
 
 START_MODES = ("auto", "given", "equilibrium")
 REAL_LINE_ATOL = 1e-10  # the smallest atol a real line's run meets near rest (atol_floor)
+NEWTON_ITERATIONS = 20  # chain_at_rest's most (no better in 3 ends it: 4-12 on 1-64 beads)
+BEAD_LINE_ATOL = 1e-9  # the same with beads on the lines (docs/beads.md, "Starts")
 HINT = "start at the satellite's equilibrium: start='equilibrium' (--start equilibrium)"
 
 
@@ -98,18 +100,116 @@ def start_satellite(sat: Satellite, model: str, start: str = "auto") -> tuple:
 
 
 def start_run(sat: Satellite, model: str, start: str = "auto", beads=None) -> tuple:
-    """(satellite, start used, model) of a run: :func:`start_satellite` for the model the
-    satellite's lines hang from, then with ``beads`` (or ``sat.beads``) the chain over it,
-    tethersim.model.beads (its beads start on the straight lines: inputs.initial_model_state).
+    """(satellite, start used, model, start state) of a run: :func:`start_satellite` for
+    the model the satellite's lines hang from, then with ``beads`` (or ``sat.beads``) the
+    chain over it, tethersim.model.beads: a given start puts its beads on the straight
+    lines (inputs.initial_model_state), an equilibrium start at the chain's own
+    equilibrium (:func:`chain_at_rest`), whose boom and balloon coordinates then become
+    the satellite's ``initial``.
     """
     from tethersim.model.bead_layout import check_beads
+    from tethersim.model.inputs import initial_model_state
     from tethersim.model.registry import bead_model_name
     if beads is not None:
         sat = sat.replace(beads=check_beads(beads))
     elif sat.beads is not None:
         check_beads(sat.beads)
     sat, start = start_satellite(sat, model, start)
-    return sat, start, model if sat.beads is None else bead_model_name(model, sat.beads)
+    if sat.beads is None:
+        return sat, start, model, initial_model_state(sat, model)
+    model = bead_model_name(model, sat.beads)
+    y = initial_model_state(sat, model)
+    if start == "equilibrium" and sat.beads > 0:
+        y = chain_at_rest(y, model, sat)
+        sat = sat.replace(initial=(*(float(v) for v in y[:3]), 0.0, 0.0, 0.0),
+                          source=sat.source)
+    return sat, start, model, y
+
+
+def chain_at_rest(y, model: str, sat: Satellite) -> np.ndarray:
+    """The bead chain's equilibrium near state ``y``: every coordinate (boom, balloon,
+    beads) where the chain's accelerations vanish at rest in L, rates zero.
+
+    The massless lines' equilibrium with its beads on the straight lines is not one: the
+    beads sag under their tidal load and the tension, and a stiff line started there rings
+    at its transverse modes.  Newton's method on the accelerations, the beads moved along
+    and across their line: a fibre segment is taut by ~1e-8 m, so a derivative taken with
+    one step for all (scipy's ``root``) crosses its slack kink along the line or drowns in
+    rounding across it.  Here central differences step 1000 x the rounding of a position
+    along the line (and of the body coordinates), sqrt(ε) x the largest offset across it.
+    Accepted when the largest acceleration left is at most 100 x the rounding level of the
+    forces, ε x the largest offset x the stiffest segment's EA / (l_s m_b) (or ε r0 ω²):
+    on a stiff line that level, 1e-7-1e-5 m/s², is all any solver can reach.  Not
+    accepted: ``y`` (the straight chain), with a one-line warning.
+    """
+    from tethersim.model import beads
+    from tethersim.model.bead_layout import NB
+    from tethersim.model.inputs import parameter_vector
+    from tethersim.model.registry import bead_split
+    base, n = bead_split(model)
+    p = parameter_vector(sat, model)
+    rhs, nq = beads.kernels(base).rhs, y.size // 2
+    rest, d, q0 = np.zeros(nq), np.empty_like(y), np.array(y[:nq], dtype=float)
+
+    def acceleration(q):
+        rhs(0.0, np.concatenate([q, rest]), p, d)
+        return d[nq:].copy()
+    # the coordinates Newton moves: δx, δy, θ, then per bead along / across its line
+    v = dict(zip(get_model(base).parameters, p))  # SI: E1, E2 are EA [N]
+    size, eps = float(np.max(np.abs(q0))), np.finfo(float).eps
+    along = 1e3 * eps * size
+    basis, steps = np.eye(nq), np.array([along, along, along / max(v["a"], v["b"])]
+                                        + [along, np.sqrt(eps) * size] * (2 * n))
+    stiffest = 0.0
+    for j, (E, l0, mt) in enumerate(((v["E1"], v["l10"], p[NB]), (v["E2"], v["l20"], p[NB + 1]))):
+        stiffest = max(stiffest, E * (n + 1) ** 2 / (l0 * mt))  # EA / (l_s m_b) [1/s²]
+        first = q0[3 + 2 * j * n: 5 + 2 * j * n]
+        e = (q0[:2] - first) / np.linalg.norm(q0[:2] - first)  # the line's direction
+        for k in range(n):
+            i = 3 + 2 * (j * n + k)
+            basis[i:i + 2, i:i + 2] = [[e[0], -e[1]], [e[1], e[0]]]
+    level = eps * max(size * stiffest, v["r0"] * v["omega"] ** 2)
+    def local(x):  # the accelerations in the coordinates Newton moves
+        return basis.T @ acceleration(q0 + basis @ x)
+    # every coordinate, then across the lines alone: along a stiff line the rows are
+    # rounding noise that can hide (in the largest row) a sag not yet balanced
+    x = _newton(local, np.zeros(nq), steps, np.arange(nq))
+    x = _newton(local, x, steps, np.arange(4, nq, 2))
+    left = float(np.max(np.abs(local(x))))
+    if left <= 100 * level:
+        return np.concatenate([q0 + basis @ x, rest])
+    import warnings
+    warnings.warn(f"start = 'equilibrium': the {n}-bead chain's equilibrium was not found "
+                  f"(acceleration {left:.3g} m/s² left, {100 * level:.3g} allowed): its "
+                  f"beads start on the straight lines", RuntimeWarning, stacklevel=4)
+    return y
+
+
+def _newton(f, x, steps, moved) -> np.ndarray:
+    """Newton's method on the rows ``moved`` of f(x) = 0, moving those coordinates of x,
+    central differences of ``steps``; the best x seen (largest of those rows) when no
+    better in 3 iterations or after :data:`NEWTON_ITERATIONS`."""
+    x = x.copy()
+    r = f(x)[moved]
+    best, stalled = (float(np.max(np.abs(r))), x.copy()), 0
+    J = np.empty((moved.size, moved.size))
+    for _ in range(NEWTON_ITERATIONS):
+        if stalled == 3 or best[0] == 0.0:
+            break
+        for c, i in enumerate(moved):
+            dx = np.zeros_like(x)
+            dx[i] = steps[i]
+            J[:, c] = (f(x + dx)[moved] - f(x - dx)[moved]) / (2 * steps[i])
+        try:
+            x[moved] -= np.linalg.solve(J, r)
+        except np.linalg.LinAlgError:
+            break
+        r = f(x)[moved]
+        if np.all(np.isfinite(r)) and np.max(np.abs(r)) < best[0]:
+            best, stalled = (float(np.max(np.abs(r))), x.copy()), 0
+        else:
+            stalled += 1
+    return best[1]
 
 
 def equilibrium_satellite(sat: Satellite, model: str) -> Satellite:
@@ -192,16 +292,19 @@ def check_given_start(sat: Satellite, model: str) -> None:
 
 
 def atol_floor(sat: Satellite) -> float:
-    """The smallest atol a run of ``sat`` can meet near rest: ``REAL_LINE_ATOL`` for real
-    lines (their force is known to its rounding level only, EA/l0 x λ x 1e-16, ~1e-11
-    m/s² on the balloon: more than a smaller atol allows a step), else 0."""
+    """The smallest atol a run of ``sat`` can meet near rest: for real lines their force
+    is known to its rounding level only (EA/l0 x λ x 1e-16): ~1e-11 m/s² on the balloon,
+    ``REAL_LINE_ATOL``; ~1e-8 m/s² on sub-gram beads, ``BEAD_LINE_ATOL``; else 0."""
     from tethersim.model.materials import real_tethers
-    return REAL_LINE_ATOL if real_tethers(sat) else 0.0
+    if not real_tethers(sat):
+        return 0.0
+    return BEAD_LINE_ATOL if sat.beads else REAL_LINE_ATOL
 
 
 def atol_hint(sat: Satellite, atol: float) -> str:
     """Why a run may exhaust its steps (appended to "too many steps"), or ""."""
-    if atol >= atol_floor(sat):
+    if atol >= (floor := atol_floor(sat)):
         return ""
-    return (f"; real lines near rest need atol >= {REAL_LINE_ATOL:g}, their force's rounding "
+    lines = "real lines with beads" if sat.beads else "real lines"
+    return (f"; {lines} near rest need atol >= {floor:g}, their force's rounding "
             f"level (atol=..., --atol; docs/tethers.md)")
