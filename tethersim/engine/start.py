@@ -35,8 +35,8 @@ from tethersim.model.satellite import Satellite
 
 START_MODES = ("auto", "given", "equilibrium")
 REAL_LINE_ATOL = 1e-10  # the smallest atol a real line's run meets near rest (atol_floor)
-NEWTON_ITERATIONS = 20  # chain_at_rest's most (no better in 3 ends it: 4-12 on 1-64 beads)
-BEAD_LINE_ATOL = 1e-9  # the same with beads on the lines (docs/beads.md, "Starts")
+NEWTON_ITERATIONS = 20  # chain_at_rest's most per stage (3 without progress end it sooner)
+BEAD_LINE_ATOL = 1e-9  # the same with beads on the lines (docs/beads.md, "Running a chain")
 HINT = "start at the satellite's equilibrium: start='equilibrium' (--start equilibrium)"
 
 
@@ -169,6 +169,7 @@ def chain_at_rest(y, model: str, sat: Satellite) -> np.ndarray:
             i = 3 + 2 * (j * n + k)
             basis[i:i + 2, i:i + 2] = [[e[0], -e[1]], [e[1], e[0]]]
     level = eps * max(size * stiffest, v["r0"] * v["omega"] ** 2)
+
     def local(x):  # the accelerations in the coordinates Newton moves
         return basis.T @ acceleration(q0 + basis @ x)
     # every coordinate, then across the lines alone: along a stiff line the rows are
