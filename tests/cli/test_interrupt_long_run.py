@@ -20,6 +20,7 @@ from pathlib import Path
 
 import pytest
 
+from tests.terminal import sigint_as_in_a_terminal
 from tethersim import load_preset, simulate
 from tethersim.output.files import TEMPORARY_MARK
 
@@ -33,7 +34,8 @@ def _interrupt(argv, out: Path, started) -> tuple:
     env = {**os.environ, "PYTHONPATH": str(ROOT)}
     proc = subprocess.Popen([sys.executable, "-m", "tethersim", "run", "satI", *argv,
                              "--no-check", "--out", str(out)], cwd=ROOT, env=env,
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=sigint_as_in_a_terminal)
     err = []
     reader = threading.Thread(target=lambda: err.extend(iter(lambda: proc.stderr.read(1), "")))
     reader.start()
