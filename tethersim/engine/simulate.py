@@ -125,8 +125,8 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
         the run started, ``start`` says which.
     beads : int, optional
         Each tether a chain of 0-64 beads (``sat.beads``; line masses ``sat.mt1``,
-        ``sat.mt2``; docs/beads.md): a given start puts the beads on the straight
-        lines, an equilibrium start at the chain's own equilibrium (engine/start.py).
+        ``sat.mt2``; docs/beads.md): on the straight lines of a given start, at the
+        chain's own equilibrium for an equilibrium start (engine/start.py).
 
     Returns
     -------
@@ -168,8 +168,8 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
         raise ValueError(f"method = {method!r}: allowed values {', '.join(METHODS)}")
     check_start_mode(start)
     check_scheme(sat, method)
-    # the run's own satellite (its initial state is where the run starts, its beads the
-    # chain's; orbit = "free": the model's free twin) and model (engine/start.py)
+    # the run's own satellite (its beads the chain's; orbit = "free": the model's free
+    # twin), start mode, model and start state (engine/start.py)
     sat, start, model, y0 = start_run(sat, model_for_orbit(model, sat.orbit), start, beads)
     if method == "rk4":
         steps = check_positive("steps", steps if steps is not None
@@ -226,7 +226,7 @@ def estimate_error(run: SimResult) -> SimResult:
     """
     if run.status != "ok" or run.periods is None:
         return run
-    y0 = run.states[0]  # where the run started (a bead chain's own equilibrium included)
+    y0 = run.states[0]  # where the run started (a bead chain: at its own equilibrium)
     if run.method == "rk4":
         fine = _run_rk4(run.satellite, run.periods, 2 * run.n_accepted, run.model,
                         run.locate_switches, False, False, y0)
@@ -260,8 +260,7 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn, start) -> SimRe
         warnings.warn(RK4StepWarning(
             f"RK4 step {h:.4g} s is unstable for the linearised system at the initial state "
             f"(spurious amplification per step {amp:.4g} > 1): a tether oscillation will grow "
-            f"numerically. "
-            f"Use more steps or method='adaptive'."), stacklevel=3)
+            f"numerically. Use more steps or method='adaptive'."), stacklevel=3)
     ev = event_parameters(sat, model)
     y = np.array(start, dtype=float)
     out_t = np.empty(steps + 1)
@@ -323,8 +322,7 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
     p = parameter_vector(sat, model)
     pw = p.copy()
     # start: the run's start state (start_run) or one to continue from (release.py)
-    y = (initial_model_state(sat, model) if start is None
-         else np.array(start, dtype=float))
+    y = initial_model_state(sat, model) if start is None else np.array(start, dtype=float)
     out_t = refined_grid(t_end, n_out, refine)
     out_y = np.full((out_t.size, y.size), np.nan)
     out_y[0] = y
