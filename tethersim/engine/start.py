@@ -157,17 +157,21 @@ def chain_at_rest(y, model: str, sat: Satellite) -> np.ndarray:
     # the coordinates Newton moves: δx, δy, θ, then per bead along / across its line
     v = dict(zip(get_model(base).parameters, p))  # SI: E1, E2 are EA [N]
     size, eps = float(np.max(np.abs(q0))), np.finfo(float).eps
-    along = 1e3 * eps * size
-    basis, steps = np.eye(nq), np.array([along, along, along / max(v["a"], v["b"])]
-                                        + [along, np.sqrt(eps) * size] * (2 * n))
+    basis = np.eye(nq)
+    at = {name: i for i, name in enumerate(get_model(model).state[:nq])}  # the layout's
+    balloon = q0[[at["delta_x"], at["delta_y"]]]
     stiffest = 0.0
-    for j, (E, l0, mt) in enumerate(((v["E1"], v["l10"], p[NB]), (v["E2"], v["l20"], p[NB + 1]))):
+    for j, (E, l0, mt) in enumerate(((v["E1"], v["l10"], p[NB]), (v["E2"], v["l20"], p[NB + 1])), 1):
         stiffest = max(stiffest, E * (n + 1) ** 2 / (l0 * mt))  # EA / (l_s m_b) [1/s²]
-        first = q0[3 + 2 * j * n: 5 + 2 * j * n]
-        e = (q0[:2] - first) / np.linalg.norm(q0[:2] - first)  # the line's direction
-        for k in range(n):
-            i = 3 + 2 * (j * n + k)
-            basis[i:i + 2, i:i + 2] = [[e[0], -e[1]], [e[1], e[0]]]
+        first = q0[[at[f"x_{j}_1"], at[f"y_{j}_1"]]]
+        e = (balloon - first) / np.linalg.norm(balloon - first)  # the line's direction
+        for k in range(1, n + 1):  # the bead's x, y turned to along, across its line
+            xy = [at[f"x_{j}_{k}"], at[f"y_{j}_{k}"]]
+            basis[np.ix_(xy, xy)] = [[e[0], -e[1]], [e[1], e[0]]]
+    across = np.array([at[f"y_{j}_{k}"] for j in (1, 2) for k in range(1, n + 1)])
+    steps = np.full(nq, 1e3 * eps * size)  # along a line, and the bodies' offsets
+    steps[at["theta"]] /= max(v["a"], v["b"])  # rad: the boom ends move as much
+    steps[across] = np.sqrt(eps) * size
     level = eps * max(size * stiffest, v["r0"] * v["omega"] ** 2)
 
     def local(x):  # the accelerations in the coordinates Newton moves
@@ -175,7 +179,7 @@ def chain_at_rest(y, model: str, sat: Satellite) -> np.ndarray:
     # every coordinate, then across the lines alone: along a stiff line the rows are
     # rounding noise that can hide (in the largest row) a sag not yet balanced
     x = _newton(local, np.zeros(nq), steps, np.arange(nq))
-    x = _newton(local, x, steps, np.arange(4, nq, 2))
+    x = _newton(local, x, steps, across)
     left = float(np.max(np.abs(local(x))))
     if left <= 100 * level:
         return np.concatenate([q0 + basis @ x, rest])
