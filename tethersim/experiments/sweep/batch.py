@@ -54,6 +54,17 @@ from tethersim.model.registry import get_model, model_for_orbit, model_index
 # bench/lanes_bench.py)
 USE_LANES = True
 
+
+
+def lane_width(plan: Plan) -> int:
+    """Points one compiled step of ``plan``'s blocks advances together: the SIMD lanes
+    (lane_count) for the faithful and adaptive schemes of a model with a lane rhs, else
+    1 (runner.block_size gives a block at least this many points)."""
+    lanes = USE_LANES and plan.method in ("faithful", "adaptive") \
+        and has_lanes(model_index(plan.model))
+    return lane_count() if lanes else 1
+
+
 _F = {name: i for i, name in enumerate(F_FIELDS)}
 _I = {name: i for i, name in enumerate(I_FIELDS)}
 

@@ -21,9 +21,10 @@ from tethersim.experiments.sweep.spec import SweepSpec
 from tethersim.experiments.sweep.store import SweepStore
 
 FLUSH_SECONDS = 2.0
-# a task integrates about this many orbits (8 points of 5 orbits, 1 of 50): enough to
-# amortise the Python work around a compiled block, short enough (~10-30 ms) that
-# Ctrl-C, the progress bar and the last tasks' balance across threads do not notice
+# a task integrates about this many orbits (8 points of 5 orbits), and holds at least
+# the points one compiled step advances together (the SIMD lanes, batch.lane_width):
+# enough to amortise the Python work around a compiled block, short enough (~10-300 ms)
+# that Ctrl-C, the progress bar and the last tasks' balance across threads do not notice
 BLOCK_ORBITS = 40
 BALANCE = 4  # at least this many tasks per worker, so no worker idles at the end
 MAX_BLOCK = 64
@@ -74,10 +75,13 @@ def executor(workers: int | None = None, scheduler: str | None = None, dask_work
             yield ex, 1, n
 
 
-def block_size(periods: float, points: int, workers: int, minimum: int = 1) -> int:
-    """Points per task: about BLOCK_ORBITS orbits of integration, at least BALANCE
-    tasks per worker, at least ``minimum``.  Records do not depend on it."""
-    by_work = max(1, round(BLOCK_ORBITS / periods))
+def block_size(periods: float, points: int, workers: int, minimum: int = 1,
+               lanes: int = 1) -> int:
+    """Points per task: about BLOCK_ORBITS orbits of integration but at least ``lanes``
+    (a block of fewer points than the SIMD lanes leaves lanes idle: 50-orbit maps ran
+    one point per block, point by point), at least BALANCE tasks per worker, at least
+    ``minimum``.  Records do not depend on it."""
+    by_work = max(lanes, round(BLOCK_ORBITS / periods))
     by_balance = max(1, math.ceil(points / (BALANCE * max(1, workers))))
     return max(minimum, min(by_work, by_balance, MAX_BLOCK))
 
@@ -92,6 +96,14 @@ def _blocks(ks: list, size: int, workers: int = 1, minimum: int = 1) -> list:
         out.append(ks[i:i + n])
         i += n
     return out
+
+
+def _tasks(ks: list, periods: float, workers: int, minimum: int, lanes: int,
+           size: int | None = None) -> list:
+    """ks in blocks of ``size`` points (default: block_size), the last ones shrinking
+    (_blocks) but not below the lanes, so that every block but the remainder fills them."""
+    size = size or block_size(periods, len(ks), workers, minimum, lanes)
+    return _blocks(ks, size, workers, max(minimum, min(lanes, size)))
 
 
 def run_plan(plan: Plan, sats: list, *, workers: int | None = None,
@@ -136,14 +148,13 @@ def run_plan(plan: Plan, sats: list, *, workers: int | None = None,
     >>> [r["end_time"] == sat.period for r in recs]
     [True, True]
     """
-    from tethersim.experiments.sweep.batch import run_satellites
+    from tethersim.experiments.sweep.batch import lane_width, run_satellites
 
     sats = list(sats)
     idx = list(range(len(sats)))
     with (nullcontext(pool) if pool is not None
           else executor(workers, scheduler, dask_workers)) as (ex, minimum, n):
-        size = block_size(plan.periods, len(sats), n, minimum)
-        blocks = _blocks(idx, size, n, minimum)
+        blocks = _tasks(idx, plan.periods, n, minimum, lane_width(plan))
         futures = {ex.submit(run_satellites, plan, [sats[i] for i in b]): b for b in blocks}
         out = [None] * len(sats)
         with tqdm(total=len(sats), desc=desc, unit="run", disable=progress is False,
@@ -224,14 +235,14 @@ def run_sweep(spec: SweepSpec, out, *, workers: int | None = None, scheduler: st
 
 def _fill(store, spec, workers, scheduler, dask_workers, progress, block, stop_after):
     """run_sweep's work on an open, locked store."""
+    from tethersim.experiments.sweep.batch import lane_width
     pending = store.pending()
     if not pending:
         return store
     spec_json = spec.to_json()
     with executor(workers, scheduler, dask_workers) as (ex, minimum, n):
-        size = block or block_size(spec.periods, len(pending), n, minimum)
-        futures = [ex.submit(run_points, spec_json, b)
-                   for b in _blocks(pending, size, n, minimum)]
+        futures = [ex.submit(run_points, spec_json, b) for b in
+                   _tasks(pending, spec.periods, n, minimum, lane_width(spec.plan), block)]
         bar = tqdm(total=spec.size, initial=spec.size - len(pending), unit="run",
                    desc=f"sweep {spec.satellite.name} {' x '.join(spec.names)}",
                    disable=progress is False, delay=0 if progress else 1.0, smoothing=0.05)
@@ -249,7 +260,7 @@ def _fill(store, spec, workers, scheduler, dask_workers, progress, block, stop_a
                     raise KeyboardInterrupt
         except BaseException as exc:
             # keep everything finished: queued points are cancelled; on threads the
-            # points running finish (one run each) and are kept; Dask cancels its own
+            # blocks running finish (one block each) and are kept; Dask cancels its own
             for f in futures:
                 f.cancel()
             for f in futures:
