@@ -44,7 +44,7 @@ def add_parser(sub) -> None:
                    help="cap on the free run [h] (default 240: ten days); a verdict that "
                         "turns on a longer life says 'undecided: raise the lifetime cap'")
     p.add_argument("--workers", type=options.positive_int, default=None, metavar="N",
-                   help="threads (default 1; at most 4 per core)")
+                   help="threads (default: every core; at most 4 per core)")
     p.add_argument("--rtol", type=options.rtol_float, default=1e-10,
                    help="relative tolerance of every run (default 1e-10); the "
                         "verdict's runs are repeated at rtol/100 and a verdict that differs "

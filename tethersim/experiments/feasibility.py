@@ -37,6 +37,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass
 from pathlib import Path
@@ -331,7 +332,8 @@ def run_feasibility(spec: FeasibilitySpec, out, workers: int | None = None,
     out : path-like
         Store folder: ``spec.json`` and ``points.jsonl`` (one finished point a line).
     workers : int, optional
-        Threads (default 1).
+        Threads (default: every core, as sweeps: the runs release the GIL); the rows
+        do not depend on it.
     log : callable, optional
         One line per finished point.
     progress : bool or None, optional
@@ -358,7 +360,7 @@ def run_feasibility(spec: FeasibilitySpec, out, workers: int | None = None,
         bar = tqdm(total=len(spec.points()), initial=len(spec.points()) - len(todo),
                    desc="feasibility", unit="point", disable=progress is False,
                    delay=0.0 if progress else 1.0, leave=False)
-        with ThreadPoolExecutor(max_workers=workers or 1) as pool, bar:
+        with ThreadPoolExecutor(max_workers=workers or os.cpu_count() or 1) as pool, bar:
             for row in pool.map(lambda p: run_point(spec, *p), todo):
                 bar.update(1)
                 store.put(row)
