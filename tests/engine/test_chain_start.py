@@ -135,3 +135,22 @@ def test_a_dyneema_chain_started_at_its_equilibrium_takes_few_implicit_steps():
                              False, start=initial_model_state(res.satellite, res.model),
                              scheme="implicit")
     assert straight.status == "ok" and straight.n_accepted > 1000
+
+
+# the same compiled loop as the test above (any N reuses it)
+@pytest.mark.slow
+@pytest.mark.parametrize("n", [8, 16, 32])
+def test_many_stiff_beads_at_rest_take_few_implicit_steps_with_the_fine_jacobian(n):
+    """With 8 or more 1 mm Dyneema beads a line a segment at rest stretches by less than
+    the √ε difference step of the Jacobian (~1e-7 m at the nodes' 6-30 m), which crosses
+    its slack kink: Newton then stalled at every step (N = 8 took thousands of steps in
+    0.2 orbit, N = 16 did not finish in minutes).  Radau switches to the
+    fine step (linalg.FD_STEP_FINE) once Newton fails with a fresh Jacobian: the chain
+    at rest takes tens of steps and stays within 1e-9 m of its start."""
+    sat = _dyneema(base="objective-damper")
+    res = ts.simulate(sat, 0.2, method="implicit", model="objective-damper", rtol=1e-8,
+                      atol=1e-9, beads=n, progress=False)
+    assert res.status == "ok" and res.start == "equilibrium"
+    nq = res.states.shape[1] // 2
+    assert res.n_accepted <= 100
+    assert np.max(np.abs(res.states[:, :nq] - res.states[0, :nq])) < 1e-9

@@ -17,6 +17,14 @@ from numba import njit
 from tethersim.engine.dynamics import derivative, model_size
 
 EPS = np.finfo(float).eps
+# the forward-difference step of the Jacobian, relative to max(|y_j|, 1): √ε balances
+# truncation against rounding (J to ~1e-8); FD_STEP_FINE stays inside the taut margin of
+# a stiff line at rest (a 1 mm fibre segment of a bead chain stretches by ~1e-9 m, a √ε
+# step moves a node ~1e-7 m and crosses its slack kink, so J holds half a spring and
+# Newton stalls), at the price of J to ~1e-5, which only slows Newton (radau.py uses it
+# once Newton fails with a fresh √ε Jacobian)
+FD_STEP = math.sqrt(EPS)
+FD_STEP_FINE = 1e-3 * FD_STEP
 
 
 @njit(cache=True)
@@ -69,18 +77,18 @@ def lu_solve(A, piv, b):
 
 
 @njit(cache=True)
-def fd_jacobian(model, air, t, y, f, p, pw, J, ys, fs):
+def fd_jacobian(model, air, t, y, f, p, pw, J, ys, fs, step=FD_STEP):
     """J[i, j] = ∂f_i/∂y_j by forward differences of the generated rhs (f = f(t, y)).
 
-    Steps √eps · max(|y_j|, 1) in each state's SI unit: a relative error of
-    ~1e-8 in J, which only slows the simplified Newton iteration, never the
-    accuracy of the converged step.  ys, fs: scratch vectors.
+    Steps ``step`` · max(|y_j|, 1) in each state's SI unit (FD_STEP: a relative error
+    of ~1e-8 in J; FD_STEP_FINE: see there), which only slows the simplified Newton
+    iteration, never the accuracy of the converged step.  ys, fs: scratch vectors.
     """
     n = model_size(model, y)
     for i in range(n):
         ys[i] = y[i]
     for j in range(n):
-        d = math.sqrt(EPS) * max(abs(y[j]), 1.0)
+        d = step * max(abs(y[j]), 1.0)
         ys[j] = y[j] + d
         d = ys[j] - y[j]  # the step actually represented
         derivative(model, air, t, ys, p, pw, fs)

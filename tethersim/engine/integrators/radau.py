@@ -24,7 +24,7 @@ from tethersim.engine.integrators.dop853 import (
     STATUS_OK,
     STATUS_STEP_TOO_SMALL,
 )
-from tethersim.engine.integrators.linalg import EPS, fd_jacobian, lu_solve
+from tethersim.engine.integrators.linalg import EPS, FD_STEP, FD_STEP_FINE, fd_jacobian, lu_solve
 from tethersim.engine.integrators.radau_step import (
     ERROR_ESTIMATOR_ORDER,
     MAX_FACTOR,
@@ -53,6 +53,7 @@ def carry_size(n: int) -> int:
 
 # carry layout: what a run resumed in calls needs to take exactly one call's steps
 _C_STARTED, _C_CURRENT_JAC, _C_H_OLD, _C_ERR_OLD, _C_HAVE_SOL, _C_T_OLD, _C_H_LAST = range(7)
+_C_FINE = 7  # 1: the Jacobian's difference step is FD_STEP_FINE from now on
 _C_J = 8
 
 
@@ -84,8 +85,9 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
     for i in range(n):
         if not math.isfinite(f[i]):
             return t, h, i_out, STATUS_NONFINITE, -1
+    fd_step = FD_STEP_FINE if carry[_C_FINE] != 0.0 else FD_STEP
     if carry[_C_STARTED] == 0.0:
-        fd_jacobian(model, air, t, y, f, p, pw, J, ys, fs)
+        fd_jacobian(model, air, t, y, f, p, pw, J, ys, fs, fd_step)
         counters[0] += n
         counters[5] += 1
         carry[_C_STARTED], carry[_C_CURRENT_JAC] = 1.0, 1.0
@@ -138,9 +140,13 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
                                                        ys, br, bc, scale, newton_tol, LR, LC,
                                                        pr, pc)
                 counters[0] += 3 * n_iter
-                if converged or current_jac:
+                if converged or (current_jac and fd_step == FD_STEP_FINE):
                     break
-                fd_jacobian(model, air, t, y, f, p, pw, J, ys, fs)
+                if current_jac:
+                    # Newton fails with a fresh Jacobian: a stiff line's slack kink lies
+                    # inside the difference step (linalg.FD_STEP_FINE); finer from now on
+                    fd_step = FD_STEP_FINE
+                fd_jacobian(model, air, t, y, f, p, pw, J, ys, fs, fd_step)
                 counters[0] += n
                 counters[5] += 1
                 current_jac = True
@@ -227,7 +233,7 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
         derivative(model, air, t_new, y_new, p, pw, f_new)
         counters[0] += 1
         if recompute_jac:
-            fd_jacobian(model, air, t_new, y_new, f_new, p, pw, J, ys, fs)
+            fd_jacobian(model, air, t_new, y_new, f_new, p, pw, J, ys, fs, fd_step)
             counters[0] += n
             counters[5] += 1
             current_jac = True
@@ -257,6 +263,7 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
     counters[4] += steps
     # what the next call needs to continue exactly as one call would
     carry[_C_CURRENT_JAC] = 1.0 if current_jac else 0.0
+    carry[_C_FINE] = 1.0 if fd_step == FD_STEP_FINE else 0.0
     carry[_C_H_OLD], carry[_C_ERR_OLD] = h_abs_old, err_old
     carry[_C_HAVE_SOL], carry[_C_T_OLD], carry[_C_H_LAST] = 1.0 if have_sol else 0.0, t_old, h_last
     for i in range(n):
