@@ -53,7 +53,7 @@ def carry_size(n: int) -> int:
 
 # carry layout: what a run resumed in calls needs to take exactly one call's steps
 _C_STARTED, _C_CURRENT_JAC, _C_H_OLD, _C_ERR_OLD, _C_HAVE_SOL, _C_T_OLD, _C_H_LAST = range(7)
-_C_FINE = 7  # 1: the Jacobian's difference step is FD_STEP_FINE from now on
+_C_FINE = 7  # 1: the Jacobian held was taken with the fine difference step
 _C_J = 8
 
 
@@ -85,7 +85,7 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
     for i in range(n):
         if not math.isfinite(f[i]):
             return t, h, i_out, STATUS_NONFINITE, -1
-    fd_step = FD_STEP_FINE if carry[_C_FINE] != 0.0 else FD_STEP
+    fd_step = FD_STEP_FINE if carry[_C_FINE] != 0.0 else FD_STEP  # the step of J held
     if carry[_C_STARTED] == 0.0:
         fd_jacobian(model, air, t, y, f, p, pw, J, ys, fs, fd_step)
         counters[0] += n
@@ -142,10 +142,9 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
                 counters[0] += 3 * n_iter
                 if converged or (current_jac and fd_step == FD_STEP_FINE):
                     break
-                if current_jac:
-                    # Newton fails with a fresh Jacobian: a stiff line's slack kink lies
-                    # inside the difference step (linalg.FD_STEP_FINE); finer from now on
-                    fd_step = FD_STEP_FINE
+                # Newton fails with a fresh Jacobian: a stiff line's slack kink may lie
+                # inside the difference step; retry with the fine one (linalg.FD_STEP_FINE)
+                fd_step = FD_STEP_FINE if current_jac else FD_STEP
                 fd_jacobian(model, air, t, y, f, p, pw, J, ys, fs, fd_step)
                 counters[0] += n
                 counters[5] += 1
@@ -233,6 +232,7 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
         derivative(model, air, t_new, y_new, p, pw, f_new)
         counters[0] += 1
         if recompute_jac:
+            fd_step = FD_STEP
             fd_jacobian(model, air, t_new, y_new, f_new, p, pw, J, ys, fs, fd_step)
             counters[0] += n
             counters[5] += 1
