@@ -55,14 +55,16 @@ from tethersim.model.registry import get_model, model_for_orbit, model_index
 USE_LANES = True
 
 
+def _lanes_for(method: str, m: int) -> bool:
+    """Whether scheme ``method`` runs model index ``m`` on SIMD lanes (in uniform air)."""
+    return USE_LANES and method in ("faithful", "adaptive") and has_lanes(m)
+
 
 def lane_width(plan: Plan) -> int:
     """Points one compiled step of ``plan``'s blocks advances together: the SIMD lanes
     (lane_count) for the faithful and adaptive schemes of a model with a lane rhs, else
     1 (runner.block_size gives a block at least this many points)."""
-    lanes = USE_LANES and plan.method in ("faithful", "adaptive") \
-        and has_lanes(model_index(plan.model))
-    return lane_count() if lanes else 1
+    return lane_count() if _lanes_for(plan.method, model_index(plan.model)) else 1
 
 
 _F = {name: i for i, name in enumerate(F_FIELDS)}
@@ -175,12 +177,11 @@ def _compiled(sats: list, plan: Plan, model: str, air: np.ndarray) -> list:
     if plan.method == "implicit":  # its own entry: the explicit blocks do not carry Radau
         args = (air, T, Y0, P, span, *tolerances, *measure)
         specialised(sweep_block_implicit, m, args)(m, *args)  # releases the GIL
-    elif USE_LANES and faithful and n >= 2 and air[0] == UNIFORM and has_lanes(m):
+    elif faithful and n >= 2 and air[0] == UNIFORM and _lanes_for(plan.method, m):
         # K points per step on SIMD lanes, the same records bit for bit (sweep/lanes.py)
         args = (air, Y0, P, span, n_steps, *measure, lane_count())
         specialised(sweep_block_lanes, m, args)(m, *args)  # releases the GIL
-    elif USE_LANES and plan.method == "adaptive" and n >= 2 and air[0] == UNIFORM \
-            and has_lanes(m):
+    elif n >= 2 and air[0] == UNIFORM and _lanes_for(plan.method, m):
         # DOP853 with K points per step on SIMD lanes, the same records (sweep/lanes853.py)
         args = (air, T, Y0, P, span, *tolerances, *measure, lane_count())
         specialised(sweep_block_lanes853, m, args)(m, *args)  # releases the GIL
