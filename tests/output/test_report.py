@@ -1,7 +1,9 @@
 """tethersim report: one HTML page whose figures exist and whose facts table covers the thesis."""
 from __future__ import annotations
 
+import contextlib
 import html
+import io
 import os
 import re
 import shutil
@@ -13,6 +15,8 @@ from tests.tiers import VARIANT_LOOP
 from tethersim.experiments.sweep.plan import CLASS_RTOL
 from tethersim.output.report import MAPS, build_report
 
+REPORT_STDERR = [""]  # what building the report below wrote to stderr
+
 
 @pytest.fixture(scope="module")
 def report(tmp_path_factory):
@@ -22,8 +26,22 @@ def report(tmp_path_factory):
     # slow tier, tests/output/test_roll_section.py and test_real_section.py; the headline
     # cases run the loops of the printed and objective-damper models, so every test of the
     # built page is slow-tier too (tests/tiers.py)
-    return build_report(out, grid=3, periods=2.0, progress=False, log=lambda *a: None,
-                        roll=False, real=False)
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err):  # the progress bars' stream (tqdm)
+        paths = build_report(out, grid=3, periods=2.0, progress=False, log=lambda *a: None,
+                             roll=False, real=False)
+    REPORT_STDERR[:] = [err.getvalue()]
+    return paths
+
+
+
+@VARIANT_LOOP
+def test_report_without_progress_shows_no_progress_bar(report):
+    # --quiet: the feasibility atlas's bar was left on (run_feasibility's default, a bar
+    # after a second)
+    assert "point/s" not in REPORT_STDERR[0] and "s/point" not in REPORT_STDERR[0], \
+        REPORT_STDERR[0][-500:]
+    assert "%|" not in REPORT_STDERR[0], REPORT_STDERR[0][-500:]
 
 
 @VARIANT_LOOP

@@ -291,8 +291,8 @@ def predicted_map(sat: Satellite, name_x: str, values_x, name_y: str, values_y,
     and must be a valid satellite (raises SatelliteError naming the point).
     The points are visited row by row, in a serpentine order.  The balloon trail at
     θ = 0 of each point seeds the next one's Newton solve.  The θ ≈ 0 branch itself
-    is followed along θ at every point (module docstring).  About 1.2 ms a point (0.7
-    with swing=False): a 41 × 41 grid takes about 2 s on one core.
+    is followed along θ at every point (module docstring), one thread: a 41 × 41 grid
+    takes seconds.
     model, periods, swing: as predicted_class.
     progress: None shows a bar (tqdm) only if the map takes more than a second; True
     always; False never.

@@ -12,6 +12,8 @@ import math
 import numpy as np
 
 from tethersim.analysis.equilibrium import RESIDUAL_TOL
+from tethersim.engine.balloon_rest import balloon_rest
+from tethersim.engine.integrators.select import specialised
 from tethersim.generated.layout import (
     P_A,
     P_A1,
@@ -50,8 +52,9 @@ class PitchTorque:
     """g(θ) = θ̈ [rad/s²] with the balloon at rest at its equilibrium for fixed θ.
 
     The balloon's (δx, δy) [m] solves δẍ = δÿ = 0 (Eqs 3.48-3.49 as derived) by
-    Newton's method on the generated Jacobian.  Each solve starts from the last
-    solution, which continues it along θ.
+    Newton's method on the generated Jacobian (compiled:
+    tethersim.engine.balloon_rest).  Each solve starts from the last solution, which
+    continues it along θ.
     """
 
     def __init__(self, sat: Satellite, model: str, trail=None):
@@ -61,32 +64,18 @@ class PitchTorque:
         self.d = np.empty(6)
         self.J = np.empty((6, 6))
         self.trail = np.array(trail if trail is not None else sat.initial[:2], dtype=float)
+        # the compiled entry, picked once: the walk of tethersim.analysis.predict calls it
+        # ~60 times a grid point
+        self._solve = specialised(balloon_rest, self.m,
+                                  (0.0, self.trail, self.y, self.p, self.d, self.J, NEWTON_MAX,
+                                   NEWTON_STEP_TOL, RESIDUAL_TOL), loud=False)
 
     def balloon(self, theta: float):
         """(δx, δy) [m] of the balloon's equilibrium at pitch θ, or None."""
-        y, d, J, p, m = self.y, self.d, self.J, self.p, self.m
-        y[:] = 0.0
-        y[0], y[1], y[2] = self.trail[0], self.trail[1], theta
-        for _ in range(NEWTON_MAX):
-            KERNELS[m].rhs(0.0, y, p, d)
-            KERNELS[m].jacobian(0.0, y, p, J)
-            a11, a12, a21, a22 = J[3, 0], J[3, 1], J[4, 0], J[4, 1]
-            det = a11 * a22 - a12 * a21
-            if not (math.isfinite(det) and det != 0.0):
-                return None
-            sx = (a22 * d[3] - a12 * d[4]) / det
-            sy = (a11 * d[4] - a21 * d[3]) / det
-            y[0] -= sx
-            y[1] -= sy
-            if abs(sx) + abs(sy) <= NEWTON_STEP_TOL:
-                KERNELS[m].rhs(0.0, y, p, d)
-                if max(abs(d[3]), abs(d[4])) <= RESIDUAL_TOL:
-                    self.trail[:] = y[0], y[1]
-                    return float(y[0]), float(y[1])
-                return None
-            if not (math.isfinite(y[0]) and math.isfinite(y[1])):
-                return None
-        return None
+        if not self._solve(self.m, float(theta), self.trail, self.y, self.p, self.d, self.J,
+                           NEWTON_MAX, NEWTON_STEP_TOL, RESIDUAL_TOL):
+            return None
+        return float(self.trail[0]), float(self.trail[1])
 
     def __call__(self, theta: float) -> float:
         """g(θ) [rad/s²]; NaN where the balloon has no equilibrium."""

@@ -15,7 +15,8 @@ def _h(v) -> str:
     return "never" if not math.isfinite(v) else f"{v:.3g}"
 
 
-def section_feasibility(page: Page, periods: float, workers=None, sat_name: str = "satI") -> list:
+def section_feasibility(page: Page, periods: float, workers=None, sat_name: str = "satI",
+                        progress: bool | None = None) -> list:
     """Run the SatI atlas at :data:`ALTITUDES_KM` into OUT/feasibility and add the section.
 
     Parameters
@@ -29,6 +30,9 @@ def section_feasibility(page: Page, periods: float, workers=None, sat_name: str 
         Threads.
     sat_name : str, optional
         Preset.
+    progress : bool or None, optional
+        The atlas's progress bar (``run_feasibility``'s; False: none, the report's
+        ``--quiet``).
 
     Returns
     -------
@@ -43,7 +47,7 @@ def section_feasibility(page: Page, periods: float, workers=None, sat_name: str 
     cap_h = LIFETIME_CAP_ORBITS * periods * sat.period / 3600
     spec = FeasibilitySpec(sat, ALTITUDES_KM, periods=periods, max_lifetime_h=cap_h)
     store = page.out / "feasibility"
-    rows = run_feasibility(spec, store, workers=workers, log=lambda *a: None)
+    rows = run_feasibility(spec, store, workers=workers, log=lambda *a: None, progress=progress)
     png = plot_feasibility(rows, page.out / "img" / "feasibility.png",
                            title=f"{sat.name}: does the design work in a real orbit?")
     body = [_table(

@@ -332,7 +332,8 @@ def build_report(out, grid: int = 41, periods: float = 50.0, workers=None,
     workers : int, optional
         Threads of the sweeps.
     progress : bool, optional
-        Progress bars of the sweeps (None: when the terminal shows them).
+        Progress bars of the sweeps and the feasibility atlas (None: when the terminal
+        shows them).
     log : callable, optional
         Called with one line as each section starts.
     roll : bool, optional
@@ -357,7 +358,8 @@ def build_report(out, grid: int = 41, periods: float = 50.0, workers=None,
              ("headline cases", lambda: section_headlines(page)),
              ("force breakdowns", lambda: section_forces(page, periods)),
              ("moduli only", lambda: section_moduli_only(page)),
-             ("feasibility in a real orbit", lambda: section_feasibility(page, periods, workers))]
+             ("feasibility in a real orbit", lambda: section_feasibility(page, periods, workers,
+                                                                          progress=progress))]
     if real:
         steps.append(("real tethers", lambda: section_real(page, periods)))
     if roll:
