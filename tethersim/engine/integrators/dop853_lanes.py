@@ -15,12 +15,18 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 from tethersim.engine.dynamics import model_size
 from tethersim.engine.integrators.dop853_tableau import E3, E5, N_STAGES, A, D
 from tethersim.engine.integrators.lanes import LANES, model_rhs_lanes
 from tethersim.engine.integrators.steps import N_K
+
+# unsigned lane indices: numba wraps a negative signed index around (a compare and a
+# conditional move per access), and LLVM cannot prove (j*n + i)*LANES + kb + 1 >= 0, so
+# with signed indices the stage, error and interpolant sums below stayed scalar code
+U1, U2, U3 = np.uint64(1), np.uint64(2), np.uint64(3)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -30,7 +36,7 @@ def _stage_state_lanes(n, s, Y, H, Ks, YS):
 
     Four lanes at a time, each in its own scalar accumulator (LLVM packs the four into
     one vector register): a sum kept in memory would chain every term through a store
-    and a load.  K (H's length) is a multiple of 4.
+    and a load.  K (H's length) is a multiple of 4.  Unsigned indices (U1).
     """
     for i in range(n):
         for kb in range(0, H.shape[0], 4):
@@ -40,16 +46,17 @@ def _stage_state_lanes(n, s, Y, H, Ks, YS):
             a3 = 0.0
             for j in range(s):
                 c = A[s, j]
-                o = (j * n + i) * LANES + kb
+                o = np.uint64((j * n + i) * LANES + kb)
                 a0 += c * Ks[o]
-                a1 += c * Ks[o + 1]
-                a2 += c * Ks[o + 2]
-                a3 += c * Ks[o + 3]
-            r = i * LANES + kb
-            YS[r] = Y[r] + H[kb] * a0
-            YS[r + 1] = Y[r + 1] + H[kb + 1] * a1
-            YS[r + 2] = Y[r + 2] + H[kb + 2] * a2
-            YS[r + 3] = Y[r + 3] + H[kb + 3] * a3
+                a1 += c * Ks[o + U1]
+                a2 += c * Ks[o + U2]
+                a3 += c * Ks[o + U3]
+            r = np.uint64(i * LANES + kb)
+            h = np.uint64(kb)
+            YS[r] = Y[r] + H[h] * a0
+            YS[r + U1] = Y[r + U1] + H[h + U1] * a1
+            YS[r + U2] = Y[r + U2] + H[h + U2] * a2
+            YS[r + U3] = Y[r + U3] + H[h + U3] * a3
 
 
 # error_model="numpy": a float division gives inf or NaN (IEEE) instead of a branch that
@@ -105,7 +112,7 @@ def dop853_lanes_error(n, Ks, H, Y, Y_new, rtol, atol, err):
         e32 = 0.0
         e33 = 0.0
         for i in range(n):
-            r = i * LANES + kb
+            r = np.uint64(i * LANES + kb)
             p0 = 0.0
             p1 = 0.0
             p2 = 0.0
@@ -117,19 +124,19 @@ def dop853_lanes_error(n, Ks, H, Y, Y_new, rtol, atol, err):
             for j in range(N_STAGES + 1):
                 c5 = E5[j]
                 c3 = E3[j]
-                o = (j * n + i) * LANES + kb
+                o = np.uint64((j * n + i) * LANES + kb)
                 p0 += c5 * Ks[o]
-                p1 += c5 * Ks[o + 1]
-                p2 += c5 * Ks[o + 2]
-                p3 += c5 * Ks[o + 3]
+                p1 += c5 * Ks[o + U1]
+                p2 += c5 * Ks[o + U2]
+                p3 += c5 * Ks[o + U3]
                 q0 += c3 * Ks[o]
-                q1 += c3 * Ks[o + 1]
-                q2 += c3 * Ks[o + 2]
-                q3 += c3 * Ks[o + 3]
+                q1 += c3 * Ks[o + U1]
+                q2 += c3 * Ks[o + U2]
+                q3 += c3 * Ks[o + U3]
             sc0 = atol + max(abs(Y[r]), abs(Y_new[r])) * rtol
-            sc1 = atol + max(abs(Y[r + 1]), abs(Y_new[r + 1])) * rtol
-            sc2 = atol + max(abs(Y[r + 2]), abs(Y_new[r + 2])) * rtol
-            sc3 = atol + max(abs(Y[r + 3]), abs(Y_new[r + 3])) * rtol
+            sc1 = atol + max(abs(Y[r + U1]), abs(Y_new[r + U1])) * rtol
+            sc2 = atol + max(abs(Y[r + U2]), abs(Y_new[r + U2])) * rtol
+            sc3 = atol + max(abs(Y[r + U3]), abs(Y_new[r + U3])) * rtol
             e50 += (p0 / sc0) ** 2
             e51 += (p1 / sc1) ** 2
             e52 += (p2 / sc2) ** 2
@@ -166,11 +173,11 @@ def dop853_lanes_dense(model, Y, Y_new, H, P, Ks, YS, F, S):
         for k in range(K):
             r = i * LANES + k
             h = H[k]
-            dy = Y_new[r] - Y[r]
-            k0 = Ks[r]
-            F[r] = dy
-            F[m + r] = h * k0 - dy
-            F[2 * m + r] = 2.0 * dy - h * (Ks[N_STAGES * m + r] + k0)
+            dy = Y_new[np.uint64(r)] - Y[np.uint64(r)]
+            k0 = Ks[np.uint64(r)]
+            F[np.uint64(r)] = dy
+            F[np.uint64(m + r)] = h * k0 - dy
+            F[np.uint64(2 * m + r)] = 2.0 * dy - h * (Ks[np.uint64(N_STAGES * m + r)] + k0)
         for q in range(D.shape[0]):
             for kb in range(0, K, 4):
                 a0 = 0.0
@@ -179,16 +186,17 @@ def dop853_lanes_dense(model, Y, Y_new, H, P, Ks, YS, F, S):
                 a3 = 0.0
                 for j in range(N_K):
                     c = D[q, j]
-                    o = j * m + i * LANES + kb
+                    o = np.uint64(j * m + i * LANES + kb)
                     a0 += c * Ks[o]
-                    a1 += c * Ks[o + 1]
-                    a2 += c * Ks[o + 2]
-                    a3 += c * Ks[o + 3]
-                r = (3 + q) * m + i * LANES + kb
-                F[r] = H[kb] * a0
-                F[r + 1] = H[kb + 1] * a1
-                F[r + 2] = H[kb + 2] * a2
-                F[r + 3] = H[kb + 3] * a3
+                    a1 += c * Ks[o + U1]
+                    a2 += c * Ks[o + U2]
+                    a3 += c * Ks[o + U3]
+                r = np.uint64((3 + q) * m + i * LANES + kb)
+                h = np.uint64(kb)
+                F[r] = H[h] * a0
+                F[r + U1] = H[h + U1] * a1
+                F[r + U2] = H[h + U2] * a2
+                F[r + U3] = H[h + U3] * a3
 
 
 @njit(cache=True)
@@ -199,7 +207,7 @@ def dop853_lanes_interpolate(n, k, F, Y, x, out):
     for i in range(n):
         acc = 0.0
         for c in range(q):
-            acc += F[(q - 1 - c) * m + i * LANES + k]
+            acc += F[np.uint64((q - 1 - c) * m + i * LANES + k)]
             if c % 2 == 0:
                 acc *= x
             else:
