@@ -4,8 +4,8 @@ For a thesis model (state δx, δy, θ, δẋ, δẏ, θ̇) held at pitch θ wit
 :func:`balloon_rest` solves δẍ = δÿ = 0 (Eqs 3.48-3.49 as derived) for (δx, δy) by
 Newton's method on the generated Jacobian's 2 × 2 balloon block, from ``trail``.  It is
 the inner solve of tethersim.analysis.torque_balance.PitchTorque, which the predicted
-stability maps call about sixty times a grid point: compiled, with the model's rhs and
-Jacobian inlined, rather than a Python loop over two kernel calls an iteration.
+stability maps call about sixty times a grid point: compiled together with the model's rhs and
+Jacobian, rather than a Python loop over two kernel calls an iteration.
 
 Units: SI.
 """
