@@ -165,19 +165,20 @@ def dop853_lanes_dense(model, Y, Y_new, H, P, Ks, YS, F, S):
     row r of coefficient q at [(q*n + r)*LANES, ...); stages 13..15 of Ks are written."""
     n = model_size(model, Y)
     m = n * LANES
+    um, us = np.uint64(m), np.uint64(N_STAGES)
     K = H.shape[0]
     for s in range(N_STAGES + 1, N_K):
         _stage_state_lanes(n, s, Y, H, Ks, YS)
         model_rhs_lanes(model, H, YS, P, Ks[s * m:(s + 1) * m], S)
     for i in range(n):
         for k in range(K):
-            r = i * LANES + k
+            r = np.uint64(i * LANES + k)
             h = H[k]
-            dy = Y_new[np.uint64(r)] - Y[np.uint64(r)]
-            k0 = Ks[np.uint64(r)]
-            F[np.uint64(r)] = dy
-            F[np.uint64(m + r)] = h * k0 - dy
-            F[np.uint64(2 * m + r)] = 2.0 * dy - h * (Ks[np.uint64(N_STAGES * m + r)] + k0)
+            dy = Y_new[r] - Y[r]
+            k0 = Ks[r]
+            F[r] = dy
+            F[um + r] = h * k0 - dy
+            F[U2 * um + r] = 2.0 * dy - h * (Ks[us * um + r] + k0)
         for q in range(D.shape[0]):
             for kb in range(0, K, 4):
                 a0 = 0.0
