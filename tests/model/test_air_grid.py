@@ -133,3 +133,21 @@ def test_non_finite_inputs_give_nan():
     for h, lon, t in ((math.nan, 0.0, 0.0), (300e3, math.nan, 0.0), (300e3, math.inf, 0.0),
                       (300e3, 0.0, math.nan)):
         assert math.isnan(msis_density_kernel(h, lon, t, table, 0))
+
+
+def test_runs_from_one_utc_day_share_one_grid_and_read_it_at_their_own_epoch():
+    """The grid's values depend on the UTC day and the indices only: two epochs of one day
+    build it once, and each table reads the same density at the same UTC instant."""
+    from tethersim.model.air import model as air_model
+    a = AirModel("nrlmsise00", "2016-09-02T05:17:00", 120.0, 110.0, 7.0)
+    b = a.replace(epoch="2016-09-02T19:02:30")
+    air_model._cached_values.cache_clear()
+    ta, tb = msis_table(a, 86400.0), msis_table(b, 86400.0)
+    assert air_model._cached_values.cache_info().misses == 1
+    assert np.array_equal(ta[N_AXES:], tb[N_AXES:])
+    ut0 = AXES_FIELDS.index("ut0")
+    assert [f for f in range(N_AXES) if ta[f] != tb[f]] == [ut0]
+    lag = tb[ut0] - ta[ut0]  # s: b's t = 0 is a's t = lag
+    for h, lon, t in ((150e3, 0.3, 1000.0), (420e3, -2.0, 30000.0), (95e3, 1.1, 52000.0)):
+        assert msis_density_kernel(h, lon, t, tb, 0) == pytest.approx(
+            msis_density_kernel(h, lon, t + lag, ta, 0), rel=1e-12)

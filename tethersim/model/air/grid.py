@@ -216,17 +216,53 @@ def build_grid(epoch, n_days, daily_indices, dx=DX, n_lst=N_LST, n_t=N_T, hc=HC)
     grid, axes : numpy.ndarray
         ``log(rho)`` on the nodes, shape (n_days, n_t, n_lst, n_h), and the
         axes in the order of :data:`AXES_FIELDS` (:func:`pack` joins them).
+        The grid depends on the epoch's UTC day only (:func:`grid_values`), the
+        axes on its time of day too (:func:`grid_axes`).
     """
-    import pymsis
+    day0 = np.datetime64(epoch, "ms").astype("datetime64[D]")
+    return (grid_values(day0, daily_indices(day0, n_days), dx, n_lst, n_t, hc),
+            grid_axes(epoch, n_days, dx, n_lst, n_t, hc))
 
+
+def _altitude_nodes(dx: float, hc: float) -> tuple:
+    """(x0, n_h): the first node of ``ln(h - hc)`` and the node count (1 below, 2 above)."""
+    x0 = math.log(H_MIN - hc) - dx
+    return x0, int(math.ceil((math.log(H_MAX - hc) - x0) / dx)) + 3
+
+
+def grid_axes(epoch, n_days, dx=DX, n_lst=N_LST, n_t=N_T, hc=HC) -> np.ndarray:
+    """The axes of :func:`build_grid`'s grid for a run from ``epoch`` (:data:`AXES_FIELDS`)."""
     epoch = np.datetime64(epoch, "ms")
     day0 = epoch.astype("datetime64[D]")
     ut0 = float((epoch - day0.astype("datetime64[ms]")) / np.timedelta64(1, "s"))
-    x0 = math.log(H_MIN - hc) - dx
-    n_h = int(math.ceil((math.log(H_MAX - hc) - x0) / dx)) + 3  # 1 node below, 2 above
+    x0, n_h = _altitude_nodes(dx, hc)
+    return np.array([x0, dx, n_h, n_lst, ut0, DAY / n_t, n_t, n_days, H_MIN, H_MAX, hc], float)
+
+
+def grid_values(day0, indices, dx=DX, n_lst=N_LST, n_t=N_T, hc=HC) -> np.ndarray:
+    """``log(rho)`` of NRLMSISE-00 on the grid nodes from UTC day ``day0``.
+
+    Parameters
+    ----------
+    day0 : numpy.datetime64
+        The first UTC day.
+    indices : numpy.ndarray
+        (n_days, 3): f107, f107a, ap of each day.
+    dx, n_lst, n_t, hc : as :func:`build_grid`.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (n_days, n_t, n_lst, n_h).
+    """
+    import pymsis
+
+    day0 = np.datetime64(day0, "D")
+    ind = np.asarray(indices, float)
+    n_days = ind.shape[0]
+    x0, n_h = _altitude_nodes(dx, hc)
     alts_km = (hc + np.exp(x0 + dx * np.arange(n_h))) / 1e3
     lst = 24.0 * np.arange(n_lst) / n_lst
-    ind = daily_indices(day0, n_days)
     grid = np.empty((n_days, n_t, n_lst, n_h))
     for d in range(n_days):
         aps = np.full((1, 7), ind[d, 2])
@@ -239,5 +275,4 @@ def build_grid(epoch, n_days, daily_indices, dx=DX, n_lst=N_LST, n_t=N_T, hc=HC)
                                    version=0)
             rho = out[0, :, 0, :, 0].astype(float)  # (n_lst, n_h)
             grid[d, k] = np.log(rho)
-    axes = np.array([x0, dx, n_h, n_lst, ut0, DAY / n_t, n_t, n_days, H_MIN, H_MAX, hc], float)
-    return grid, axes
+    return grid

@@ -13,6 +13,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+import threading
 from dataclasses import dataclass
 
 import numpy as np
@@ -220,9 +221,26 @@ def air_density(air: AirModel, altitude_m: float, t: float = 0.0,
 
 @functools.lru_cache(maxsize=8)
 def _cached_table(air: AirModel, n_days: int) -> np.ndarray:
-    table = _grid.pack(*_grid.build_grid(air.epoch, n_days, air.daily_indices))
+    day0 = air.epoch.astype("datetime64[D]")
+    ind = np.ascontiguousarray(air.daily_indices(day0, n_days), dtype=float)
+    with _values_lock:  # two threads missing together would both build the same grid
+        grid = _cached_values(str(day0), ind.tobytes())
+    table = _grid.pack(grid, _grid.grid_axes(air.epoch, n_days))
     table.setflags(write=False)
     return table
+
+
+_values_lock = threading.Lock()
+
+
+@functools.lru_cache(maxsize=8)
+def _cached_values(day0: str, indices: bytes) -> np.ndarray:
+    # the grid depends on the UTC day and the indices, not on the epoch's time of day: the
+    # feasibility atlas's free runs and their continuations after a release start at many
+    # epochs of one day, and built 13 grids (~1 s each of pymsis, holding the GIL) where 3 do
+    values = _grid.grid_values(np.datetime64(day0, "D"), np.frombuffer(indices).reshape(-1, 3))
+    values.setflags(write=False)
+    return values
 
 
 def _ut0(air: AirModel) -> float:
