@@ -16,11 +16,11 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from tethersim.analysis.metrics import SETTLING_TOL, wrap
-from tethersim.engine.bodies import bodies_from_states
 from tethersim.engine.domain import state_violation
 from tethersim.engine.linearise import attitude_jacobian, rk4_max_step
 from tethersim.engine.steady import CIRCULAR, RESIDUAL_TOL, NoEquilibrium, steady_coordinates
-from tethersim.model.registry import DEFAULT_MODEL, get_model
+from tethersim.model.inputs import parameter_vector
+from tethersim.model.registry import DEFAULT_MODEL, get_model, kernels_of
 from tethersim.model.satellite import Satellite
 
 NEUTRAL_TOL = 1e-10  # |λ| [1/s] below which a mode is neutral (a cyclic coordinate)
@@ -209,11 +209,14 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
         q[names.index("psi")] = float(wrap(q[names.index("psi")]))
     coords = {k: float(v) for k, v in zip(names, q)}
     y = np.concatenate([q, np.zeros(n)])
-    off = bodies_from_states(sat, model, 0.0, y).offset
-    lam1, lam2 = np.linalg.norm(off[0] - off[2]), np.linalg.norm(off[1] - off[2])
+    # λ_j − l_j0 by the generated function the runs switch on (the taut test of Eqs
+    # 3.39-3.42); the body kinematics gave the same lengths at ~20x the cost, which the
+    # predicted maps (one equilibrium a grid point) paid 10^4 times a report
+    margins = np.empty(2)
+    kernels_of(mdl.index).tether_margins(y, parameter_vector(sat, model), margins)
     ev = np.linalg.eigvals(attitude_jacobian(sat, y, model))
     return Equilibrium(sat, model, coords["delta_x"], coords["delta_y"], coords["theta"],
-                       (bool(lam1 > sat.l10), bool(lam2 > sat.l20)), res, ev,
+                       (bool(margins[0] > 0.0), bool(margins[1] > 0.0)), res, ev,
                        coords if n > 3 else {}, state_violation(sat, model, y))
 
 
