@@ -15,11 +15,10 @@ from tests.tiers import VARIANT_LOOP
 from tethersim.experiments.sweep.plan import CLASS_RTOL
 from tethersim.output.report import MAPS, build_report
 
-REPORT_STDERR = [""]  # what building the report below wrote to stderr
-
 
 @pytest.fixture(scope="module")
-def report(tmp_path_factory):
+def built(tmp_path_factory):
+    """(the report's index.html, what building it wrote to stderr)."""
     out = tmp_path_factory.mktemp("report")
     # the roll section compiles the 3-D kernels (minutes on a cold cache), the real-tether
     # section the implicit loop of objective-damper (~15 s): each is built and checked in the
@@ -28,20 +27,22 @@ def report(tmp_path_factory):
     # built page is slow-tier too (tests/tiers.py)
     err = io.StringIO()
     with contextlib.redirect_stderr(err):  # the progress bars' stream (tqdm)
-        paths = build_report(out, grid=3, periods=2.0, progress=False, log=lambda *a: None,
+        index = build_report(out, grid=3, periods=2.0, progress=False, log=lambda *a: None,
                              roll=False, real=False)
-    REPORT_STDERR[:] = [err.getvalue()]
-    return paths
+    return index, err.getvalue()
 
+
+@pytest.fixture(scope="module")
+def report(built):
+    return built[0]
 
 
 @VARIANT_LOOP
-def test_report_without_progress_shows_no_progress_bar(report):
+def test_report_without_progress_shows_no_progress_bar(built):
     # --quiet: the feasibility atlas's bar was left on (run_feasibility's default, a bar
     # after a second)
-    assert "point/s" not in REPORT_STDERR[0] and "s/point" not in REPORT_STDERR[0], \
-        REPORT_STDERR[0][-500:]
-    assert "%|" not in REPORT_STDERR[0], REPORT_STDERR[0][-500:]
+    err = built[1]
+    assert "point/s" not in err and "s/point" not in err and "%|" not in err, err[-500:]
 
 
 @VARIANT_LOOP
