@@ -219,6 +219,19 @@ def air_density(air: AirModel, altitude_m: float, t: float = 0.0,
     return float(msis_direct(air, h, float(t), float(longitude_rad)))
 
 
+_values_lock = threading.Lock()
+
+
+@functools.lru_cache(maxsize=8)
+def _cached_values(day0: str, indices: bytes) -> np.ndarray:
+    # the grid depends on the UTC day and the indices, not on the epoch's time of day: the
+    # feasibility atlas's free runs and their continuations after a release start at many
+    # epochs of one day, and each built the same grid (~1 s of pymsis, holding the GIL)
+    values = _grid.grid_values(np.datetime64(day0, "D"), np.frombuffer(indices).reshape(-1, 3))
+    values.setflags(write=False)
+    return values
+
+
 @functools.lru_cache(maxsize=8)
 def _cached_table(air: AirModel, n_days: int) -> np.ndarray:
     day0 = air.epoch.astype("datetime64[D]")
@@ -228,19 +241,6 @@ def _cached_table(air: AirModel, n_days: int) -> np.ndarray:
     table = _grid.pack(grid, _grid.grid_axes(air.epoch, n_days))
     table.setflags(write=False)
     return table
-
-
-_values_lock = threading.Lock()
-
-
-@functools.lru_cache(maxsize=8)
-def _cached_values(day0: str, indices: bytes) -> np.ndarray:
-    # the grid depends on the UTC day and the indices, not on the epoch's time of day: the
-    # feasibility atlas's free runs and their continuations after a release start at many
-    # epochs of one day, and built 13 grids (~1 s each of pymsis, holding the GIL) where 3 do
-    values = _grid.grid_values(np.datetime64(day0, "D"), np.frombuffer(indices).reshape(-1, 3))
-    values.setflags(write=False)
-    return values
 
 
 def _ut0(air: AirModel) -> float:
