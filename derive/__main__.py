@@ -13,6 +13,7 @@ from .emit import module_source
 from .model import derive
 from .models import DEFINITIONS, FAMILY_ORDER
 from .printer import module_filename
+from .trig import trig_source
 
 
 def _group(index: int, out: Path) -> list:
@@ -62,6 +63,7 @@ def main(argv=None) -> int:
             "from . import (", *(f"    {n}," for n in sorted(modules)), ")", "",
             "MODELS = {", *(f"    {d.name!r}: {n}," for d, n in zip(every, modules)), "}", ""]
     (out / "__init__.py").write_text("\n".join(init))
+    (out / "trig.py").write_text(trig_source())
     print(f"derive: {len(every)} models in {time.perf_counter() - t0:.1f} s "
           f"({workers} processes)")
     return 0

@@ -19,6 +19,7 @@ explicit tuples, cse symbols from fixed prefixes, and the header has no timestam
 """
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -42,6 +43,7 @@ from .printer import (
 )
 from .three_d import codegen3d
 from .three_d.symbols3d import STATE_MEANINGS
+from .trig import CALLED
 
 
 @dataclass(frozen=True)
@@ -215,4 +217,14 @@ def module_source(model) -> str:
     for kernel_lines in st.solve.extra(model, pr):
         lines += ["", ""] + kernel_lines
     lines += ["", ""] + geometry_kernels(model)
-    return "\n".join(lines) + "\n"
+    return "\n".join(_trig_import(lines)) + "\n"
+
+
+def _trig_import(lines: list) -> list:
+    """``lines`` with ``from .trig import ...`` (the functions they call) after numba's import."""
+    text = "\n".join(lines)
+    used = sorted(f for f in CALLED if re.search(rf"(?<![\w.]){f}\(", text))
+    if not used:
+        return lines
+    at = lines.index("from numba import njit") + 1
+    return lines[:at] + ["", f"from .trig import {', '.join(used)}"] + lines[at:]

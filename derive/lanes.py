@@ -7,13 +7,20 @@ inputs: K = len(t) points; row i of y (state), p (parameters), dydt and a scratc
 constant.  The body is the scalar body, statement for statement, inside
 ``for k in range(K)``, so every lane does the same IEEE operations in the same order
 as the scalar rhs (no fast-math: the results are equal bit for bit) and LLVM can
-vectorise the loop across lanes.  It cannot vectorise a loop holding calls to libm
-(sin, cos, exp: numba's build has no vector versions, ``numba -s``: SVML not
-available), so those calls are hoisted into a first per-lane loop that writes them
-into s; the second loop reads s.  A call qualifies when its argument reads only the
-state and the parameters (the unpacked names); a model with any other such call
-gets no lane form (the caller then runs the scalar rhs).  sqrt, the arithmetic and
-the taut/slack branches (if-converted into selects) stay in the vector loop.
+vectorise the loop across lanes.  It cannot vectorise a loop holding a call to libm
+(numba's build has no vector versions, ``numba -s``: SVML not available), so:
+
+* sin and cos (generated/trig.py's ``sincos``: polynomials, libm only for |x| ≥
+  trig.LIMIT) stay in the vector loop as ``sincos_lane(x, s[j], s[j + 1])``; a first,
+  scalar loop stores libm's values for the lanes beyond the limit in s[j], s[j + 1]
+  (``sincos_beyond``), so each lane still equals the scalar ``sincos(x)`` bit for bit;
+* any other libm call (exp, log, ...) is hoisted into that first loop, which writes
+  it into s; the vector loop reads s.
+
+A call qualifies when its argument reads only the state and the parameters (the
+unpacked names); a model with any other such call gets no lane form (the caller then
+runs the scalar rhs).  sqrt, the arithmetic and the taut/slack branches (if-converted
+into selects) stay in the vector loop.
 """
 from __future__ import annotations
 
@@ -25,6 +32,8 @@ from .printer import wrap_statement
 # intrinsics that vectorise
 TRANSCENDENTAL = re.compile(
     r"math\.(sin|cos|tan|exp|expm1|log|log1p|atan2|atan|asin|acos|hypot|pow|sinh|cosh|tanh)\(")
+# generated/trig.py's sincos: group 2, a call the vector loop keeps
+CALL = re.compile(TRANSCENDENTAL.pattern + r"|(?<![\w.])(sincos)\(")
 # the lane arrays' row stride, a compile-time constant: with it LLVM sees every row of y,
 # p, s and dydt at a constant offset from the array's start, so the few run-time alias
 # checks it needs to vectorise fit its budget (with a run-time row stride it gives up)
@@ -78,40 +87,48 @@ def lanes_source(rhs_lines: list, indent: str = "    ") -> list:
         if m := _UNPACK.match(line):
             unpack[m.group(1)] = line
     text = "\n".join(_logical_lines(body))
-    calls = []  # distinct libm call texts, in order of first use
+    stored = []  # (what the first loop stores, rows of s), distinct, in order of first use
     out, pos = [], 0
-    for m in TRANSCENDENTAL.finditer(text):
+    for m in CALL.finditer(text):
         if m.start() < pos:
             continue  # nested inside a call already hoisted
         end = _call_end(text, m.end() - 1)
-        call = text[m.start():end]
-        names = set(_NAME.findall(call[m.end() - m.start():])) - {"math"}
-        if not names <= set(unpack) or "\n" in call:
+        call, arg = text[m.start():end], text[m.end():end - 1]
+        if not set(_NAME.findall(arg)) - {"math"} <= set(unpack) or "\n" in call:
             return []
-        if call not in calls:
-            calls.append(call)
-        out.append(text[pos:m.start()] + f"s[{calls.index(call)}*LANES + k]")
+        trig = m.group(2) is not None
+        if trig and TRANSCENDENTAL.search(arg):
+            return []
+        entry = (f"sincos_beyond({arg})", 2) if trig else (call, 1)
+        if entry not in stored:
+            stored.append(entry)
+        first = sum(n for _, n in stored[:stored.index(entry)])
+        rows = ", ".join(f"s[{first + i}*LANES + k]" for i in range(entry[1]))
+        out.append(text[pos:m.start()] + (f"sincos_lane({arg}, {rows})" if trig else rows))
         pos = end
     out.append(text[pos:])
     vector_body = "".join(out).split("\n")
     i1, i2 = indent, indent * 2
-    needed = set().union(*(set(_NAME.findall(c)) for c in calls)) if calls else set()
+    needed = set().union(*(set(_NAME.findall(c)) for c, _ in stored))
     lines = ["@njit(cache=True, inline=\"always\")",
              "def rhs_lanes(t, y, p, dydt, s):",
              f'{i1}"""rhs on K = len(t) <= LANES lanes: row i of y, p, dydt and of the',
              f"{i1}scratch s (N_TRANSCENDENTAL rows) is [i*LANES, i*LANES + K).",
              "",
-             f"{i1}Each lane equals rhs bit for bit (derive/lanes.py); the libm calls",
+             f"{i1}Each lane equals rhs bit for bit (derive/lanes.py); libm's values",
              f'{i1}come first, lane by lane, so that the second loop vectorises.',
              f'{i1}"""',
              f"{i1}for k in range(t.shape[0]):"]
     lines += [_index_names(unpack[n]).replace(i1, i2, 1) for n in unpack if n in needed]
-    lines += [f"{i2}s[{j}*LANES + k] = {c}" for j, c in enumerate(calls)]
-    if not calls:
+    first = 0
+    for c, n in stored:
+        lines.append(f"{i2}{', '.join(f's[{first + i}*LANES + k]' for i in range(n))} = {c}")
+        first += n
+    if not stored:
         lines.append(f"{i2}pass")
     lines.append(f"{i1}for k in range(t.shape[0]):")
     for line in vector_body:
         lines += wrap_statement(i1 + _index_names(line)) if line.strip() else [line]
-    return [f"N_TRANSCENDENTAL = {max(1, len(calls))}",
+    return [f"N_TRANSCENDENTAL = {max(1, first)}",
             f"LANES = {LANES}  # row stride of the lane arrays: the most lanes (AVX-512)",
             "", ""] + lines

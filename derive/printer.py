@@ -17,7 +17,7 @@ the solve of M q̈ = Q − f:
 A kernel is a header (decorator, signature, docstring), the unpacking of y and p
 into named locals, and a body of cse'd straight-line code.  :func:`kernel`
 keeps only the unpacking lines the body reads (directly or through another kept
-line, e.g. ``sin_theta = math.sin(theta)``), found from the body's syntax tree,
+line, e.g. ``sin_theta, cos_theta = sincos(theta)``), found from the body's syntax tree,
 so generated code has no unused locals (ruff F841) whatever subset of the state
 and parameters a kernel needs.
 """
@@ -38,10 +38,17 @@ _STATEMENT = re.compile(r"^(\s*)(return |[^=]*? (?:=|\+=|-=) )(.*)$")
 
 
 class NumbaPrinter(PythonCodePrinter):
-    """Python printer for scalar numba code (math module, no numpy)."""
+    """Python printer for scalar numba code (math module, no numpy); sin and cos are
+    generated/trig.py's ``sincos`` (derive/trig.py says why)."""
 
     def __init__(self):
         super().__init__({"fully_qualified_modules": True, "standard": "python3"})
+
+    def _print_sin(self, expr):
+        return f"sincos({self._print(expr.args[0])})[0]"
+
+    def _print_cos(self, expr):
+        return f"sincos({self._print(expr.args[0])})[1]"
 
     def _print_InverseSqrtMinusOne(self, expr):
         return f"math.expm1(-0.5*math.log1p({self._print(expr.args[0])}))"
@@ -92,15 +99,15 @@ def _loads(source: str) -> set:
 
 
 def used_unpacking(unpack, body) -> list:
-    """The lines of ``unpack`` (``name = expr``, in order) that ``body`` needs.
+    """The lines of ``unpack`` (``name = expr`` or ``a, b = expr``, in order) that ``body`` needs.
 
-    A line is kept when the body, or a kept line after it, reads its name.
+    A line is kept when the body, or a kept line after it, reads one of its names.
     """
     needed = _loads("\n".join(body))
     kept = []
     for line in reversed(unpack):
         target, value = line.split("=", 1)
-        if target.strip() in needed:
+        if {name.strip() for name in target.split(",")} & needed:
             kept.append(line)
             needed |= _loads(value)
     return kept[::-1]
@@ -295,7 +302,7 @@ def unpack_lines(state_names, parameters, angles) -> tuple:
     lines = [f"{INDENT}{n} = y[{i}]" for i, n in enumerate(state_names)]
     lines += [f"{INDENT}{p.name} = p[{i}]" for i, p in enumerate(parameters)]
     for a in angles:
-        lines += [f"{INDENT}sin_{a} = math.sin({a})", f"{INDENT}cos_{a} = math.cos({a})"]
+        lines.append(f"{INDENT}sin_{a}, cos_{a} = sincos({a})")
     return tuple(lines)
 
 

@@ -40,6 +40,8 @@ import math
 
 from numba import njit
 
+from .trig import sincos, sincos_beyond, sincos_lane
+
 MODEL = 'derived'
 DESCRIPTION = 'clean derivation of the thesis model, truncated to the order of Eqs 3.28-3.30'
 GEOMETRY = "planar"  # (δx, δy, θ): the thesis plane
@@ -87,8 +89,7 @@ def rhs(t, y, p, dydt):
     rho1 = p[19]
     rho2 = p[20]
     rho3 = p[21]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     # air drag on the three bodies (3.32-3.34)
     d0 = delta_y + r0
     d1 = -d0*omega + d0*omega_earth + delta_x_dot
@@ -169,13 +170,12 @@ def rhs_lanes(t, y, p, dydt, s):
     """rhs on K = len(t) <= LANES lanes: row i of y, p, dydt and of the
     scratch s (N_TRANSCENDENTAL rows) is [i*LANES, i*LANES + K).
 
-    Each lane equals rhs bit for bit (derive/lanes.py); the libm calls
+    Each lane equals rhs bit for bit (derive/lanes.py); libm's values
     come first, lane by lane, so that the second loop vectorises.
     """
     for k in range(t.shape[0]):
         theta = y[2*LANES + k]
-        s[0*LANES + k] = math.sin(theta)
-        s[1*LANES + k] = math.cos(theta)
+        s[0*LANES + k], s[1*LANES + k] = sincos_beyond(theta)
     for k in range(t.shape[0]):
         delta_x = y[0*LANES + k]
         delta_y = y[1*LANES + k]
@@ -204,8 +204,7 @@ def rhs_lanes(t, y, p, dydt, s):
         rho1 = p[19*LANES + k]
         rho2 = p[20*LANES + k]
         rho3 = p[21*LANES + k]
-        sin_theta = s[0*LANES + k]
-        cos_theta = s[1*LANES + k]
+        sin_theta, cos_theta = sincos_lane(theta, s[0*LANES + k], s[1*LANES + k])
         # air drag on the three bodies (3.32-3.34)
         d0 = delta_y + r0
         d1 = -d0*omega + d0*omega_earth + delta_x_dot
@@ -304,8 +303,7 @@ def family_forces(y, p, out):
     rho1 = p[19]
     rho2 = p[20]
     rho3 = p[21]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
     lambda2 = math.sqrt((-a*cos_theta - delta_y)**2 + (-a*sin_theta - delta_x)**2)
     out[:, :] = 0.0
@@ -401,8 +399,7 @@ def jacobi(y, p):
     E2 = p[11]
     r0 = p[15]
     omega = p[17]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     e0 = (1/2)*m3
     e1 = (3/2)*omega**2
     e2 = e1*m3
@@ -464,8 +461,7 @@ def jacobian(t, y, p, J):
     rho1 = p[19]
     rho2 = p[20]
     rho3 = p[21]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     jd0 = delta_y + r0
     jd1 = delta_x_dot - jd0*omega + jd0*omega_earth
     jd2 = delta_x*omega - delta_x*omega_earth + delta_y_dot
@@ -742,8 +738,7 @@ def tether_margins(y, p, g):
     b = p[7]
     l10 = p[8]
     l20 = p[9]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     g[0] = math.hypot(b*sin_theta - delta_x, b*cos_theta - delta_y) - l10
     g[1] = math.hypot(-a*sin_theta - delta_x, -a*cos_theta - delta_y) - l20
 
@@ -760,8 +755,7 @@ def body_radii(y, p):
     a = p[6]
     b = p[7]
     r0 = p[15]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     return (
             math.hypot(b*sin_theta, b*cos_theta + r0), math.hypot(-a*sin_theta, -a*cos_theta + r0),
             math.hypot(delta_x, delta_y + r0))

@@ -41,6 +41,8 @@ import math
 
 from numba import njit
 
+from .trig import sincos
+
 MODEL = 'exact-gravity'
 DESCRIPTION = 'derived model with exact point-mass gravity mu/|r| (no binomial expansion, no truncation)'
 GEOMETRY = "planar"  # (δx, δy, θ): the thesis plane
@@ -88,8 +90,7 @@ def rhs(t, y, p, dydt):
     rho1 = p[19]
     rho2 = p[20]
     rho3 = p[21]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     # air drag on the three bodies (3.32-3.34)
     d0 = delta_y + r0
     d1 = -d0*omega + d0*omega_earth + delta_x_dot
@@ -188,8 +189,7 @@ def family_forces(y, p, out):
     rho1 = p[19]
     rho2 = p[20]
     rho3 = p[21]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
     lambda2 = math.sqrt((-a*cos_theta - delta_y)**2 + (-a*sin_theta - delta_x)**2)
     out[:, :] = 0.0
@@ -285,8 +285,7 @@ def jacobi(y, p):
     E2 = p[11]
     r0 = p[15]
     omega = p[17]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     e0 = omega**2
     e1 = e0*m3
     e2 = delta_x**2
@@ -353,8 +352,7 @@ def jacobian(t, y, p, J):
     rho1 = p[19]
     rho2 = p[20]
     rho3 = p[21]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     jd0 = delta_y + r0
     jd1 = delta_x_dot - jd0*omega + jd0*omega_earth
     jd2 = delta_x*omega - delta_x*omega_earth + delta_y_dot
@@ -643,8 +641,7 @@ def tether_margins(y, p, g):
     b = p[7]
     l10 = p[8]
     l20 = p[9]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     g[0] = math.hypot(b*sin_theta - delta_x, b*cos_theta - delta_y) - l10
     g[1] = math.hypot(-a*sin_theta - delta_x, -a*cos_theta - delta_y) - l20
 
@@ -661,8 +658,7 @@ def body_radii(y, p):
     a = p[6]
     b = p[7]
     r0 = p[15]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     return (
             math.hypot(b*sin_theta, b*cos_theta + r0), math.hypot(-a*sin_theta, -a*cos_theta + r0),
             math.hypot(delta_x, delta_y + r0))

@@ -46,6 +46,8 @@ import math
 
 from numba import njit
 
+from .trig import sincos
+
 MODEL = 'free'
 DESCRIPTION = (
     'free orbit (r, nu as coordinates), thesis gravity binomial truncated at third degree in the offsets, '
@@ -137,8 +139,7 @@ def rhs(t, y, p, dydt):
     rho3 = p[19]
     J2 = p[20]
     R_E = p[21]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     # air drag on the three bodies (3.32-3.34, co-rotating air)
     d0 = delta_y + r
     d1 = -d0*nu_dot + d0*omega_earth + delta_x_dot
@@ -468,8 +469,7 @@ def family_forces(y, p, out):
     rho1 = p[17]
     rho2 = p[18]
     rho3 = p[19]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
     lambda2 = math.sqrt((-a*cos_theta - delta_y)**2 + (-a*sin_theta - delta_x)**2)
     out[:, :] = 0.0
@@ -635,8 +635,7 @@ def jacobi(y, p):
     mu = p[15]
     J2 = p[20]
     R_E = p[21]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     e0 = delta_y_dot*m3
     e1 = delta_x*nu_dot
     e2 = (1/2)*m3
@@ -731,8 +730,7 @@ def tether_margins(y, p, g):
     b = p[7]
     l10 = p[8]
     l20 = p[9]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     g[0] = math.hypot(b*sin_theta - delta_x, b*cos_theta - delta_y) - l10
     g[1] = math.hypot(-a*sin_theta - delta_x, -a*cos_theta - delta_y) - l20
 
@@ -749,8 +747,7 @@ def body_radii(y, p):
     r = y[3]
     a = p[6]
     b = p[7]
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_theta, cos_theta = sincos(theta)
     return (
             math.hypot(b*sin_theta, b*cos_theta + r), math.hypot(-a*sin_theta, -a*cos_theta + r),
             math.hypot(delta_x, delta_y + r))

@@ -53,6 +53,8 @@ import math
 
 from numba import njit
 
+from .trig import sincos
+
 MODEL = '3d'
 DESCRIPTION = (
     '3-D thesis model (roll, pitch, yaw; balloon in 3-D), binomial gravity truncated to the order of Eqs '
@@ -142,12 +144,9 @@ def rhs(t, y, p, dydt):
     I2_roll = p[25]
     I2_pitch = p[26]
     I2_yaw = p[27]
-    sin_phi = math.sin(phi)
-    cos_phi = math.cos(phi)
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
-    sin_psi = math.sin(psi)
-    cos_psi = math.cos(psi)
+    sin_phi, cos_phi = sincos(phi)
+    sin_theta, cos_theta = sincos(theta)
+    sin_psi, cos_psi = sincos(psi)
     # air drag on the three bodies (3.32-3.34)
     d0 = delta_y + r0
     d1 = -d0*omega + d0*omega_earth + delta_x_dot
@@ -627,10 +626,8 @@ def family_forces(y, p, out):
     rho1 = p[19]
     rho2 = p[20]
     rho3 = p[21]
-    sin_phi = math.sin(phi)
-    cos_phi = math.cos(phi)
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_phi, cos_phi = sincos(phi)
+    sin_theta, cos_theta = sincos(theta)
     lambda1 = (
             math.sqrt((b*sin_phi - delta_z)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*cos_phi*
             sin_theta - delta_x)**2))
@@ -776,12 +773,9 @@ def jacobi(y, p):
     I2_roll = p[25]
     I2_pitch = p[26]
     I2_yaw = p[27]
-    sin_phi = math.sin(phi)
-    cos_phi = math.cos(phi)
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
-    sin_psi = math.sin(psi)
-    cos_psi = math.cos(psi)
+    sin_phi, cos_phi = sincos(phi)
+    sin_theta, cos_theta = sincos(theta)
+    sin_psi, cos_psi = sincos(psi)
     e0 = (1/2)*psi_dot**2
     e1 = (1/2)*m3
     e2 = psi_dot*sin_phi*theta_dot
@@ -934,10 +928,8 @@ def tether_margins(y, p, g):
     b = p[7]
     l10 = p[8]
     l20 = p[9]
-    sin_phi = math.sin(phi)
-    cos_phi = math.cos(phi)
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_phi, cos_phi = sincos(phi)
+    sin_theta, cos_theta = sincos(theta)
     g[0] = (
             math.sqrt((b*cos_phi*sin_theta - delta_x)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*
             sin_phi - delta_z)**2) - l10)
@@ -960,10 +952,8 @@ def body_radii(y, p):
     a = p[6]
     b = p[7]
     r0 = p[15]
-    sin_phi = math.sin(phi)
-    cos_phi = math.cos(phi)
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_phi, cos_phi = sincos(phi)
+    sin_theta, cos_theta = sincos(theta)
     return (
             math.sqrt((b*cos_phi*sin_theta)**2 + (b*cos_phi*cos_theta + r0)**2 + (b*sin_phi)**2),
             math.sqrt((-a*cos_phi*sin_theta)**2 + (-a*cos_phi*cos_theta + r0)**2 + (-a*sin_phi)**2),

@@ -58,6 +58,8 @@ import math
 
 from numba import njit
 
+from .trig import sincos
+
 MODEL = '3d-free'
 DESCRIPTION = (
     '3-D model on a free orbit (r, nu as coordinates), thesis gravity binomial truncated at third degree in '
@@ -179,12 +181,9 @@ def rhs(t, y, p, dydt):
     I2_roll = p[25]
     I2_pitch = p[26]
     I2_yaw = p[27]
-    sin_phi = math.sin(phi)
-    cos_phi = math.cos(phi)
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
-    sin_psi = math.sin(psi)
-    cos_psi = math.cos(psi)
+    sin_phi, cos_phi = sincos(phi)
+    sin_theta, cos_theta = sincos(theta)
+    sin_psi, cos_psi = sincos(psi)
     # air drag on the three bodies (3.32-3.34, co-rotating air)
     d0 = delta_y + r
     d1 = -d0*nu_dot + d0*omega_earth + delta_x_dot
@@ -874,9 +873,9 @@ def rhs(t, y, p, dydt):
     mm6 = b*m1
     mm7 = mm5 - mm6
     mm8 = 2*psi
-    mm9 = -math.sin(mm8 - phi)
+    mm9 = -sincos(mm8 - phi)[0]
     mm10 = (1/4)*mm9
-    mm11 = math.sin(mm8 + phi)
+    mm11 = sincos(mm8 + phi)[0]
     mm12 = (1/4)*mm11
     mm13 = sin_phi**2
     mm14 = cos_phi**2
@@ -1141,10 +1140,8 @@ def family_forces(y, p, out):
     rho1 = p[17]
     rho2 = p[18]
     rho3 = p[19]
-    sin_phi = math.sin(phi)
-    cos_phi = math.cos(phi)
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_phi, cos_phi = sincos(phi)
+    sin_theta, cos_theta = sincos(theta)
     lambda1 = (
             math.sqrt((b*sin_phi - delta_z)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*cos_phi*
             sin_theta - delta_x)**2))
@@ -1411,12 +1408,9 @@ def jacobi(y, p):
     I2_roll = p[25]
     I2_pitch = p[26]
     I2_yaw = p[27]
-    sin_phi = math.sin(phi)
-    cos_phi = math.cos(phi)
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
-    sin_psi = math.sin(psi)
-    cos_psi = math.cos(psi)
+    sin_phi, cos_phi = sincos(phi)
+    sin_theta, cos_theta = sincos(theta)
+    sin_psi, cos_psi = sincos(psi)
     e0 = delta_y_dot*m3
     e1 = I1_yaw*nu_dot
     e2 = psi_dot*sin_phi
@@ -1646,10 +1640,8 @@ def tether_margins(y, p, g):
     b = p[7]
     l10 = p[8]
     l20 = p[9]
-    sin_phi = math.sin(phi)
-    cos_phi = math.cos(phi)
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_phi, cos_phi = sincos(phi)
+    sin_theta, cos_theta = sincos(theta)
     g[0] = (
             math.sqrt((b*cos_phi*sin_theta - delta_x)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*
             sin_phi - delta_z)**2) - l10)
@@ -1672,10 +1664,8 @@ def body_radii(y, p):
     r = y[6]
     a = p[6]
     b = p[7]
-    sin_phi = math.sin(phi)
-    cos_phi = math.cos(phi)
-    sin_theta = math.sin(theta)
-    cos_theta = math.cos(theta)
+    sin_phi, cos_phi = sincos(phi)
+    sin_theta, cos_theta = sincos(theta)
     return (
             math.sqrt((b*cos_phi*sin_theta)**2 + (b*cos_phi*cos_theta + r)**2 + (b*sin_phi)**2),
             math.sqrt((-a*cos_phi*sin_theta)**2 + (-a*cos_phi*cos_theta + r)**2 + (-a*sin_phi)**2),

@@ -66,6 +66,7 @@ from numba import literally, njit, types
 from numba.extending import overload
 
 import tethersim.generated as generated
+from tethersim.generated.trig import sincos
 from tethersim.model.bead_layout import (  # noqa: F401  (the layout, re-exported: one import for users)
     _A,
     _A1,
@@ -149,7 +150,7 @@ def _node(y, p, n, j, k):
         return y[0], y[1], y[nq], y[nq + 1]
     if k == 0:
         th, thd = y[2], y[nq + 2]
-        s, c = math.sin(th), math.cos(th)
+        s, c = sincos(th)  # the generated kernels' sin and cos (generated/trig.py)
         arm = p[_B] if j == 0 else -p[_A]  # tip-mass at +b, bus at −a along the boom
         return arm * s, arm * c, arm * thd * c, -arm * thd * s
     i = 3 + 2 * (j * n + k - 1)
@@ -263,7 +264,7 @@ def _rhs(kind, t, y, p, dydt):
     m1 = p[_M1] + p[NB] / (2.0 * (n + 1))
     m2 = p[_M2] + p[NB + 1] / (2.0 * (n + 1))
     inertia = m1 * p[_B] ** 2 + m2 * p[_A] ** 2
-    sc = (math.sin(y[2]), math.cos(y[2]))
+    sc = sincos(y[2])
     for j in range(2):
         for s in range(n + 1):
             fx, fy, dx, dy, _, _ = _segment(y, p, n, j, s, kind == _OBJECTIVE)

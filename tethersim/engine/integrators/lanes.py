@@ -7,7 +7,9 @@ the stages sits at [i*LANES, i*LANES + K) of a flat array: the row stride LANES 
 a compile-time constant, so LLVM sees every row at a constant offset and vectorises
 (with a run-time stride its alias checks exceed their budget and it gives up); the
 step is H[k].  The generated ``rhs_lanes`` (derive/lanes.py) is the scalar rhs inside
-a loop over k, its libm calls hoisted into a first loop, and :func:`rk4_lanes_step` is
+a loop over k: sin and cos are the generated polynomials (generated/trig.py), which
+vectorise; libm's values (beyond trig.LIMIT, other calls) come from a first, scalar
+loop over k.  :func:`rk4_lanes_step` is
 ``steps.rk4_step`` with the same loop over k innermost.  No fast-math anywhere: LLVM
 vectorises across lanes without fusing or reordering an operation, so each lane's
 numbers are those of the scalar step bit for bit (tests/engine/test_lanes.py).  Lanes
@@ -49,7 +51,7 @@ def model_rhs_lanes(model, t, y, p, dydt, s):
 
 
 def model_transcendentals(model):
-    """Rows of the lane rhs's scratch (its hoisted libm calls), a compile-time constant."""
+    """Rows of the lane rhs's scratch (libm values from its first loop), a compile-time constant."""
     raise NotImplementedError("model_transcendentals is only callable from compiled code")
 
 
