@@ -2,8 +2,9 @@
 
 The generated modules (generated/*.py) are straight-line code: assignments,
 ``+=``, ``if``/``else`` on the tether gates and the mass-matrix branch, calls to
-``math.sin``/``cos``/``sqrt``, integer powers and the small ``_solve2``/``_solve3``
-Cramer helpers.  :func:`function_to_c` turns one such function into C with the
+``sincos`` (generated/trig.py; printed as libm's ``sin``, ``cos``: a lean C port's
+choice, within 1 ulp of the kernels' polynomials), ``math.sqrt``, integer powers and
+the small ``_solve2``/``_solve3`` Cramer helpers.  :func:`function_to_c` turns one such function into C with the
 same operations in the same order (integer literals become doubles, since Python's
 ``9/2`` is 4.5; ``x**2``/``x**3`` become products, as numba emits them), so a C
 port of any generated model comes from the very code the engine runs.  It
@@ -20,6 +21,7 @@ _INT = re.compile(r"(?<![\w.\[])(\d+)(?![\w.\]])")
 _ASSIGN = re.compile(r"^([A-Za-z_]\w*(?:\[\d+\])?) (=|\+=) (.+)$")
 _TUPLE = re.compile(r"^((?:dydt\[\d+\], )+dydt\[\d+\]) = (_solve[23])\((.+)\)$")
 _RETURN_TUPLE = re.compile(r"^return \((.+)\)$")
+_SINCOS = re.compile(r"^(\w+), (\w+) = sincos\((\w+)\)$")
 
 HELPERS = r"""
 static inline double ipow2(double x) { return x * x; }
@@ -123,6 +125,10 @@ def function_to_c(fn, name: str, signature: str) -> str:
         elif line == "else:":
             out.append(f"{pad}}} else {{")
             depth_stack.append(indent + 4)
+        elif m := _SINCOS.match(line):
+            sin_name, cos_name, angle = m.groups()
+            declared |= {sin_name, cos_name}
+            out.append(f"{pad}double {sin_name} = sin({angle}), {cos_name} = cos({angle});")
         elif m := _TUPLE.match(line):
             targets = [f"&{t.strip()}" for t in m.group(1).split(",")]
             args = expression(m.group(3))

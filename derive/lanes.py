@@ -60,6 +60,11 @@ def _index_names(line: str) -> str:
     return code + hash_ + comment
 
 
+def _rows(first: int, n: int) -> str:
+    """Rows first .. first + n - 1 of the lane scratch s, lane k: ``s[j*LANES + k], ...``."""
+    return ", ".join(f"s[{first + i}*LANES + k]" for i in range(n))
+
+
 def _logical_lines(lines: list) -> list:
     """The printed lines with each statement wrapped over several lines joined into one
     (wrap_statement rewraps it at the lane body's deeper indent)."""
@@ -87,7 +92,7 @@ def lanes_source(rhs_lines: list, indent: str = "    ") -> list:
         if m := _UNPACK.match(line):
             unpack[m.group(1)] = line
     text = "\n".join(_logical_lines(body))
-    stored = []  # (what the first loop stores, rows of s), distinct, in order of first use
+    stored = {}  # (what the first loop stores, rows of s) -> its first row, in order of first use
     out, pos = [], 0
     for m in CALL.finditer(text):
         if m.start() < pos:
@@ -100,10 +105,8 @@ def lanes_source(rhs_lines: list, indent: str = "    ") -> list:
         if trig and TRANSCENDENTAL.search(arg):
             return []
         entry = (f"sincos_beyond({arg})", 2) if trig else (call, 1)
-        if entry not in stored:
-            stored.append(entry)
-        first = sum(n for _, n in stored[:stored.index(entry)])
-        rows = ", ".join(f"s[{first + i}*LANES + k]" for i in range(entry[1]))
+        stored.setdefault(entry, sum(n for _, n in stored))
+        rows = _rows(stored[entry], entry[1])
         out.append(text[pos:m.start()] + (f"sincos_lane({arg}, {rows})" if trig else rows))
         pos = end
     out.append(text[pos:])
@@ -120,15 +123,12 @@ def lanes_source(rhs_lines: list, indent: str = "    ") -> list:
              f'{i1}"""',
              f"{i1}for k in range(t.shape[0]):"]
     lines += [_index_names(unpack[n]).replace(i1, i2, 1) for n in unpack if n in needed]
-    first = 0
-    for c, n in stored:
-        lines.append(f"{i2}{', '.join(f's[{first + i}*LANES + k]' for i in range(n))} = {c}")
-        first += n
+    lines += [f"{i2}{_rows(first, n)} = {c}" for (c, n), first in stored.items()]
     if not stored:
         lines.append(f"{i2}pass")
     lines.append(f"{i1}for k in range(t.shape[0]):")
     for line in vector_body:
         lines += wrap_statement(i1 + _index_names(line)) if line.strip() else [line]
-    return [f"N_TRANSCENDENTAL = {max(1, first)}",
+    return [f"N_TRANSCENDENTAL = {max(1, sum(n for _, n in stored))}",
             f"LANES = {LANES}  # row stride of the lane arrays: the most lanes (AVX-512)",
             "", ""] + lines
