@@ -4,11 +4,11 @@ The generated modules (generated/*.py) are straight-line code: assignments,
 ``+=``, ``if``/``else`` on the tether gates and the mass-matrix branch, calls to
 ``sincos`` (generated/trig.py; printed as libm's ``sin``, ``cos``: a lean C port's
 choice, within 1 ulp of the kernels' polynomials), ``math.sqrt``, integer powers and
-the small ``_solve2``/``_solve3`` Cramer helpers.  :func:`function_to_c` turns one such function into C with the
-same operations in the same order (integer literals become doubles, since Python's
-``9/2`` is 4.5; ``x**2``/``x**3`` become products, as numba emits them), so a C
-port of any generated model comes from the very code the engine runs.  It
-refuses any construct it does not know, rather than printing wrong C.
+the small ``_solve2``/``_solve3`` Cramer helpers.  :func:`function_to_c` turns one
+such function into C with the same operations in the same order (integer literals
+become doubles, since Python's ``9/2`` is 4.5; ``x**2``/``x**3`` become products, as
+numba emits them), so a C port of any generated model comes from the very code the
+engine runs.  It refuses any construct it does not know, rather than printing wrong C.
 """
 from __future__ import annotations
 
