@@ -19,6 +19,7 @@ from tethersim.analysis import deorbit as law
 from tethersim.analysis.uncertainty import quantile_ci
 from tethersim.experiments.mc.inputs import EPOCH_FIRST, Input, epoch_seconds, observed_days, stream
 from tethersim.model.air import orbit_mean
+from tethersim.model.air.grid import seconds_into_day
 
 QUANTILES = (0.1, 0.5, 0.9)
 MAX_EPOCHS = 10_000
@@ -160,8 +161,8 @@ def flight_life(bc: float, altitude: float, epoch: str, reentry_altitude: float 
     check_altitudes(load_preset("satI").replace(reentry_altitude=reentry_altitude),
                     altitude, altitude, 1)
     sat = load_preset("satI")
-    start = epoch_seconds(str(np.datetime64(epoch, "D"))) + float(
-        (np.datetime64(epoch, "s") - np.datetime64(epoch, "D")) / np.timedelta64(1, "s"))
+    start = (epoch_seconds(str(np.datetime64(epoch, "D")))
+             + seconds_into_day(np.datetime64(epoch, "s")))
     return float(law.lifetimes(log_q(sat), orbit_mean.NODES, orbit_mean.history_row,
                                [altitude], bc, [start - epoch_seconds(orbit_mean.HISTORY_FIRST)],
                                reentry_altitude, max_years * law.YEAR)[0])

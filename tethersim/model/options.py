@@ -196,10 +196,11 @@ def air_model(sat):
 def _msis_uniform(air, altitude: float) -> float:
     import numpy as np
 
-    from tethersim.model.air.model import _ut0, check_altitude, msis_direct
+    from tethersim.model.air.grid import seconds_into_day
+    from tethersim.model.air.model import check_altitude, msis_direct
 
     h = check_altitude(air, altitude)
-    lon = np.deg2rad(15.0 * (np.arange(24.0) - _ut0(air) / 3600.0))  # 24 local times
+    lon = np.deg2rad(15.0 * (np.arange(24.0) - seconds_into_day(air.epoch) / 3600.0))  # 24 local times
     return float(np.mean(msis_direct(air, h, 0.0, lon)))
 
 

@@ -230,13 +230,17 @@ def _altitude_nodes(dx: float, hc: float) -> tuple:
     return x0, int(math.ceil((math.log(H_MAX - hc) - x0) / dx)) + 3
 
 
+def seconds_into_day(epoch) -> float:
+    """Seconds from the start of ``epoch``'s UTC day to ``epoch`` [s]."""
+    epoch = np.datetime64(epoch, "ms")
+    return float((epoch - epoch.astype("datetime64[D]")) / np.timedelta64(1, "s"))
+
+
 def grid_axes(epoch, n_days, dx=DX, n_lst=N_LST, n_t=N_T, hc=HC) -> np.ndarray:
     """The axes of :func:`build_grid`'s grid for a run from ``epoch`` (:data:`AXES_FIELDS`)."""
-    epoch = np.datetime64(epoch, "ms")
-    day0 = epoch.astype("datetime64[D]")
-    ut0 = float((epoch - day0.astype("datetime64[ms]")) / np.timedelta64(1, "s"))
     x0, n_h = _altitude_nodes(dx, hc)
-    return np.array([x0, dx, n_h, n_lst, ut0, DAY / n_t, n_t, n_days, H_MIN, H_MAX, hc], float)
+    return np.array([x0, dx, n_h, n_lst, seconds_into_day(epoch), DAY / n_t, n_t, n_days,
+                     H_MIN, H_MAX, hc], float)
 
 
 def grid_values(day0, indices, dx=DX, n_lst=N_LST, n_t=N_T, hc=HC) -> np.ndarray:

