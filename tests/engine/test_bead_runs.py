@@ -41,17 +41,15 @@ def test_a_bead_run_writes_bead_columns_and_the_tether_shape(tmp_path):
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason=(
-    "the loop locates a line's switch only where its most stretched segment goes slack or "
-    "taut (beads.tether_margins); another segment's kink is stepped over, and h jumps there "
-    "(3.9e-8 J at t = 22178 s, 4.2e-8 J in all, with the kernels' own sincos; 1.7e-8 J "
-    "with libm's): a per-segment switch is issue 21's open work"))
 def test_a_bead_chain_run_conserves_the_jacobi_integral_to_1e_8_over_five_orbits():
     """Two beads of 1/6 kg per line (0.5 kg lines), the thesis's springs, drag and
     dampers off, from the preset's start (balloon 29 m behind): the compiled DOP853 loop
     at rtol 1e-12 keeps the chain's Jacobi integral (tethersim.model.beads.jacobi, which
     the loop never evaluates) to 1e-8 of |h| and of the spring energy exchanged, over five
-    orbits with segments going slack and taut (issue 21's energy target)."""
+    orbits with segments going slack and taut (issue 21's energy target).  It holds
+    because every segment's switch is an event of its own (engine/events.py): with only
+    each line's most stretched segment located, the kinks of the others were stepped
+    over and the drift was twice the bound."""
     import numpy as np
 
     import tethersim as ts
@@ -100,3 +98,36 @@ def test_a_chain_started_at_its_own_equilibrium_stays_there_for_an_orbit():
                              False, start=y_straight)
     assert straight.status == "ok"
     assert np.max(np.abs(straight.states[:, 3:nq] - y_straight[3:nq])) > 10 * tol
+
+
+@pytest.mark.slow
+def test_each_segment_of_a_chain_is_a_switch_slot_of_its_own():
+    """A chain's event vector (engine/events.py) holds, after the fixed slots, one
+    switch slot per segment, (N + 1) λ_s − l_j0, tether 1's then tether 2's: checked
+    against the segments' lengths from the node positions in numpy.  Slots 0, 1 (each
+    line's most stretched segment) are the largest of their line's slots, bit for bit;
+    without switch location the segment slots are +1."""
+    import numpy as np
+
+    import tethersim as ts
+    from tethersim.engine.events import N_EVENTS, event_parameters, events_at
+    from tethersim.model.registry import model_index
+    n = 2
+    sat = ts.load_preset("satI").replace(mt1=0.5, mt2=0.5)
+    r = ts.simulate(sat, 0.05, method="adaptive", samples=20, progress=False, beads=n)
+    k, p = model_index(r.model), r.parameters
+    ev = event_parameters(sat, r.model)
+    for y in r.states[::4]:
+        g = events_at(k, y, p, ev)
+        assert g.shape == (N_EVENTS + 2 * (n + 1),)
+        th = y[2]
+        for j, (arm, l0) in enumerate(((sat.b, sat.l10), (-sat.a, sat.l20))):
+            nodes = [(arm * np.sin(th), arm * np.cos(th))]
+            nodes += [tuple(y[3 + 2 * (j * n + i):5 + 2 * (j * n + i)]) for i in range(n)]
+            nodes += [(y[0], y[1])]
+            lam = np.hypot(*np.diff(np.array(nodes), axis=0).T)
+            seg = g[N_EVENTS + j * (n + 1):N_EVENTS + (j + 1) * (n + 1)]
+            np.testing.assert_allclose(seg, (n + 1) * lam - l0, rtol=0, atol=1e-12 * l0)
+            assert g[j] == seg.max()
+        off = events_at(k, y, p, ev, switches=False)
+        assert np.all(off[N_EVENTS:] == 1.0)

@@ -18,12 +18,17 @@ slot   name             kind      g (positive: inside)
 7, 8   tether break     terminal  l_j0 Fb_j / E_j − (λ_j − l_j0): the spring's tension
                                   E_j (λ_j − l_j0) / l_j0 reaches the breaking load Fb_j
                                   (``Satellite.Fb1``, ``Fb2``; 0: never breaks)
+9 ...  segment k        switch    a bead chain's segments (tethersim.model.beads):
+                                  (N + 1)(λ_s − l_s), tether 1's N + 1 then tether 2's
 =====  ===============  ========  ====================================================
 
-A slot a model lacks is +1 (it never fires).  A terminal event fires when its
-slot goes from positive to non-positive; the run stops just past it (status
-``re-entered`` for the re-entry, ``tether-broke`` for a break, else
-``left-domain``: engine/domain.py).  The break is judged on the spring's tension,
+A slot a model lacks is +1 (it never fires).  A bead chain's vector is longer
+(:func:`model_n_events`): its lines go taut and slack segment by segment, and
+slots 0, 1 (the most stretched segment, the stretch and break limits' measure)
+would miss the kinks of the others, so each segment is a switch slot of its own.
+A terminal event fires when its slot goes from positive to non-positive; the
+run stops just past it (status ``re-entered`` for the re-entry, ``tether-broke``
+for a break, else ``left-domain``: engine/domain.py).  The break is judged on the spring's tension,
 the damper's share left out: the damper stands for the line's internal loss, and
 a dashpot force on a fast snap is not a load the fibre's strength is quoted for.  The
 limits of one run (h_min, the reach, MAX_STRETCH, ROLL_LIMIT) come in the small
@@ -42,7 +47,7 @@ from numba.extending import overload
 from tethersim.engine.dynamics import literal_index, model_tether_margins
 from tethersim.engine.integrators.select import call
 from tethersim.model.constants import R_EARTH
-from tethersim.model.registry import record
+from tethersim.model.registry import bead_index, kernels_of, record
 
 Event = namedtuple("Event", "name terminal status")
 #: the single table of events: slot order of model_events' vector (module docstring)
@@ -62,6 +67,36 @@ N_SWITCH = sum(not e.terminal for e in EVENTS)  # the switch slots come first
 SLOT = {e.name: i for i, e in enumerate(EVENTS)}
 STOPS = tuple(e.name for e in EVENTS if e.terminal)
 # the event parameter vector (event_parameters): where each limit sits
+
+
+@njit(cache=True, inline="always")
+def is_switch(slot):
+    """Whether event ``slot`` is a switch (the run continues across it); -1 (none) too."""
+    return slot < N_SWITCH or slot >= N_EVENTS
+
+
+def model_n_events(model, y):
+    """Length of model ``model``'s event vector (compiled code, literal model only):
+    N_EVENTS, and a bead chain's segment slots after them (module docstring)."""
+    raise NotImplementedError("model_n_events is only callable from compiled code")
+
+
+@overload(model_n_events, inline="always", prefer_literal=True)
+def _model_n_events(model, y):
+    if (k := literal_index(model)) is None:
+        return None
+    if bead_index(k):
+        count = kernels_of(k).segment_count
+
+        def impl(model, y):
+            return N_EVENTS + count(y)
+        return impl
+
+    def impl(model, y):
+        return N_EVENTS
+    return impl
+
+
 EV_H_MIN, EV_ROLL, EV_REACH2, EV_STRETCH, EV_L10, EV_L20, EV_NEAR2, EV_BREAK1, EV_BREAK2 = range(9)
 N_EV = 9
 
@@ -120,12 +155,18 @@ def event_parameters(sat, model: str, stops=STOPS) -> np.ndarray:
     return ev
 
 
+@njit(cache=True, inline="always")
+def _no_segments(y, p, g, first):
+    pass
+
+
 def model_events(model, y, p, ev, g, switches):
     """g[i] = event i of model ``model`` at state y (compiled code, literal model only).
 
-    ``switches``: whether slots 0, 1 (the tether margins) are wanted; when not, and
-    the balloon is too close for any stretch or break limit, the tether lengths are
-    not evaluated and slots 0, 1, 5-8 are +1.
+    ``switches``: whether slots 0, 1 (the tether margins) and a chain's segment slots
+    are wanted; when not, the segment slots are +1 and, when the balloon is too close
+    for any stretch or break limit, the tether lengths are not evaluated and slots 0,
+    1, 5-8 are +1.  g has :func:`model_n_events` slots.
     """
     raise NotImplementedError("model_events is only callable from compiled code")
 
@@ -135,6 +176,8 @@ def _model_events(model, y, p, ev, g, switches):
     if (k := literal_index(model)) is None:
         return None
     names = record(k).state
+    chain = bead_index(k)
+    segments = kernels_of(k).segment_margins if chain else _no_segments
     ix, iy = names.index("delta_x"), names.index("delta_y")
     iz = names.index("delta_z") if "delta_z" in names else -1
     i_r = names.index("r") if "r" in names else -1
@@ -167,13 +210,19 @@ def _model_events(model, y, p, ev, g, switches):
             g[6] = 1.0
             g[7] = 1.0
             g[8] = 1.0
+        if chain:
+            if switches:
+                segments(y, p, g, N_EVENTS)
+            else:
+                for i in range(N_EVENTS, g.shape[0]):
+                    g[i] = 1.0
     return impl
 
 
 @njit(cache=True)
 def _events_at(model, y, p, ev, switches):
     literally(model)
-    g = np.empty(N_EVENTS)
+    g = np.empty(model_n_events(model, y))
     model_events(model, y, p, ev, g, switches)
     return g
 

@@ -295,6 +295,26 @@ def tether_margins(y, p, g):
         g[j] = worst - p[_L10 + j]
 
 
+@njit(cache=True, inline="always")
+def segment_count(y):
+    """Segments of both lines together, 2 (N + 1): the chain's own switch slots."""
+    return 2 * ((y.shape[0] // 2 - 3) // 4 + 1)
+
+
+@njit(cache=True)  # not inlined: numba's inliner trips on its loops in model_events
+def segment_margins(y, p, g, first):
+    """g[first + j (N + 1) + s] = (N + 1)(λ_s − l_s) [m]: each segment's taut/slack margin,
+    tether j's segment s (boom end first), in the line's extension units as
+    :func:`tether_margins`; each is an event of its own, so the loops locate every
+    segment's switch, not only the most stretched one's."""
+    n = (y.shape[0] // 2 - 3) // 4
+    for j in range(2):
+        for s in range(n + 1):
+            x0, y0, _, _ = _node(y, p, n, j, s)
+            x1, y1, _, _ = _node(y, p, n, j, s + 1)
+            g[first + j * (n + 1) + s] = (n + 1) * math.hypot(x1 - x0, y1 - y0) - p[_L10 + j]
+
+
 @njit(cache=True)
 def _jacobi(kind, y, p):
     """Jacobi integral of the chain model [J]: constant with every drag and damper off.
@@ -377,12 +397,15 @@ _KERNELS = {"derived": Kernels(rhs_derived, jacobi_derived, tensions),
 
 def engine_kernels(base: str) -> SimpleNamespace:
     """The module interface the engine's compiled loops read (tethersim.engine.dynamics):
-    ``rhs``, ``tether_margins`` (the most stretched segment of each line), ``body_radii``
+    ``rhs``, ``tether_margins`` (the most stretched segment of each line),
+    ``segment_count`` and ``segment_margins`` (every segment's switch, engine/events.py),
+    ``body_radii``
     (the base model's: the beads' air is the balloon's, ``_segment``) and ``jacobi``."""
     check_base(base)
     k = _KERNELS[base]
     return SimpleNamespace(rhs=k.rhs, jacobi=k.jacobi, tensions=tensions,
-                           tether_margins=tether_margins,
+                           tether_margins=tether_margins, segment_count=segment_count,
+                           segment_margins=segment_margins,
                            body_radii=_GENERATED[base].body_radii)
 
 

@@ -22,7 +22,7 @@ import numpy as np
 from numba import literally, njit
 
 from tethersim.engine.dynamics import derivative, model_size
-from tethersim.engine.events import N_EVENTS, N_SWITCH, model_events
+from tethersim.engine.events import N_EVENTS, N_SWITCH, is_switch, model_events, model_n_events
 from tethersim.engine.integrators import switching
 from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.steps import (
@@ -53,6 +53,7 @@ def _dop853_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out
     counters, work, y_new, f, F, g = (borrow(counters), borrow(work), borrow(y_new), borrow(f),
                                       borrow(F), borrow(g))
     n = model_size(model, y)  # a compile-time constant: the loops below unroll
+    ne = model_n_events(model, y)  # g's length, a constant but for bead chains
     K = work[:N_K]
     ys = work[N_K]
     g0, g1 = g[0], g[1]
@@ -102,7 +103,7 @@ def _dop853_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out
         if switching.fired(g0, g1, locate):
             h_try, hit = switching.locate(1, model, air, t, y, f, h_try, p, pw, ev, work, y_new,
                                           g0, g1, g[2], locate)
-            if hit < N_SWITCH:
+            if is_switch(hit):
                 counters[3] += 1
                 hit = -1
         counters[1] += 1
@@ -120,7 +121,7 @@ def _dop853_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out
         for i in range(n):
             y[i] = y_new[i]
             f[i] = K[12, i]
-        for i in range(N_EVENTS):
+        for i in range(ne):
             g0[i] = g1[i]
         t = t_new
         h = h_next
@@ -188,6 +189,6 @@ def dop853_run(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_t
     y_new = np.empty(n)
     f = np.empty(n)
     F = np.empty((7, n))
-    g = np.empty((3, N_EVENTS))  # events at both ends of a step, and a trial
+    g = np.empty((3, model_n_events(model, y)))  # events at both ends of a step, and a trial
     return _dop853_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_t,
                         out_y, i_out, max_steps, counters, t_pause, work, y_new, f, F, g)

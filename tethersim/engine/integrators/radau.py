@@ -14,7 +14,7 @@ import numpy as np
 from numba import literally, njit
 
 from tethersim.engine.dynamics import derivative, model_size
-from tethersim.engine.events import N_EVENTS, N_SWITCH, model_events
+from tethersim.engine.events import N_EVENTS, N_SWITCH, is_switch, model_events, model_n_events
 from tethersim.engine.integrators import switching
 from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.dop853 import (
@@ -65,6 +65,7 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
     Z, W, F, Q, J, LR, LC = borrow(Z), borrow(W), borrow(F), borrow(Q), borrow(J), borrow(LR), borrow(LC)
     pr, pc, v, bc, g = borrow(pr), borrow(pc), borrow(v), borrow(bc), borrow(g)
     n = model_size(model, y)
+    ne = model_n_events(model, y)  # g's length, a constant but for bead chains
     f, y_new, f_new, ys, fs, scale, err, y_old = v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]
     br = v[8]
     # what the previous call left (carry): Jacobian, controller memory, last dense output
@@ -225,7 +226,7 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
                         Q[i, 2] *= r * r * r
                 hs = tau
                 t_new = t + tau
-            if hit < N_SWITCH:
+            if is_switch(hit):
                 counters[3] += 1
                 hit = -1
         counters[1] += 1
@@ -249,7 +250,7 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
             y_old[i] = y[i]
             y[i] = y_new[i]
             f[i] = f_new[i]
-        for i in range(N_EVENTS):
+        for i in range(ne):
             g0[i] = g1[i]
         t_old, h_last, have_sol = t, hs, True
         t = t_new
@@ -298,7 +299,7 @@ def radau_run(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_t,
     pc = np.empty(2 * n, dtype=np.int64)
     v = np.empty((9, n))
     bc = np.empty(2 * n)
-    g = np.empty((3, N_EVENTS))  # events at both ends of a step, and a trial
+    g = np.empty((3, model_n_events(model, y)))  # events at both ends of a step, and a trial
     return _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_t, out_y,
                        i_out, max_steps, counters, carry, t_pause, Z, W, F, Q, J, LR, LC, pr,
                        pc, v, bc, g)

@@ -22,7 +22,7 @@ import numpy as np
 from numba import literally, njit
 
 from tethersim.engine.dynamics import model_size
-from tethersim.engine.events import N_EVENTS, N_SWITCH, model_events
+from tethersim.engine.events import N_EVENTS, N_SWITCH, is_switch, model_events, model_n_events
 from tethersim.engine.integrators import switching
 from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.steps import copy_into, rk4_step
@@ -59,7 +59,7 @@ def rk4_advance(model, air, t, y, h, p, pw, ev, work, y_new, g0, g1, g, switches
         copy_into(g0, g1)
         t += tau
         remaining -= tau
-        if j >= N_SWITCH:
+        if not is_switch(j):
             return splits, j, t
         splits += 1
         if splits > MAX_SPLITS:
@@ -76,6 +76,7 @@ def _rk4_loop(model, air, k0, y, h, n_steps, stride, p, pw, ev, locate, out_t, o
     work, y_new, g = borrow(work), borrow(y_new), borrow(g)
     g0, g1 = g[0], g[1]
     n = model_size(model, y)  # a compile-time constant: the loops below unroll
+    ne = model_n_events(model, y)  # g's length, a constant but for bead chains
     row = row0
     switches = 0
     model_events(model, y, p, ev, g0, locate)
@@ -100,7 +101,7 @@ def _rk4_loop(model, air, k0, y, h, n_steps, stride, p, pw, ev, locate, out_t, o
             else:
                 for i in range(n):
                     y[i] = y_new[i]
-                for i in range(N_EVENTS):
+                for i in range(ne):
                     g0[i] = g1[i]
         if hit >= 0:  # the located state is the last row, at the event's time
             if row < out_t.shape[0]:
@@ -165,6 +166,6 @@ def rk4_run(model, air, k0, y, h, n_steps, stride, p, pw, ev, locate, out_t, out
     n = y.shape[0]
     work = np.empty((5, n))
     y_new = np.empty(n)
-    g = np.empty((3, N_EVENTS))  # events at both ends of a step, and a trial
+    g = np.empty((3, model_n_events(model, y)))  # events at both ends of a step, and a trial
     return _rk4_loop(model, air, k0, y, h, n_steps, stride, p, pw, ev, locate, out_t, out_y,
                      row0, work, y_new, g)

@@ -17,7 +17,7 @@ from __future__ import annotations
 from numba import njit
 
 from tethersim.engine.dynamics import model_size
-from tethersim.engine.events import N_SWITCH, model_events
+from tethersim.engine.events import N_EVENTS, N_SWITCH, is_switch, model_events
 from tethersim.engine.integrators.steps import copy_into, dop853_step, rk4_step
 
 RTOL_TAU = 1e-12  # bracket width, relative to the step, at which the search stops
@@ -28,7 +28,7 @@ MAX_ITER = 60
 def _crosses(j, a, b):
     """Whether slot j crosses from value a to b: a switch either way, a stopping limit
     from inside (> 0) to outside (<= 0; NaN is no crossing)."""
-    if j < N_SWITCH:
+    if is_switch(j):
         return (a > 0.0) != (b > 0.0)
     return a > 0.0 and b <= 0.0
 
@@ -41,8 +41,8 @@ def fired(g0, g1, switches):
     whenever it goes from inside (> 0) to outside (<= 0; a NaN is no crossing:
     the loops report a non-finite state as such).
     """
-    first = 0 if switches else N_SWITCH
-    for j in range(first, g0.shape[0]):
+    first, last = (0, g0.shape[0]) if switches else (N_SWITCH, N_EVENTS)
+    for j in range(first, last):
         if _crosses(j, g0[j], g1[j]):
             return True
     return False
@@ -78,8 +78,8 @@ def locate(method, model, air, t, y, f, h, p, pw, ev, work, y_new, g0, g1, g, sw
     tau_best = h
     j_best = -1
     copy_into(g, g1)
-    first = 0 if switches else N_SWITCH
-    for j in range(first, g0.shape[0]):
+    first, last = (0, g0.shape[0]) if switches else (N_SWITCH, N_EVENTS)
+    for j in range(first, last):
         if not _crosses(j, g0[j], g1[j]):
             continue
         lo, hi = 0.0, tau_best
