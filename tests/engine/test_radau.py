@@ -48,16 +48,21 @@ def _radau(sat, periods, rtol, pauses=(), model="derived", atol=1e-12, locate=Tr
     return y, counters, out_y
 
 
-def test_lu_solve_matches_numpy_solve_with_pivoting():
+@pytest.mark.parametrize("dtype", [float, complex])
+def test_lu_solve_matches_numpy_solve_with_pivoting(dtype):
+    """Real (Radau's real system) and complex (its complex pair, radau_step._factor)."""
     rng = np.random.default_rng(3)
     for n in (1, 2, 5, 10, 20):
         A = rng.normal(size=(n, n)) * 10.0 ** rng.uniform(-3, 3, size=(n, 1))
+        b = rng.normal(size=n).astype(dtype)
+        if dtype is complex:
+            A = A + 1j * rng.normal(size=(n, n)) * 10.0 ** rng.uniform(-3, 3, size=(n, 1))
+            b += 1j * rng.normal(size=n)
         if n > 1:
             A[0, 0] = 0.0  # the first pivot must be a swap
-        b = rng.normal(size=n)
         LU, piv, x = A.copy(), np.empty(n, dtype=np.int64), b.copy()
-        lu_factor(LU, piv)
-        lu_solve(LU, piv, x)
+        lu_factor(LU, piv, n)
+        lu_solve(LU, piv, x, n)
         assert np.allclose(x, np.linalg.solve(A, b), rtol=1e-10, atol=0)
 
 

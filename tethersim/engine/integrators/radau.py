@@ -162,7 +162,7 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
                 ze = (Z[0, i] * E[0] + Z[1, i] * E[1] + Z[2, i] * E[2]) / hs
                 F[0, i] = ze  # F is free after Newton: the filtered error's right side
                 err[i] = f[i] + ze
-            lu_solve(LR, pr, err)
+            lu_solve(LR, pr, err, n)
             for i in range(n):
                 scale[i] = atol + max(abs(y[i]), abs(y_new[i])) * rtol
             err_norm = _rms(err, n, scale)
@@ -174,7 +174,7 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
                 counters[0] += 1
                 for i in range(n):
                     err[i] = fs[i] + F[0, i]
-                lu_solve(LR, pr, err)
+                lu_solve(LR, pr, err, n)
                 err_norm = _rms(err, n, scale)
             if not math.isfinite(err_norm):
                 err_norm = 1e10
@@ -294,11 +294,11 @@ def radau_run(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_t,
     Q = np.empty((n, 3))
     J = np.empty((n, n))
     LR = np.empty((n, n))
-    LC = np.empty((2 * n, 2 * n))
+    LC = np.empty((n, n), dtype=np.complex128)
     pr = np.empty(n, dtype=np.int64)
-    pc = np.empty(2 * n, dtype=np.int64)
+    pc = np.empty(n, dtype=np.int64)
     v = np.empty((9, n))
-    bc = np.empty(2 * n)
+    bc = np.empty(n, dtype=np.complex128)
     g = np.empty((3, model_n_events(model, y)))  # events at both ends of a step, and a trial
     return _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_t, out_y,
                        i_out, max_steps, counters, carry, t_pause, Z, W, F, Q, J, LR, LC, pr,
