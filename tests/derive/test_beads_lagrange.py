@@ -24,7 +24,7 @@ from sympy.physics.mechanics import LagrangesMethod, Point, ReferenceFrame, dyna
 import tethersim as ts
 from derive.pipeline import truncate_inverse_r0
 from derive.symbols import P
-from tethersim.model import beads
+from tethersim.model import bead_kernels, beads
 from tethersim.model.bead_layout import SCRATCH
 from tethersim.model.inputs import parameter_vector
 
@@ -188,7 +188,7 @@ def test_chain_kernel_equals_lagrange_equations_of_the_bead_chain(n, base):
     sat = ts.load_preset("satI").replace(l10=5.0, l20=4.0, E1=3.0, E2=5.0, c1=0.02, c2=0.03,
                                          allow_implausible=True)
     p = beads.parameter_vector(parameter_vector(sat, base), 0.2, 0.3, 1e-3, 2e-3, 2.2, n=n)
-    k = beads.kernels(base)
+    k = bead_kernels.kernels(base)
     rng = np.random.default_rng(100 + n)
     seen = set()
     for y in _states(rng, n, p, 12):

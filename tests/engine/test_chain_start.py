@@ -8,7 +8,7 @@ import pytest
 
 import tethersim as ts
 from tethersim.engine.start import start_run
-from tethersim.model import beads
+from tethersim.model import bead_kernels, beads
 from tethersim.model.bead_layout import straight_chain
 from tethersim.model.inputs import initial_model_state, parameter_vector
 
@@ -27,7 +27,7 @@ def _at_rest(model, sat, y, base="derived"):
     """The chain kernel's accelerations at the coordinates of y, rates zero."""
     nq = y.size // 2
     d = np.empty_like(y)
-    beads.kernels(base).rhs(0.0, np.concatenate([y[:nq], np.zeros(nq)]),
+    bead_kernels.kernels(base).rhs(0.0, np.concatenate([y[:nq], np.zeros(nq)]),
                             parameter_vector(sat, model), d)
     return d[nq:]
 
@@ -102,7 +102,7 @@ def test_a_chain_equilibrium_not_found_falls_back_to_the_straight_chain_in_one_w
     with no equilibrium near its straight start): the straight chain, and one line saying
     so."""
     rng = np.random.default_rng(21)
-    real = beads.kernels("derived")
+    real = bead_kernels.kernels("derived")
 
     def noisy(t, y, p, dydt):
         real.rhs(t, y, p, dydt)

@@ -9,7 +9,7 @@ import pytest
 from scipy.integrate import solve_ivp
 
 import tethersim as ts
-from tethersim.model import beads
+from tethersim.model import bead_kernels, beads
 from tethersim.model.inputs import parameter_vector
 from tethersim.model.registry import get_model
 
@@ -52,7 +52,7 @@ def test_zero_beads_reproduce_the_base_model_to_1e_12(base):
     """N = 0, massless lines: the chain kernel's own tether forces (one segment per
     line) against the generated rhs, taut and slack tethers, drag and dampers on."""
     rng = np.random.default_rng(21)
-    k = beads.kernels(base)
+    k = bead_kernels.kernels(base)
     ref_rhs = get_model(base).module.rhs
     # thesis lines and a stiff real line, so the tether terms dominate some rows
     for E1, E2, c1, c2 in ((SAT.E1, SAT.E2, SAT.c1, SAT.c2), (9e4, 5e4, 30.0, 20.0)):
@@ -99,7 +99,7 @@ def test_transverse_and_axial_modes_of_a_taut_chain_match_the_bead_string(n):
     l_s the stretched segment length, the axial block's 2 √((E/l_s0)/m_b) sin(...)
     (the textbook bead string; the kernel never forms this formula)."""
     y, p, sat, L = _static_chain(n)
-    k = beads.kernels("derived")
+    k = bead_kernels.kernels("derived")
     nq = y.size // 2
     f0 = np.empty_like(y)
     k.rhs(0.0, y, p, f0)
@@ -138,7 +138,7 @@ def test_jacobi_integral_of_a_bead_chain_is_conserved_without_drag_and_dampers()
     n = 2
     p = beads.parameter_vector(parameter_vector(sat, "derived"), 0.5, 0.5, n=n)
     y0 = beads.straight_chain(np.array([4.0, 0.0, 0.3, 0.0, 0.0, 0.0]), n, p)
-    k = beads.kernels("derived")
+    k = bead_kernels.kernels("derived")
 
     def f(t, y):
         d = np.empty_like(y)
@@ -176,5 +176,5 @@ def test_bad_chain_input_is_one_line_naming_the_field_and_range(kw, words):
 
 def test_an_unknown_base_model_is_refused_in_one_line():
     with pytest.raises(ValueError) as e:
-        beads.kernels("3d")
+        bead_kernels.kernels("3d")
     assert "bead base model = '3d': allowed values derived, exact-gravity" in str(e.value)

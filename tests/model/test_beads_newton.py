@@ -31,7 +31,7 @@ import numpy as np
 import pytest
 
 import tethersim as ts
-from tethersim.model import beads
+from tethersim.model import bead_kernels, beads
 from tethersim.model.inputs import parameter_vector
 from tethersim.model.registry import get_model
 
@@ -208,7 +208,7 @@ def test_chain_accelerations_are_newtons_second_law_at_every_node(base, n):
     row of the kernel's dy/dt equals Newton's law written node by node to 1e-12 of the
     largest term it sums (rows: balloon, pitch, each bead)."""
     rng = np.random.default_rng(2100 + n)
-    k = beads.kernels(base)
+    k = bead_kernels.kernels(base)
     exact, objective = base == "exact-gravity", base == "objective-damper"
     mt, d, cdt = (0.3, 0.2), (1e-3, 2e-3), 1.2
     # the thesis's rubber bands and a stiff real line, so the segment forces dominate

@@ -58,6 +58,12 @@ def test_agreement_is_to_the_printed_precision(printed, value, ok):
     assert agrees(printed, value) is ok
 
 
+@pytest.mark.parametrize("printed, value, ok", [
+    ("112", 109, True), ("120", 150, True), ("120", 151, False), ("120", 89, False)])
+def test_a_stated_relative_tolerance_widens_the_agreement(printed, value, ok):
+    assert agrees(printed, value, rtol=0.25) is ok and not agrees(printed, value)
+
+
 def test_parse_reads_unicode_minus_commas_and_exponents():
     assert parse("−3.99e-3") == (-0.00399, pytest.approx(5e-6))
     assert parse("10,000") == (10000.0, 0.5)

@@ -22,7 +22,8 @@ from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.select import call
 from tethersim.engine.integrators.steps import copy_into
 from tethersim.model.air.vector import UNIFORM
-from tethersim.model.registry import KERNELS, MODELS, kernels_of
+from tethersim.model.beads import N_FAMILIES
+from tethersim.model.registry import KERNELS, MODELS, bead_index, kernels_of
 
 
 def model_family_forces(model, y, p, out):
@@ -33,6 +34,11 @@ def model_family_forces(model, y, p, out):
 def model_jacobi(model, y, p):
     """Generated jacobi of model ``model`` (compiled code, literal model only)."""
     raise NotImplementedError("model_jacobi is only callable from compiled code")
+
+
+def model_power(model, y, p, fam):
+    """A bead chain's power of drag and dampers [W] (compiled code, literal chain only)."""
+    raise NotImplementedError("model_power is only callable from compiled code")
 
 
 def model_shape(model):
@@ -59,6 +65,17 @@ def _model_jacobi(model, y, p):
 
     def impl(model, y, p):
         return f(y, p)
+    return impl
+
+
+@overload(model_power, inline="always", prefer_literal=True)
+def _model_power(model, y, p, fam):
+    if (k := literal_index(model)) is None or not bead_index(k):
+        return None
+    f = kernels_of(k).power
+
+    def impl(model, y, p, fam):
+        return f(y, p, fam)
     return impl
 
 
@@ -137,6 +154,23 @@ def _family_force_peaks(model, air, T, Y, p):
 
 
 @njit(cache=True)
+def _chain_power_series(model, air, T, Y, p):
+    """A bead chain's power of drag and dampers [W] at each sample (T[i], Y[i])."""
+    literally(model)
+    n = Y.shape[0]
+    out = np.empty(n)
+    pw = p.copy()
+    fam = np.empty((N_FAMILIES, 3))
+    for i in range(n):
+        par = p
+        if air[0] != UNIFORM:
+            model_densities(model, T[i], Y[i], p, pw, air)
+            par = pw
+        out[i] = model_power(model, Y[i], par, fam)
+    return out
+
+
+@njit(cache=True)
 def _tether_margin_series(model, Y, p):
     """g[i, j] = λ_j − l_j0 [m] of tether j at sample i (taut when positive)."""
     literally(model)
@@ -159,6 +193,12 @@ def family_forces_series(model: int, air, T, Y, p) -> np.ndarray:
 def jacobi_series(model: int, Y, p) -> np.ndarray:
     """Jacobi integral (+ spring energy) [J] at each sample (model index ``model``)."""
     return call(_jacobi_series, model, Y, p)
+
+
+def chain_power_series(model: int, air, T, Y, p) -> np.ndarray:
+    """A bead chain's power of drag and dampers [W] at each sample (chain model index
+    ``model``, air vector ``air``): the rate of its Jacobi integral (beads.chain_power)."""
+    return call(_chain_power_series, model, air, T, Y, p)
 
 
 def family_force_peaks(model: int, air, T, Y, p) -> np.ndarray:

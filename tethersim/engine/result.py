@@ -14,10 +14,15 @@ from functools import cached_property
 import numpy as np
 
 from tethersim.engine.dynamics import held_circle, held_circle_orbit
-from tethersim.engine.evaluate import family_forces_series, jacobi_series, tether_margin_series
+from tethersim.engine.evaluate import (
+    chain_power_series,
+    family_forces_series,
+    jacobi_series,
+    tether_margin_series,
+)
 from tethersim.model.constants import R_EARTH
 from tethersim.model.inputs import air_vector, parameter_vector
-from tethersim.model.registry import Model, get_model
+from tethersim.model.registry import Model, bead_index, get_model
 from tethersim.model.satellite import Satellite
 
 ORBIT_COLUMNS = ("X", "Y", "VX", "VY")
@@ -350,13 +355,18 @@ class SimResult:
         dh/dt equals the power of drag and dampers (Σ Q_k q̇_k), so the
         residual measures integration error (and that of Simpson's rule on the
         samples: sample the run finely, well below the tether period, ~70 s).
+        A bead chain's power adds its segments' dampers and drag
+        (tethersim.model.beads.chain_power).
         """
         m = self.layout
         h = jacobi_series(m.index, self.states, self.parameters)
-        Q = self.forces
-        idx = [m.families.index(f) for f in DISSIPATIVE]
-        rates = self.states[:, m.n_coordinates:m.n_state]
-        power = np.einsum("ifk,ik->i", Q[:, idx, :], rates)
+        if bead_index(m.index):
+            power = chain_power_series(m.index, self.air, self.t, self.states, self.parameters)
+        else:
+            Q = self.forces
+            idx = [m.families.index(f) for f in DISSIPATIVE]
+            rates = self.states[:, m.n_coordinates:m.n_state]
+            power = np.einsum("ifk,ik->i", Q[:, idx, :], rates)
         from scipy.integrate import cumulative_simpson  # lazy: 0.4 s of import time
 
         work = cumulative_simpson(power, x=self.t, initial=0.0)

@@ -142,13 +142,13 @@ def chain_at_rest(y, model: str, sat: Satellite) -> np.ndarray:
     on a stiff line that level, 1e-7-1e-5 m/s², is all any solver can reach.  Not
     accepted: ``y`` (the straight chain), with a one-line warning.
     """
-    from tethersim.model import beads
+    from tethersim.model import bead_kernels
     from tethersim.model.bead_layout import NB
     from tethersim.model.inputs import parameter_vector
     from tethersim.model.registry import bead_split
     base, n = bead_split(model)
     p = parameter_vector(sat, model)
-    rhs, nq = beads.kernels(base).rhs, y.size // 2
+    rhs, nq = bead_kernels.kernels(base).rhs, y.size // 2
     rest, d, q0 = np.zeros(nq), np.empty_like(y), np.array(y[:nq], dtype=float)
 
     def acceleration(q):

@@ -54,13 +54,11 @@ model's).  No evaluation allocates: the base model's parameter vector, state and
 rates it builds live in the tail of the chain's parameter vector (``SCRATCH`` floats,
 bead_layout.parameter_vector), the rule of tethersim/engine/integrators/borrow.py.
 The engine runs it as a registered model (tethersim.model.registry.BEAD_INDEX,
-:func:`engine_kernels`).
+tethersim.model.bead_kernels: one compiled entry point per base).
 """
 from __future__ import annotations
 
 import math
-from collections import namedtuple
-from types import SimpleNamespace
 
 from numba import literally, njit, types
 from numba.extending import overload
@@ -100,14 +98,19 @@ from tethersim.model.bead_layout import (  # noqa: F401  (the layout, re-exporte
     straight_chain,
 )
 
-_GENERATED = {name: generated.MODELS[name] for name in BASES}
-Kernels = namedtuple("Kernels", "rhs jacobi tensions")
+GENERATED = {name: generated.MODELS[name] for name in BASES}
 # the kernels' scratch, the tail of the parameter vector (bead_layout.SCRATCH): base p,
 # base state, base rates
 _S_PB = NB + len(EXTRA_PARAMETERS)
 _S_YB = _S_PB + NB
 _S_DB = _S_YB + 6
 _OBJECTIVE = BASES.index("objective-damper")  # its segments damp along their stretch rate
+# the base models' drag families (the same FAMILIES in every base): the chain's dissipated
+# power takes the base's generalized drag forces on the boom and the balloon
+_FAMILIES = GENERATED[BASES[0]].FAMILIES
+assert all(GENERATED[b].FAMILIES == _FAMILIES for b in BASES)
+_DRAG = tuple(i for i, f in enumerate(_FAMILIES) if f.startswith("drag"))
+N_FAMILIES = len(_FAMILIES)
 
 
 def _base_rhs(kind, t, y, p, dydt):
@@ -120,11 +123,27 @@ def _base_jacobi(kind, y, p):
     raise NotImplementedError("_base_jacobi is only callable from compiled code")
 
 
+def _base_family_forces(kind, y, p, out):
+    """The generated family_forces of base ``BASES[kind]`` (compiled code, literal only)."""
+    raise NotImplementedError("_base_family_forces is only callable from compiled code")
+
+
+@overload(_base_family_forces, prefer_literal=True)
+def _base_family_forces_overload(kind, y, p, out):
+    if not isinstance(kind, types.IntegerLiteral):
+        return None
+    f = GENERATED[BASES[kind.literal_value]].family_forces
+
+    def impl(kind, y, p, out):
+        f(y, p, out)
+    return impl
+
+
 @overload(_base_rhs, prefer_literal=True)
 def _base_rhs_overload(kind, t, y, p, dydt):
     if not isinstance(kind, types.IntegerLiteral):
         return None
-    f = _GENERATED[BASES[kind.literal_value]].rhs
+    f = GENERATED[BASES[kind.literal_value]].rhs
 
     def impl(kind, t, y, p, dydt):
         f(t, y, p, dydt)
@@ -135,7 +154,7 @@ def _base_rhs_overload(kind, t, y, p, dydt):
 def _base_jacobi_overload(kind, y, p):
     if not isinstance(kind, types.IntegerLiteral):
         return None
-    f = _GENERATED[BASES[kind.literal_value]].jacobi
+    f = GENERATED[BASES[kind.literal_value]].jacobi
 
     def impl(kind, y, p):
         return f(y, p)
@@ -228,7 +247,7 @@ def _add_force(dydt, p, n, j, k, fx, fy, sc, m3, inertia):
 
 
 @njit(cache=True)
-def _rhs(kind, t, y, p, dydt):
+def chain_rhs(kind, t, y, p, dydt):
     """dy/dt of the chain model over base ``BASES[kind]`` (SI; layout: module docstring).
 
     Its scratch (the base p, state and rates) is the tail of p (:data:`SCRATCH`): no
@@ -316,12 +335,12 @@ def segment_margins(y, p, g, first):
 
 
 @njit(cache=True)
-def _jacobi(kind, y, p):
+def chain_jacobi(kind, y, p):
     """Jacobi integral of the chain model [J]: constant with every drag and damper off.
 
     The base model's (tethers off, end masses added), each bead's as a balloon of
     the bead's mass with no boom, and ½ (E_j / l_s)(λ_s − l_s)² per taut segment.
-    Scratch: the tail of p, as :func:`_rhs`.
+    Scratch: the tail of p, as :func:`chain_rhs`.
     """
     literally(kind)
     nq = y.shape[0] // 2
@@ -353,66 +372,38 @@ def _jacobi(kind, y, p):
     return h
 
 
-# one entry point per base model: the base is a compile-time literal of each
 @njit(cache=True)
-def rhs_derived(t, y, p, dydt):
-    """dy/dt of the chain over ``derived``."""
-    _rhs(0, t, y, p, dydt)
+def chain_power(kind, y, p, fam):
+    """Power of drag and dampers [W]: the Jacobi integral's rate, dh/dt = Σ Q_k q̇_k.
 
-
-@njit(cache=True)
-def rhs_exact_gravity(t, y, p, dydt):
-    """dy/dt of the chain over ``exact-gravity``."""
-    _rhs(1, t, y, p, dydt)
-
-
-@njit(cache=True)
-def rhs_objective_damper(t, y, p, dydt):
-    """dy/dt of the chain over ``objective-damper``."""
-    _rhs(2, t, y, p, dydt)
-
-
-@njit(cache=True)
-def jacobi_derived(y, p):
-    """Jacobi integral of the chain over ``derived`` [J]."""
-    return _jacobi(0, y, p)
-
-
-@njit(cache=True)
-def jacobi_exact_gravity(y, p):
-    """Jacobi integral of the chain over ``exact-gravity`` [J]."""
-    return _jacobi(1, y, p)
-
-
-@njit(cache=True)
-def jacobi_objective_damper(y, p):
-    """Jacobi integral of the chain over ``objective-damper`` [J]."""
-    return _jacobi(2, y, p)
-
-
-_KERNELS = {"derived": Kernels(rhs_derived, jacobi_derived, tensions),
-            "exact-gravity": Kernels(rhs_exact_gravity, jacobi_exact_gravity, tensions),
-            "objective-damper": Kernels(rhs_objective_damper, jacobi_objective_damper, tensions)}
-
-
-def engine_kernels(base: str) -> SimpleNamespace:
-    """The module interface the engine's compiled loops read (tethersim.engine.dynamics):
-    ``rhs``, ``tether_margins`` (the most stretched segment of each line),
-    ``segment_count`` and ``segment_margins`` (every segment's switch, engine/events.py),
-    ``body_radii``
-    (the base model's: the beads' air is the balloon's, ``_segment``) and ``jacobi``."""
-    check_base(base)
-    k = _KERNELS[base]
-    return SimpleNamespace(rhs=k.rhs, jacobi=k.jacobi, tensions=tensions,
-                           tether_margins=tether_margins, segment_count=segment_count,
-                           segment_margins=segment_margins,
-                           body_radii=_GENERATED[base].body_radii)
-
-
-def kernels(base: str = "derived") -> Kernels:
-    """The compiled chain kernels (rhs, jacobi, tensions) over base model ``base``.
-
-    The same number of beads per tether on both lines, read from the state's length.
+    The boom's and balloon's drag as the base model's drag families (tethers off, end
+    masses added) on its rates; each segment's damper force (its force less the
+    spring's tension along it) on the relative velocity of its ends in L, and its
+    drag on both end nodes' velocities in L (a boom end's is arm θ̇ (cos θ, −sin θ),
+    so F · v is its Q_θ θ̇).  fam: scratch (N_FAMILIES, 3); scratch in p's tail as
+    :func:`chain_rhs`.
     """
-    check_base(base)
-    return _KERNELS[base]
+    literally(kind)
+    nq = y.shape[0] // 2
+    n = (nq - 3) // 4
+    pb = p[_S_PB:_S_PB + NB]
+    yb = p[_S_YB:_S_YB + 6]
+    _base_parameters(p, n, pb)
+    for i in range(3):
+        yb[i] = y[i]
+        yb[3 + i] = y[nq + i]
+    _base_family_forces(kind, yb, pb, fam)
+    power = 0.0
+    for f in _DRAG:
+        for k in range(3):
+            power += fam[f, k] * yb[3 + k]
+    for j in range(2):
+        for s in range(n + 1):
+            fx, fy, dx, dy, ten, lam = _segment(y, p, n, j, s, kind == _OBJECTIVE)
+            x0, y0, u0, v0 = _node(y, p, n, j, s)
+            x1, y1, u1, v1 = _node(y, p, n, j, s + 1)
+            if lam > 0.0:  # the damper's share of the far node's force
+                fx += ten * (x1 - x0) / lam
+                fy += ten * (y1 - y0) / lam
+            power += fx * (u1 - u0) + fy * (v1 - v0) + dx * (u0 + u1) + dy * (v0 + v1)
+    return power

@@ -124,7 +124,7 @@ def bead_split(name: str):
 
 
 def _bead_model(base: str, n: int) -> Model:
-    from tethersim.model import beads  # beads imports this module: at call time only
+    from tethersim.model import bead_kernels, beads  # they import this module: at call time
     m = BY_NAME[base]
     state, units = beads.state_names(base, n)
     return replace(m, name=bead_model_name(base, n), index=BEAD_INDEX[base],
@@ -132,7 +132,7 @@ def _bead_model(base: str, n: int) -> Model:
                    state=state, state_units=units,
                    parameters=m.parameters + beads.EXTRA_PARAMETERS,
                    parameter_units=m.parameter_units + beads.EXTRA_UNITS,
-                   families=(), module=beads.engine_kernels(base))
+                   families=(), module=bead_kernels.engine_kernels(base))
 
 
 def record(index: int) -> Model:

@@ -26,4 +26,4 @@ def evaluate(fig: Figure) -> tuple:
     """
     _, printed = locate(read(fig.doc), fig.at)
     value = float(QUANTITIES[fig.key]())
-    return printed, value, agrees(printed, value, fig.absolute)
+    return printed, value, agrees(printed, value, fig.absolute, fig.rtol)

@@ -34,6 +34,10 @@ class Figure:
         True when computing it runs simulations (the ``slow`` test tier).
     absolute : bool
         Compare the magnitude only (the doc prints ``±`` or the sign in words).
+    rtol : float
+        A relative tolerance the doc states beside the figure, for a count that moves
+        with the last bits of the arithmetic (taut/slack switches located in a bounce);
+        0: the printed precision only.
     """
 
     doc: str
@@ -41,6 +45,7 @@ class Figure:
     key: str
     slow: bool = False
     absolute: bool = False
+    rtol: float = 0.0
 
 
 def parse(text: str) -> tuple:
@@ -103,7 +108,7 @@ def locate(text: str, at) -> tuple:
     return m.start(), m.group(0)
 
 
-def agrees(printed: str, value: float, absolute: bool = False) -> bool:
+def agrees(printed: str, value: float, absolute: bool = False, rtol: float = 0.0) -> bool:
     """True when ``value`` rounds to the ``printed`` number at its printed precision.
 
     Parameters
@@ -114,11 +119,14 @@ def agrees(printed: str, value: float, absolute: bool = False) -> bool:
         The computed value, in the doc's unit.
     absolute : bool, optional
         Compare magnitudes (the doc gives the sign in words).
+    rtol : float, optional
+        Also agree within ``rtol`` of the printed number (a tolerance the doc states).
 
     Returns
     -------
     bool
-        Whether ``|value - printed|`` is within half a unit of the last printed digit.
+        Whether ``|value - printed|`` is within half a unit of the last printed digit
+        (or ``rtol`` of the printed number).
 
     Examples
     --------
@@ -128,7 +136,8 @@ def agrees(printed: str, value: float, absolute: bool = False) -> bool:
     number, half = parse(printed)
     if absolute:
         number, value = abs(number), abs(value)
-    return math.isfinite(value) and abs(value - number) <= half * (1 + 1e-9) + 1e-12 * abs(number)
+    bound = max(half * (1 + 1e-9) + 1e-12 * abs(number), rtol * abs(number))
+    return math.isfinite(value) and abs(value - number) <= bound
 
 
 def read(doc: str) -> str:

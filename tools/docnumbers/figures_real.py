@@ -210,8 +210,10 @@ for _i, (_label, (_config, _density)) in enumerate(RUN_ROWS.items()):
         _key = f"real_run_{_i}_{_j}"
         QUANTITIES[_key] = (lambda c, d, col: lambda: run_row(c, d, col))(_config, _density,
                                                                           _col)
+        # the switch count moves with the last bits of the arithmetic: the ±25 % the doc
+        # states under the table
         SLOW.append(Figure(D, (_R, f"| {_label} | ") + (" | ",) * _j, _key, slow=True,
-                           absolute=_col == "final"))
+                           absolute=_col == "final", rtol=0.25 if _col == "switches" else 0.0))
 FIGURES += SLOW
 
 # roll with real lines: the out-of-plane modes at the planar equilibrium in the 3-D twin of
