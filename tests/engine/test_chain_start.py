@@ -8,7 +8,7 @@ import pytest
 
 import tethersim as ts
 from tethersim.engine.start import start_run
-from tethersim.model import bead_kernels, beads
+from tethersim.model import bead_kernels
 from tethersim.model.bead_layout import straight_chain
 from tethersim.model.inputs import initial_model_state, parameter_vector
 
@@ -107,7 +107,7 @@ def test_a_chain_equilibrium_not_found_falls_back_to_the_straight_chain_in_one_w
     def noisy(t, y, p, dydt):
         real.rhs(t, y, p, dydt)
         dydt[y.size // 2:] = rng.normal(0.0, 1.0, y.size // 2)
-    monkeypatch.setattr(beads, "kernels", lambda base: real._replace(rhs=noisy))
+    monkeypatch.setattr(bead_kernels, "kernels", lambda base: real._replace(rhs=noisy))
     with pytest.warns(RuntimeWarning) as caught:
         sat, start, model, y = start_run(_dyneema(), "derived", "equilibrium", beads=2)
     message = str(caught[0].message)

@@ -217,8 +217,9 @@ def _segment(y, p, n, j, s, objective):
 
 
 @njit(cache=True)
-def _base_parameters(p, n, pb):
-    """pb = the base p with the tethers off and the line's end masses added."""
+def _base_inputs(y, p, n, pb, yb):
+    """pb = the base p with the tethers off and the line's end masses added; yb = the
+    boom's and balloon's coordinates and rates (the base model's state)."""
     for i in range(NB):
         pb[i] = p[i]
     pb[_E1] = pb[_E2] = pb[_C1] = pb[_C2] = 0.0
@@ -227,6 +228,10 @@ def _base_parameters(p, n, pb):
     pb[_M1] += e1
     pb[_M2] += e2
     pb[_M3] += e1 + e2
+    nq = y.shape[0] // 2
+    for i in range(3):
+        yb[i] = y[i]
+        yb[3 + i] = y[nq + i]
 
 
 @njit(cache=True, inline="always")
@@ -259,10 +264,7 @@ def chain_rhs(kind, t, y, p, dydt):
     pb = p[_S_PB:_S_PB + NB]
     yb = p[_S_YB:_S_YB + 6]
     db = p[_S_DB:_S_DB + 6]
-    _base_parameters(p, n, pb)
-    for i in range(3):
-        yb[i] = y[i]
-        yb[3 + i] = y[nq + i]
+    _base_inputs(y, p, n, pb, yb)
     _base_rhs(kind, t, yb, pb, db)
     for i in range(nq):
         dydt[i] = y[nq + i]
@@ -347,10 +349,7 @@ def chain_jacobi(kind, y, p):
     n = (nq - 3) // 4
     pb = p[_S_PB:_S_PB + NB]
     yb = p[_S_YB:_S_YB + 6]
-    _base_parameters(p, n, pb)
-    for i in range(3):
-        yb[i] = y[i]
-        yb[3 + i] = y[nq + i]
+    _base_inputs(y, p, n, pb, yb)
     h = _base_jacobi(kind, yb, pb)
     pb[_M1] = pb[_M2] = 0.0
     yb[2] = yb[5] = 0.0
@@ -388,10 +387,7 @@ def chain_power(kind, y, p, fam):
     n = (nq - 3) // 4
     pb = p[_S_PB:_S_PB + NB]
     yb = p[_S_YB:_S_YB + 6]
-    _base_parameters(p, n, pb)
-    for i in range(3):
-        yb[i] = y[i]
-        yb[3 + i] = y[nq + i]
+    _base_inputs(y, p, n, pb, yb)
     _base_family_forces(kind, yb, pb, fam)
     power = 0.0
     for f in _DRAG:
