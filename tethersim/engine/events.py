@@ -69,7 +69,7 @@ STOPS = tuple(e.name for e in EVENTS if e.terminal)
 # the event parameter vector (event_parameters): where each limit sits
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)  # called once a step has located an event: not inlined
 def is_switch(slot):
     """Whether event ``slot`` is a switch (the run continues across it); -1 (none) too."""
     return slot < N_SWITCH or slot >= N_EVENTS

@@ -53,7 +53,6 @@ def _dop853_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out
     counters, work, y_new, f, F, g = (borrow(counters), borrow(work), borrow(y_new), borrow(f),
                                       borrow(F), borrow(g))
     n = model_size(model, y)  # a compile-time constant: the loops below unroll
-    ne = model_n_events(model, y)  # g's length, a constant but for bead chains
     K = work[:N_K]
     ys = work[N_K]
     g0, g1 = g[0], g[1]
@@ -121,7 +120,7 @@ def _dop853_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out
         for i in range(n):
             y[i] = y_new[i]
             f[i] = K[12, i]
-        for i in range(ne):
+        for i in range(g0.shape[0]):
             g0[i] = g1[i]
         t = t_new
         h = h_next

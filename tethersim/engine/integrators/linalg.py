@@ -27,9 +27,7 @@ FD_STEP = math.sqrt(EPS)
 FD_STEP_FINE = 1e-3 * FD_STEP
 
 
-# Inlined with the state size n passed in: in the loops n is the model's compile-time
-# size (dynamics.model_size), so LLVM unrolls the short rows (a 6 x 6 solve 3x faster)
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def lu_factor(A, piv, n):
     """LU factorisation with partial pivoting of A[:n, :n] (real or complex), in place
     (LAPACK getrf's).
@@ -58,6 +56,9 @@ def lu_factor(A, piv, n):
                     A[i, j] -= a * A[k, j]
 
 
+# Inlined with the state size n passed in: in the loops n is the model's compile-time
+# size (dynamics.model_size), so LLVM unrolls the short rows (a 6 x 6 solve 3x faster;
+# the factorisation, ~10x rarer than the solves, is not worth its compile time)
 @njit(cache=True, inline="always")
 def lu_solve(A, piv, b, n):
     """Solve (the factored A[:n, :n]) x = b in place of b (A, piv from lu_factor)."""

@@ -65,7 +65,6 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
     Z, W, F, Q, J, LR, LC = borrow(Z), borrow(W), borrow(F), borrow(Q), borrow(J), borrow(LR), borrow(LC)
     pr, pc, v, bc, g = borrow(pr), borrow(pc), borrow(v), borrow(bc), borrow(g)
     n = model_size(model, y)
-    ne = model_n_events(model, y)  # g's length, a constant but for bead chains
     f, y_new, f_new, ys, fs, scale, err, y_old = v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]
     br = v[8]
     # what the previous call left (carry): Jacobian, controller memory, last dense output
@@ -250,7 +249,7 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
             y_old[i] = y[i]
             y[i] = y_new[i]
             f[i] = f_new[i]
-        for i in range(ne):
+        for i in range(g0.shape[0]):
             g0[i] = g1[i]
         t_old, h_last, have_sol = t, hs, True
         t = t_new

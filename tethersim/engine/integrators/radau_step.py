@@ -61,7 +61,7 @@ MIN_FACTOR = 0.2
 MAX_FACTOR = 10.0
 
 
-@njit(cache=True, inline="always")  # n: the loop's compile-time state size (linalg.py)
+@njit(cache=True)
 def _factor(n, h, J, LR, LC, pr, pc):
     # the real system MU_REAL/h − J and the complex (MU_RE + i MU_IM)/h − J (LC complex),
     # each factored once for many solves

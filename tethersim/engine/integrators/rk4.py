@@ -76,7 +76,6 @@ def _rk4_loop(model, air, k0, y, h, n_steps, stride, p, pw, ev, locate, out_t, o
     work, y_new, g = borrow(work), borrow(y_new), borrow(g)
     g0, g1 = g[0], g[1]
     n = model_size(model, y)  # a compile-time constant: the loops below unroll
-    ne = model_n_events(model, y)  # g's length, a constant but for bead chains
     row = row0
     switches = 0
     model_events(model, y, p, ev, g0, locate)
@@ -101,7 +100,7 @@ def _rk4_loop(model, air, k0, y, h, n_steps, stride, p, pw, ev, locate, out_t, o
             else:
                 for i in range(n):
                     y[i] = y_new[i]
-                for i in range(ne):
+                for i in range(g0.shape[0]):
                     g0[i] = g1[i]
         if hit >= 0:  # the located state is the last row, at the event's time
             if row < out_t.shape[0]:

@@ -17,7 +17,7 @@ from __future__ import annotations
 from numba import njit
 
 from tethersim.engine.dynamics import model_size
-from tethersim.engine.events import N_EVENTS, N_SWITCH, is_switch, model_events
+from tethersim.engine.events import N_EVENTS, N_SWITCH, model_events
 from tethersim.engine.integrators.steps import copy_into, dop853_step, rk4_step
 
 RTOL_TAU = 1e-12  # bracket width, relative to the step, at which the search stops
@@ -28,7 +28,7 @@ MAX_ITER = 60
 def _crosses(j, a, b):
     """Whether slot j crosses from value a to b: a switch either way, a stopping limit
     from inside (> 0) to outside (<= 0; NaN is no crossing)."""
-    if is_switch(j):
+    if j < N_SWITCH or j >= N_EVENTS:  # a switch (events.is_switch)
         return (a > 0.0) != (b > 0.0)
     return a > 0.0 and b <= 0.0
 
