@@ -20,7 +20,7 @@ third-order formula filtered through the real matrix, the step size follows the
 predictive (Gustafsson) controller, the Jacobian is refreshed only when Newton
 converges slowly, and the dense output is the collocation cubic.  Ported to a
 compiled loop: the complex system is factored in complex arithmetic (as scipy and
-RADAU5 do; its real 2n x 2n form costs 1.5x more per solve for n = 6), and the LU
+RADAU5 do; its real 2n x 2n form costs ~1.7x more per solve for n = 6), and the LU
 factors are kept across the Newton iterations and steps, as scipy keeps them.
 
 integrators/radau.py runs them in a compiled loop.
