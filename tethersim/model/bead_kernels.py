@@ -1,4 +1,5 @@
-"""The bead chain's compiled entry points, one per base model (tethersim.model.beads).
+"""The bead chain's compiled entry points, one per base model, and its event functions
+(tethersim.model.beads).
 
 Each base is a compile-time literal of its own entry points (``rhs_derived`` ...), as
 tethersim/engine/dynamics.py picks a model's generated kernels; :func:`kernels` gives
@@ -7,24 +8,60 @@ of a chain, tethersim.model.registry).
 """
 from __future__ import annotations
 
+import math
 from collections import namedtuple
 from types import SimpleNamespace
 
 from numba import njit
 
+from tethersim.model.bead_layout import _L10
 from tethersim.model.beads import (
     GENERATED,
     chain_jacobi,
     chain_power,
     chain_rhs,
     check_base,
-    segment_count,
-    segment_margins,
+    node,
     tensions,
-    tether_margins,
 )
 
 Kernels = namedtuple("Kernels", "rhs jacobi tensions power")
+
+
+# the chain's event functions (engine/events.py): each line's most stretched segment, and
+# every segment on its own
+@njit(cache=True, inline="always")
+def tether_margins(y, p, g):
+    """g[j] = (N + 1) max_s (λ_s − l_s) [m]: the most stretched segment of tether j, as the
+    line's extension at that segment's tension (the events' stretch and break limits)."""
+    n = (y.shape[0] // 2 - 3) // 4
+    for j in range(2):
+        worst = -math.inf
+        for s in range(n + 1):
+            x0, y0, _, _ = node(y, p, n, j, s)
+            x1, y1, _, _ = node(y, p, n, j, s + 1)
+            worst = max(worst, (n + 1) * math.hypot(x1 - x0, y1 - y0))
+        g[j] = worst - p[_L10 + j]
+
+
+@njit(cache=True, inline="always")
+def segment_count(y):
+    """Segments of both lines together, 2 (N + 1): the chain's own switch slots."""
+    return 2 * ((y.shape[0] // 2 - 3) // 4 + 1)
+
+
+@njit(cache=True)  # not inlined: numba's inliner trips on its loops in model_events
+def segment_margins(y, p, g, first):
+    """g[first + j (N + 1) + s] = (N + 1)(λ_s − l_s) [m]: each segment's taut/slack margin,
+    tether j's segment s (boom end first), in the line's extension units as
+    :func:`tether_margins`; each is an event of its own, so the loops locate every
+    segment's switch, not only the most stretched one's."""
+    n = (y.shape[0] // 2 - 3) // 4
+    for j in range(2):
+        for s in range(n + 1):
+            x0, y0, _, _ = node(y, p, n, j, s)
+            x1, y1, _, _ = node(y, p, n, j, s + 1)
+            g[first + j * (n + 1) + s] = (n + 1) * math.hypot(x1 - x0, y1 - y0) - p[_L10 + j]
 
 
 # one entry point per base model: the base is a compile-time literal of each

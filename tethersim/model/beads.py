@@ -48,13 +48,13 @@ balloon, then all their rates in the same order; parameter vector: the base
 model's, then :data:`EXTRA_PARAMETERS`.  tests/model/test_beads.py and
 tests/derive/test_beads_lagrange.py check it (docs/beads.md).
 
-Compiled code: one cached entry point per base (``rhs_derived`` ...), the base a
-literal that picks its generated kernels (as tethersim/engine/dynamics.py picks a
-model's).  No evaluation allocates: the base model's parameter vector, state and
+Compiled code: the kernels here take the base as a literal that picks its generated
+kernels (as tethersim/engine/dynamics.py picks a model's); tethersim.model.bead_kernels
+holds one cached entry point per base (``rhs_derived`` ...) and the chain's event
+functions.  No evaluation allocates: the base model's parameter vector, state and
 rates it builds live in the tail of the chain's parameter vector (``SCRATCH`` floats,
 bead_layout.parameter_vector), the rule of tethersim/engine/integrators/borrow.py.
-The engine runs it as a registered model (tethersim.model.registry.BEAD_INDEX,
-tethersim.model.bead_kernels: one compiled entry point per base).
+The engine runs it as a registered model (tethersim.model.registry.BEAD_INDEX).
 """
 from __future__ import annotations
 
@@ -162,7 +162,7 @@ def _base_jacobi_overload(kind, y, p):
 
 
 @njit(cache=True, inline="always")
-def _node(y, p, n, j, k):
+def node(y, p, n, j, k):
     """(x, y, ẋ, ẏ) of tether j's node k in L: 0 boom end, 1..n beads, n+1 balloon."""
     nq = 3 + 4 * n
     if k == n + 1:
@@ -181,8 +181,8 @@ def _segment(y, p, n, j, s, objective):
     """Tether j's segment s (node s to s+1): (force on the far node (x, y) from the
     spring and damper, drag on each end node (x, y), spring tension [N], λ_s [m])."""
     l_s = p[_L10 + j] / (n + 1)
-    x0, y0, u0, v0 = _node(y, p, n, j, s)
-    x1, y1, u1, v1 = _node(y, p, n, j, s + 1)
+    x0, y0, u0, v0 = node(y, p, n, j, s)
+    x1, y1, u1, v1 = node(y, p, n, j, s + 1)
     ddx, ddy = x1 - x0, y1 - y0
     lam = math.sqrt(ddx * ddx + ddy * ddy)
     tx, ty = ddx / lam, ddy / lam  # from the near node (s) to the far one (s+1)
@@ -302,40 +302,6 @@ def tensions(y, p, out):
             out[j, s] = _segment(y, p, n, j, s, False)[4]
 
 
-@njit(cache=True, inline="always")
-def tether_margins(y, p, g):
-    """g[j] = (N + 1) max_s (λ_s − l_s) [m]: the most stretched segment of tether j, as the
-    line's extension at that segment's tension (the events' stretch and break limits)."""
-    n = (y.shape[0] // 2 - 3) // 4
-    for j in range(2):
-        worst = -math.inf
-        for s in range(n + 1):
-            x0, y0, _, _ = _node(y, p, n, j, s)
-            x1, y1, _, _ = _node(y, p, n, j, s + 1)
-            worst = max(worst, (n + 1) * math.hypot(x1 - x0, y1 - y0))
-        g[j] = worst - p[_L10 + j]
-
-
-@njit(cache=True, inline="always")
-def segment_count(y):
-    """Segments of both lines together, 2 (N + 1): the chain's own switch slots."""
-    return 2 * ((y.shape[0] // 2 - 3) // 4 + 1)
-
-
-@njit(cache=True)  # not inlined: numba's inliner trips on its loops in model_events
-def segment_margins(y, p, g, first):
-    """g[first + j (N + 1) + s] = (N + 1)(λ_s − l_s) [m]: each segment's taut/slack margin,
-    tether j's segment s (boom end first), in the line's extension units as
-    :func:`tether_margins`; each is an event of its own, so the loops locate every
-    segment's switch, not only the most stretched one's."""
-    n = (y.shape[0] // 2 - 3) // 4
-    for j in range(2):
-        for s in range(n + 1):
-            x0, y0, _, _ = _node(y, p, n, j, s)
-            x1, y1, _, _ = _node(y, p, n, j, s + 1)
-            g[first + j * (n + 1) + s] = (n + 1) * math.hypot(x1 - x0, y1 - y0) - p[_L10 + j]
-
-
 @njit(cache=True)
 def chain_jacobi(kind, y, p):
     """Jacobi integral of the chain model [J]: constant with every drag and damper off.
@@ -396,8 +362,8 @@ def chain_power(kind, y, p, fam):
     for j in range(2):
         for s in range(n + 1):
             fx, fy, dx, dy, ten, lam = _segment(y, p, n, j, s, kind == _OBJECTIVE)
-            x0, y0, u0, v0 = _node(y, p, n, j, s)
-            x1, y1, u1, v1 = _node(y, p, n, j, s + 1)
+            x0, y0, u0, v0 = node(y, p, n, j, s)
+            x1, y1, u1, v1 = node(y, p, n, j, s + 1)
             if lam > 0.0:  # the damper's share of the far node's force
                 fx += ten * (x1 - x0) / lam
                 fy += ten * (y1 - y0) / lam
