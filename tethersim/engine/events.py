@@ -66,7 +66,6 @@ N_EVENTS = len(EVENTS)
 N_SWITCH = sum(not e.terminal for e in EVENTS)  # the switch slots come first
 SLOT = {e.name: i for i, e in enumerate(EVENTS)}
 STOPS = tuple(e.name for e in EVENTS if e.terminal)
-# the event parameter vector (event_parameters): where each limit sits
 
 
 @njit(cache=True)  # called once a step has located an event: not inlined
@@ -97,6 +96,7 @@ def _model_n_events(model, y):
     return impl
 
 
+# the event parameter vector (event_parameters): where each limit sits
 EV_H_MIN, EV_ROLL, EV_REACH2, EV_STRETCH, EV_L10, EV_L20, EV_NEAR2, EV_BREAK1, EV_BREAK2 = range(9)
 N_EV = 9
 
