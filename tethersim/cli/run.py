@@ -96,7 +96,7 @@ def run(args) -> int:
     written = [out / "timeseries.csv", out / "timeseries.nc"]
     if not args.no_plots:
         written += plot_result(res, out)
-        if sat.beads is not None:
+        if res.satellite.beads is not None:  # a chain (--beads, or lines held off the ends)
             written.append(plot_shape(res, out))
     summary = run_summary(res)
     strict = {k: (None if isinstance(v, float) and not math.isfinite(v) else v)

@@ -52,7 +52,12 @@ def run(args) -> int:
     sat = options.satellite(args)
     print(f"{sat.name}  ({sat.source})")
     print("  parameters in the units --set takes (E1, E2 in N/mm^2, altitude in km, else SI):")
+    from tethersim.model.bead_layout import attachment_points
+    held = dict(zip(("s1", "s2"), attachment_points(sat)))  # None: the boom's end
     for name in params.NAMES:
+        if name in held:
+            print(f"  {name:<12} {exact(held[name]):<22} {params.unit(name)}")
+            continue
         if getattr(sat, name) is None:  # an unset MSIS index: the bundled table's
             continue
         print(f"  {name:<12} {params.edge_text(sat, name):<22} {params.unit(name)}")

@@ -144,13 +144,15 @@ def event_parameters(sat, model: str, stops=STOPS) -> np.ndarray:
                                (EV_BREAK2, 2, sat.Fb2, sat.E2, sat.l20)):
         on = f"tether {j} break" in stops and fb > 0 and e > 0
         ev[slot] = l0 * fb / e if on else inf
-    # tether j runs from the balloon (|δ| from the COM) to a boom end (b or a from it):
-    # λ_j <= |δ| + end_j, so λ_j > its limit L_j (stretch l_j0, or l_j0 + the break
-    # extension) needs |δ| > L_j − end_j.  The margin 1e-9 keeps the bound conservative
-    # against the rounding of |δ|²
+    # tether j runs from the balloon (|δ| from the COM) to its point on the boom (|s_j|
+    # from it; the thesis: b, a): λ_j <= |δ| + |s_j|, so λ_j > its limit L_j (stretch
+    # l_j0, or l_j0 + the break extension) needs |δ| > L_j − |s_j|.  The margin 1e-9
+    # keeps the bound conservative against the rounding of |δ|²
+    from tethersim.model.bead_layout import attachment_points
+    s1, s2 = attachment_points(sat)
     lim1 = min(stretch * sat.l10, sat.l10 + ev[EV_BREAK1])
     lim2 = min(stretch * sat.l20, sat.l20 + ev[EV_BREAK2])
-    near = max(min(lim1 - sat.b, lim2 - sat.a), 0.0) * (1.0 - 1e-9)
+    near = max(min(lim1 - abs(s1), lim2 - abs(s2)), 0.0) * (1.0 - 1e-9)
     ev[EV_NEAR2] = near * near
     return ev
 

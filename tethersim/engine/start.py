@@ -114,7 +114,12 @@ def start_run(sat: Satellite, model: str, start: str = "auto", beads=None) -> tu
         sat = sat.replace(beads=check_beads(beads))
     elif sat.beads is not None:
         check_beads(sat.beads)
-    sat, start = start_satellite(sat, model, start)
+    elif moved_attachments(sat):
+        sat = sat.replace(beads=0)  # lines held between the boom's ends: a chain's
+    # the lines' equilibrium: massless, held at their points on the boom (a chain of no
+    # beads where those are not the boom's ends), the beads' then from it
+    hung = bead_model_name(model, 0) if moved_attachments(sat) else model
+    sat, start = start_satellite(sat, hung, start)
     if sat.beads is None:
         return sat, start, model, initial_model_state(sat, model)
     model = bead_model_name(model, sat.beads)
@@ -124,6 +129,12 @@ def start_run(sat: Satellite, model: str, start: str = "auto", beads=None) -> tu
         sat = sat.replace(initial=(*(float(v) for v in y[:3]), 0.0, 0.0, 0.0),
                           source=sat.source)
     return sat, start, model, y
+
+
+def moved_attachments(sat: Satellite) -> bool:
+    """Whether a tether holds the boom elsewhere than the thesis's end (``s1``, ``s2``)."""
+    from tethersim.model.bead_layout import attachment_points
+    return attachment_points(sat) != (sat.b, -sat.a)
 
 
 def chain_at_rest(y, model: str, sat: Satellite) -> np.ndarray:
@@ -277,12 +288,15 @@ def check_given_start(sat: Satellite, model: str) -> None:
     stiff = real_tethers(sat)
     if not (sat.Fb1 or sat.Fb2 or stiff):
         return  # nothing to judge: the thesis's tethers start where the thesis put them
-    y = initial_model_state(sat, model)
-    off = bodies_from_states(sat, model, 0.0, y).offset
+    from tethersim.model.bead_layout import attachment_points
+    y = initial_model_state(sat.replace(s1=None, s2=None), model)
+    bodies = bodies_from_states(sat, model, 0.0, y)
+    off = bodies.offset
+    holds = [s * bodies.attitude[:, 1] for s in attachment_points(sat)]  # on the boom axis
     where = (f"initial (delta_x, delta_y, theta) = ({sat.initial[0]:g} m, {sat.initial[1]:g} m, "
              f"{sat.initial[2]:g} rad)")
     for j, (E, l0, fb) in enumerate(((sat.E1, sat.l10, sat.Fb1), (sat.E2, sat.l20, sat.Fb2)), 1):
-        lam = float(np.linalg.norm(off[j - 1] - off[2]))
+        lam = float(np.linalg.norm(holds[j - 1] - off[2]))
         strain = max(lam - l0, 0.0) / l0
         tension = E * strain
         if fb and tension >= fb:

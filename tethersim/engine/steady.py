@@ -35,7 +35,7 @@ from scipy.optimize import brentq, root
 from tethersim.engine.jacobian import jacobian
 from tethersim.model.inputs import parameter_vector
 from tethersim.model.materials import real_tethers
-from tethersim.model.registry import KERNELS, MODELS, get_model
+from tethersim.model.registry import MODELS, get_model, kernels_of
 from tethersim.model.satellite import Satellite
 
 RESIDUAL_TOL = 1e-10  # largest |acceleration| accepted at an equilibrium [SI], soft lines
@@ -92,7 +92,7 @@ def steady_coordinates(sat: Satellite, model: str, guess) -> tuple:
     zeros = np.zeros(n)
 
     def f(q):
-        KERNELS[m].rhs(0.0, np.concatenate([q, zeros]), p, d)
+        kernels_of(m).rhs(0.0, np.concatenate([q, zeros]), p, d)
         return d[n:].copy()
 
     def jac(q):
@@ -118,7 +118,7 @@ def steady_coordinates(sat: Satellite, model: str, guess) -> tuple:
 
         def pull(q):
             """q̈ without the tethers: the balloon's own tidal and drag acceleration."""
-            KERNELS[m].rhs(0.0, np.concatenate([q, zeros]), p_free, d)
+            kernels_of(m).rhs(0.0, np.concatenate([q, zeros]), p_free, d)
             return d[n:].copy()
         start = _stiff_start(sat, f, jac, g, planar, pull)
     if start is not None:
@@ -244,13 +244,17 @@ def _hung(sat, theta: float, pull, iterations: int = 30):
     triangle when the load ``pull`` (its acceleration without the tethers, at the
     balloon's position) lies between the two lines (both tensions T_j ≥ 0 in
     m3 a + T1 u1 + T2 u2 = 0, u_j towards line j's end), else hanging straight along the
-    load from the one taut line's end.  The tensions stretch the lengths to
+    load from the one taut line's end (a line of EA 0 is none: a single line hangs
+    the balloon from its point on the boom).  The tensions stretch the lengths to
     l_j0 (1 + T_j / E_j) and the position is iterated with the load at it.  None where
     the geometry has no answer (the lines cannot meet, or no load).
     """
     ends = _ends(sat, theta)
     rest, ea = (sat.l10, sat.l20), (sat.E1, sat.E2)
-    x = _apex(ends, rest)
+    live = [j for j in (0, 1) if ea[j] > 0]  # a line of EA 0 holds nothing
+    x = _apex(ends, rest) if len(live) == 2 else None
+    if x is None and len(live) == 1:  # one line: from straight downstream of its point
+        x = ends[live[0]] + np.array([rest[live[0]], 0.0])
     if x is None:
         return None
     for _ in range(iterations):
@@ -258,16 +262,18 @@ def _hung(sat, theta: float, pull, iterations: int = 30):
         load = sat.m3 * float(np.hypot(*a))
         if not load > 0:
             return None
-        u = [(e - x) / np.hypot(*(e - x)) for e in ends]
-        try:
-            t = np.linalg.solve(np.column_stack(u), -sat.m3 * a)
-        except np.linalg.LinAlgError:
-            t = np.array([-1.0, -1.0])
+        t = np.array([-1.0, -1.0])
+        if len(live) == 2:
+            u = [(e - x) / np.hypot(*(e - x)) for e in ends]
+            try:
+                t = np.linalg.solve(np.column_stack(u), -sat.m3 * a)
+            except np.linalg.LinAlgError:
+                pass
         if t[0] >= 0 and t[1] >= 0:
             lengths = [l0 * (1 + tj / e) for l0, tj, e in zip(rest, t, ea)]
             new = _apex(ends, lengths)
         else:  # one line holds the balloon: the one the load leans on
-            j = 0 if t[0] > t[1] else 1
+            j = (0 if t[0] > t[1] else 1) if len(live) == 2 else live[0]
             new = ends[j] + rest[j] * (1 + load / ea[j]) * a / np.hypot(*a)
         if new is None:
             return None
@@ -278,9 +284,11 @@ def _hung(sat, theta: float, pull, iterations: int = 30):
 
 
 def _ends(sat, theta: float) -> tuple:
-    """The tethers' attachment points at pitch θ: tip-mass (+b along the boom), bus (−a)."""
+    """The tethers' attachment points at pitch θ: s1, s2 along the boom (the thesis's
+    tip-mass +b and bus −a; tethersim.model.bead_layout.attachment_points)."""
+    from tethersim.model.bead_layout import attachment_points
     s, c = math.sin(theta), math.cos(theta)
-    return np.array([sat.b * s, sat.b * c]), np.array([-sat.a * s, -sat.a * c])
+    return tuple(np.array([arm * s, arm * c]) for arm in attachment_points(sat))
 
 
 def _apex(ends, lengths):

@@ -13,10 +13,14 @@ terms) plus the forces of its two segments.  The kernel therefore
 2. calls it again at each bead's position with every drag area zero, and
    takes the balloon rows (δẍ, δÿ) as the bead's gravity-inertial acceleration
    (those rows do not depend on θ nor, with Q = 0, on m3);
-3. adds the segment forces: on the balloon divided by m3, on the boom ends as
-   the torque Q_θ = F · ∂r_end/∂θ divided by I (Eq 3.31; the boom's COM is held,
-   so a force on the boom acts only through Q_θ, as in the base model), on each
-   bead divided by its mass.
+3. adds the segment forces: on the balloon divided by m3, on the boom as the
+   torque Q_θ = F · ∂r_end/∂θ divided by I (Eq 3.31; the boom's COM is held, so a
+   force on the boom acts only through Q_θ, as in the base model), on each bead
+   divided by its mass.
+
+Each line holds the boom at its attachment point r_end = s_j (sin θ, cos θ), s_j
+from the COM toward the tip-mass (``s1``, ``s2`` in the parameter vector; the
+thesis's ends b and −a by default, Eqs 3.10-3.11), anywhere from −a to b.
 
 Segments (tether j, rest length l_j0, N beads, N + 1 segments of rest length
 l_s = l_j0 / (N + 1)), each tension-only, slack when λ_s ≤ l_s, as Eqs 3.35-3.36:
@@ -37,10 +41,12 @@ l_s = l_j0 / (N + 1)), each tension-only, slack when λ_s ≤ l_s, as Eqs 3.35-3
 Mass lumping (the lumped-mass rule of GTOSS and KiteModels.jl): each segment
 carries μ_j / (N + 1) [kg], half to each end node, so an inner bead has
 m_b = μ_j / (N + 1) and each end of the line gets μ_j / (2 (N + 1)): added to
-the balloon's m3 and to the end body's m1 (tether 1) or m2 (tether 2) before
-the base model runs, so the added end masses enter its gravity-gradient torque
-and inertia exactly as the bodies' own masses do.  With N = 0 half of each line
-sits at each end.
+the balloon's m3 and, for a line held at a boom end, to that end's body (m1 at b,
+m2 at −a) before the base model runs, so the added end masses enter its
+gravity-gradient torque and inertia exactly as the bodies' own masses do.  A line
+held between the ends leaves its share e riding the boom at s: e s² more inertia
+and the torque e a_free · ∂r/∂θ, a_free being a free particle's acceleration there
+(the balloon rows again).  With N = 0 half of each line sits at each end.
 
 State (SI): the base model's coordinates, then the beads' offsets from the
 COM point (0, r0) in L, tether 1 then tether 2, each from the boom end to the
@@ -84,6 +90,7 @@ from tethersim.model.bead_layout import (  # noqa: F401  (the layout, re-exporte
     _OMEGA_E,
     _R0,
     _RHO3,
+    _S1,
     BASES,
     EXTRA_PARAMETERS,
     EXTRA_RANGES,
@@ -170,7 +177,7 @@ def node(y, p, n, j, k):
     if k == 0:
         th, thd = y[2], y[nq + 2]
         s, c = sincos(th)  # the generated kernels' sin and cos (generated/trig.py)
-        arm = p[_B] if j == 0 else -p[_A]  # tip-mass at +b, bus at −a along the boom
+        arm = p[_S1 + j]  # the attachment point along the boom (thesis: +b, −a)
         return arm * s, arm * c, arm * thd * c, -arm * thd * s
     i = 3 + 2 * (j * n + k - 1)
     return y[i], y[i + 1], y[nq + i], y[nq + i + 1]
@@ -218,15 +225,19 @@ def _segment(y, p, n, j, s, objective):
 
 @njit(cache=True)
 def _base_inputs(y, p, n, pb, yb):
-    """pb = the base p with the tethers off and the line's end masses added; yb = the
-    boom's and balloon's coordinates and rates (the base model's state)."""
+    """pb = the base p with the tethers off and the line's end masses added (a boom end's
+    to its end body; one held between the ends is :func:`_held_share`'s); yb = the boom's
+    and balloon's coordinates and rates (the base model's state)."""
     for i in range(NB):
         pb[i] = p[i]
     pb[_E1] = pb[_E2] = pb[_C1] = pb[_C2] = 0.0
     e1 = p[NB] / (2.0 * (n + 1))
     e2 = p[NB + 1] / (2.0 * (n + 1))
-    pb[_M1] += e1
-    pb[_M2] += e2
+    for j, e in ((0, e1), (1, e2)):
+        if p[_S1 + j] == p[_B]:
+            pb[_M1] += e
+        elif p[_S1 + j] == -p[_A]:
+            pb[_M2] += e
     pb[_M3] += e1 + e2
     nq = y.shape[0] // 2
     for i in range(3):
@@ -235,11 +246,21 @@ def _base_inputs(y, p, n, pb, yb):
 
 
 @njit(cache=True, inline="always")
+def _held_share(p, n, j):
+    """Mass [kg] of tether j's boom-side end share held at a point between the boom's ends
+    (0 at an end: there it is the end body's, :func:`_base_inputs`)."""
+    s = p[_S1 + j]
+    if s == p[_B] or s == -p[_A]:
+        return 0.0
+    return p[NB + j] / (2.0 * (n + 1))
+
+
+@njit(cache=True, inline="always")
 def _add_force(dydt, p, n, j, k, fx, fy, sc, m3, inertia):
     """Add a force (fx, fy) [N] on tether j's node k to the accelerations in dydt."""
     nq = 3 + 4 * n
-    if k == 0:  # the boom end: Q_θ = F · ∂r_end/∂θ, r_end = arm (sin θ, cos θ) (Eq 3.31)
-        arm = p[_B] if j == 0 else -p[_A]
+    if k == 0:  # the boom: Q_θ = F · ∂r_end/∂θ, r_end = arm (sin θ, cos θ) (Eq 3.31)
+        arm = p[_S1 + j]
         dydt[nq + 2] += arm * (fx * sc[1] - fy * sc[0]) / inertia
     elif k == n + 1:
         dydt[nq] += fx / m3
@@ -266,6 +287,7 @@ def chain_rhs(kind, t, y, p, dydt):
     db = p[_S_DB:_S_DB + 6]
     _base_inputs(y, p, n, pb, yb)
     _base_rhs(kind, t, yb, pb, db)
+    inertia = pb[_M1] * p[_B] ** 2 + pb[_M2] * p[_A] ** 2
     for i in range(nq):
         dydt[i] = y[nq + i]
     dydt[nq] = db[3]
@@ -281,11 +303,24 @@ def chain_rhs(kind, t, y, p, dydt):
         _base_rhs(kind, t, yb, pb, db)
         dydt[nq + i] = db[3]
         dydt[nq + i + 1] = db[4]
-    m3 = p[_M3] + (p[NB] + p[NB + 1]) / (2.0 * (n + 1))
-    m1 = p[_M1] + p[NB] / (2.0 * (n + 1))
-    m2 = p[_M2] + p[NB + 1] / (2.0 * (n + 1))
-    inertia = m1 * p[_B] ** 2 + m2 * p[_A] ** 2
     sc = sincos(y[2])
+    # a line's end share held between the boom's ends: a point mass e riding the boom at
+    # r = s (sin θ, cos θ); its r̈ · ∂r/∂θ is s² θ̈, so it adds e s² to the inertia and
+    # e a_free · ∂r/∂θ to the torque, a_free being a free particle's acceleration there
+    # (the balloon rows again, as a bead's)
+    held, torque = 0.0, 0.0
+    for j in range(2):
+        e = _held_share(p, n, j)
+        if e > 0.0:
+            yb[0], yb[1], yb[3], yb[4] = node(y, p, n, j, 0)
+            _base_rhs(kind, t, yb, pb, db)
+            arm = p[_S1 + j]
+            held += e * arm * arm
+            torque += e * arm * (db[3] * sc[1] - db[4] * sc[0])
+    if held > 0.0:
+        dydt[nq + 2] = (dydt[nq + 2] * inertia + torque) / (inertia + held)
+        inertia += held
+    m3 = p[_M3] + (p[NB] + p[NB + 1]) / (2.0 * (n + 1))
     for j in range(2):
         for s in range(n + 1):
             fx, fy, dx, dy, _, _ = _segment(y, p, n, j, s, kind == _OBJECTIVE)
@@ -329,6 +364,11 @@ def chain_jacobi(kind, y, p):
                 yb[3] = y[nq + i]
                 yb[4] = y[nq + i + 1]
                 h += _base_jacobi(kind, yb, pb)
+        e = _held_share(p, n, j)
+        if e > 0.0:  # its end share held between the boom's ends: a point mass riding it
+            pb[_M3] = e
+            yb[0], yb[1], yb[3], yb[4] = node(y, p, n, j, 0)
+            h += _base_jacobi(kind, yb, pb)
         l_s = p[_L10 + j] / (n + 1)
         for s in range(n + 1):
             lam = _segment(y, p, n, j, s, False)[5]

@@ -60,6 +60,12 @@ PARAMETERS = {
                  "0 or a 10 um filament to a 10 cm rope"),
     "CDt": Param("tethers.CDt", "1", 1.0, "drag coefficient of the lines (bead chains)", 0.5,
                  4.0, True, "0 (no line drag) or a cylinder's free-molecular range"),
+    # attachment points on the boom (docs/beads.md): from the COM toward the tip-mass, in
+    # -a..b (the satellite checks that range; the table's is the lengths' own)
+    "s1": Param("tethers.s1", "m", 1.0, "tether 1 attachment on the boom (bead chains)", -1e4,
+                1e4, True, "a point from the bus end -a to the tip-mass end b"),
+    "s2": Param("tethers.s2", "m", 1.0, "tether 2 attachment on the boom (bead chains)", -1e4,
+                1e4, True, "a point from the bus end -a to the tip-mass end b"),
     "CD": Param("environment.CD", "1", 1.0, "drag coefficient of every body", 0.5, 4.0, True,
                 "0 (no drag) or the free-molecular range of real shapes"),
     "altitude": Param("orbit.altitude_km", "km", 1e3, "circular orbit altitude", 120.0, 1000.0,

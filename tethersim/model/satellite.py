@@ -28,7 +28,7 @@ INITIAL_3D = {"delta_z": "m", "phi": "rad", "psi": "rad", "delta_z_dot": "m/s",
 ROLL_LIMIT_DEG = 80.0
 _OPTIONAL = ("Fb1", "Fb2", "allow_implausible", "orbit", "j2", "eccentricity",
              "reentry_altitude", "atmosphere", "epoch", "f107", "f107a", "ap", "density_scale",
-             "inertia", "I1", "I2", "beads", "mt1", "mt2", "dt1", "dt2", "CDt")
+             "inertia", "I1", "I2", "beads", "mt1", "mt2", "dt1", "dt2", "CDt", "s1", "s2")
 UNITS = {"m1": "kg", "m2": "kg", "m3": "kg", "A1": "m^2", "A2": "m^2", "A3": "m^2",
          "a": "m", "b": "m", "l10": "m", "l20": "m", "E1": "N", "E2": "N",
          "c1": "N s/m", "c2": "N s/m", "CD": "1", "altitude": "m", "Fb1": "N", "Fb2": "N"}
@@ -145,6 +145,11 @@ class Satellite:
     dt1: float = 0.0
     dt2: float = 0.0
     CDt: float = 0.0
+    # where each tether holds the boom [m], from the COM toward the tip-mass (None: the
+    # thesis's boom ends, tether 1 at the tip-mass b, tether 2 at the bus −a); any point
+    # from −a to b, the COM (0) included; runs as a bead chain (docs/beads.md)
+    s1: float | None = None
+    s2: float | None = None
     density_auto: bool = field(default=False, init=False, compare=False, repr=False)
 
     def __post_init__(self):
@@ -181,6 +186,20 @@ class Satellite:
                 f"{self._where()}COM off the boom: m1*b = {lhs:g} kg m but m2*a = {rhs:g} kg m; "
                 f"the thesis puts the COM on the boom (p. 3-1), so m1*b must equal m2*a "
                 f"(relative difference <= {COM_RTOL:g}); e.g. a = {lhs / self.m2:.6g} m")
+        for k in ("s1", "s2"):
+            v = getattr(self, k)
+            if v is None:
+                continue
+            try:
+                v = float(v)
+            except (TypeError, ValueError):
+                v = math.nan
+            if not -self.a <= v <= self.b:
+                raise SatelliteError(f"{self._where()}{k} = {getattr(self, k)!r} m: allowed "
+                                     f"{-self.a:g} to {self.b:g} m (a point on the boom, from "
+                                     f"the bus end -a through the COM 0 to the tip-mass end b)")
+            # the line's own boom end is the thesis's: None, one satellite whichever way given
+            object.__setattr__(self, k, None if v == (self.b if k == "s1" else -self.a) else v)
         try:
             init = tuple(float(x) for x in self.initial)
         except (TypeError, ValueError):

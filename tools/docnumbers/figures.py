@@ -185,6 +185,11 @@ from tools.docnumbers import figures_real as _real  # noqa: E402
 QUANTITIES.update(_real.QUANTITIES)
 FIGURES += _real.FIGURES
 
+from tools.docnumbers import figures_single as _single  # noqa: E402
+
+QUANTITIES.update(_single.QUANTITIES)
+FIGURES += _single.FIGURES
+
 from tools.docnumbers import figures_mc as _mc  # noqa: E402
 
 QUANTITIES.update(_mc.QUANTITIES)
