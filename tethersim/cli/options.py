@@ -152,10 +152,10 @@ def models(args) -> tuple:
 
 def add_atol(parser) -> None:
     """``--atol X``: the adaptive and implicit schemes' absolute tolerance (run only)."""
-    parser.add_argument("--atol", type=atol_float, default=1e-12,
+    parser.add_argument("--atol", type=atol_float, default=None,
                         help="absolute tolerance of the adaptive and implicit schemes [m, rad, "
-                             "m/s, rad/s] (default 1e-12); real lines at rest need 1e-10 or "
-                             "more (their force's rounding level: docs/tethers.md)")
+                             "m/s, rad/s] (default 1e-12; real lines 1e-10, with beads 1e-9: "
+                             "their force's rounding level at rest, docs/tethers.md)")
 
 
 def add_start(parser) -> None:
