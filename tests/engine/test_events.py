@@ -145,6 +145,20 @@ def test_the_stretch_slots_skip_the_tether_lengths_only_where_no_stretch_is_poss
             assert fast[s] == 1.0 or fast[s] == full[s]
 
 
+def test_an_absent_line_has_no_stretch_limit_and_a_present_one_keeps_it(sat):
+    """One line flown alone (the other's E = c = 0, no mass): the absent line's length can
+    be anything, so its stretch slot never fires; the line that holds keeps its limit."""
+    alone = sat.replace(E2=0.0, c2=0.0)
+    p = ts.simulate(sat, periods=0.01, progress=False).parameters
+    y = np.zeros(10)
+    y[0] = 1.5 * MAX_STRETCH * sat.l20  # past both lines' limits
+    for who, ev in (("both", event_parameters(sat, "derived")),
+                    ("alone", event_parameters(alone, "derived"))):
+        g = events_at(0, y, p, ev, True)
+        assert g[SLOT["tether 1 stretch"]] < 0
+        assert (g[SLOT["tether 2 stretch"]] < 0) == (who == "both"), who
+
+
 @pytest.mark.parametrize("method", ["rk4", "adaptive"])
 def test_a_tether_stretch_is_located_to_a_microsecond(blown, method):
     if method == "rk4":

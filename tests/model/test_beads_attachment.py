@@ -125,6 +125,7 @@ def test_a_single_line_trims_the_pitch_by_its_closed_form_torque_balance(s):
     asin(s / s_c), s_c = 3 ω² I / T with T the line's tension (the balloon's drag), to the
     end bodies' own drag (1e-4 rad); beyond s_c the boom lies along the flow (π/2)."""
     from tethersim.engine.start import equilibrium_satellite
+    from tethersim.experiments.real_tethers import single_line_reach
     from tethersim.model.materials import with_tethers
     sat = with_tethers(SAT.replace(l10=30.0, E2=0.0, c2=0.0, s1=s), "dyneema-sk75", 1e-3,
                        tethers=(1,))
@@ -135,6 +136,8 @@ def test_a_single_line_trims_the_pitch_by_its_closed_form_torque_balance(s):
     s_c = 3 * sat.omega ** 2 * sat.pitch_inertia / tension
     want = math.asin(s / s_c) if s < s_c else math.pi / 2
     assert abs(th - want) <= 1e-4, (th, want, s_c)
+    # the report's closed form, from the balloon's drag ½ ρ C_D A3 v² alone
+    assert single_line_reach(sat) == pytest.approx(s_c, rel=1e-6)
 
 
 @pytest.mark.parametrize("changes, words", [

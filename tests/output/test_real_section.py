@@ -54,3 +54,12 @@ def test_the_loads_table_is_the_runs_own_and_the_figure_exists(built):
     assert nums["run"].t[-1] == pytest.approx(PERIODS * nums["run"].satellite.period)
     assert (page.out / "img" / "real_tensions.png").is_file()
     assert "And on real tethers?" in text
+
+
+def test_the_single_line_reach_is_the_satellites_own(built):
+    """The one-line paragraph prints s_c of the report's satellite, in centimetres."""
+    from tethersim.experiments.real_tethers import single_line_reach
+    from tethersim.model.presets import load_preset
+    _, _, text = built
+    reach = single_line_reach(load_preset("satI"))
+    assert f"s_c = 3 ω² I / D = {100 * reach:.3g} cm" in html.unescape(text)

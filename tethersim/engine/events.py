@@ -14,7 +14,8 @@ slot   name             kind      g (positive: inside)
 2      re-entry         terminal  r − R_E − h_min: free-orbit models only
 3      roll             terminal  ROLL_LIMIT − |φ|: 3-D models only
 4      balloon reach    terminal  reach² − |δ|²
-5, 6   tether stretch   terminal  MAX_STRETCH l_j0 − λ_j
+5, 6   tether stretch   terminal  MAX_STRETCH l_j0 − λ_j (none for an absent line:
+                                  E_j = c_j = 0 and no mass, one line flown alone)
 7, 8   tether break     terminal  l_j0 Fb_j / E_j − (λ_j − l_j0): the spring's tension
                                   E_j (λ_j − l_j0) / l_j0 reaches the breaking load Fb_j
                                   (``Satellite.Fb1``, ``Fb2``; 0: never breaks)
@@ -97,8 +98,9 @@ def _model_n_events(model, y):
 
 
 # the event parameter vector (event_parameters): where each limit sits
-EV_H_MIN, EV_ROLL, EV_REACH2, EV_STRETCH, EV_L10, EV_L20, EV_NEAR2, EV_BREAK1, EV_BREAK2 = range(9)
-N_EV = 9
+(EV_H_MIN, EV_ROLL, EV_REACH2, EV_STRETCH, EV_L10, EV_L20, EV_NEAR2, EV_BREAK1, EV_BREAK2,
+ EV_STRETCH2) = range(10)
+N_EV = 10
 
 
 def event_parameters(sat, model: str, stops=STOPS) -> np.ndarray:
@@ -118,11 +120,12 @@ def event_parameters(sat, model: str, stops=STOPS) -> np.ndarray:
     Returns
     -------
     numpy.ndarray
-        float64[N_EV]: h_min [m], roll limit [rad], reach² [m²], largest stretch,
-        l10, l20 [m], the squared balloon distance below which no tether can be
-        over its stretch or break limit (the tether lengths are then not
-        evaluated), and each tether's extension at its breaking load [m] (inf:
-        never breaks).
+        float64[N_EV]: h_min [m], roll limit [rad], reach² [m²], tether 1's largest
+        stretch, l10, l20 [m], the squared balloon distance below which no tether can
+        be over its stretch or break limit (the tether lengths are then not
+        evaluated), each tether's extension at its breaking load [m] (inf: never
+        breaks), and tether 2's largest stretch.  An absent line (E = c = 0, no mass:
+        one line flown alone) has no stretch limit: it holds nothing.
     """
     from tethersim.engine.domain import MAX_STRETCH, ROLL_LIMIT, reach
 
@@ -132,12 +135,13 @@ def event_parameters(sat, model: str, stops=STOPS) -> np.ndarray:
         raise ValueError(f"stops = {sorted(unknown)!r}: allowed values {', '.join(STOPS)}")
     inf = math.inf
     stretch_on = {"tether 1 stretch", "tether 2 stretch"} & stops
-    stretch = MAX_STRETCH if stretch_on else inf
+    absent = (sat.E1 == sat.c1 == sat.mt1 == 0.0, sat.E2 == sat.c2 == sat.mt2 == 0.0)
+    stretch1, stretch2 = (inf if gone or not stretch_on else MAX_STRETCH for gone in absent)
     ev = np.empty(N_EV)
     ev[EV_H_MIN] = sat.reentry_altitude if "re-entry" in stops else -inf
     ev[EV_ROLL] = ROLL_LIMIT if "roll" in stops else inf
     ev[EV_REACH2] = reach(sat) ** 2 if "balloon reach" in stops else inf
-    ev[EV_STRETCH] = stretch
+    ev[EV_STRETCH], ev[EV_STRETCH2] = stretch1, stretch2
     ev[EV_L10], ev[EV_L20] = sat.l10, sat.l20
     # the extension λ − l0 at which the spring's tension E (λ − l0) / l0 is the breaking load
     for slot, j, fb, e, l0 in ((EV_BREAK1, 1, sat.Fb1, sat.E1, sat.l10),
@@ -150,8 +154,8 @@ def event_parameters(sat, model: str, stops=STOPS) -> np.ndarray:
     # keeps the bound conservative against the rounding of |δ|²
     from tethersim.model.bead_layout import attachment_points
     s1, s2 = attachment_points(sat)
-    lim1 = min(stretch * sat.l10, sat.l10 + ev[EV_BREAK1])
-    lim2 = min(stretch * sat.l20, sat.l20 + ev[EV_BREAK2])
+    lim1 = min(stretch1 * sat.l10, sat.l10 + ev[EV_BREAK1])
+    lim2 = min(stretch2 * sat.l20, sat.l20 + ev[EV_BREAK2])
     near = max(min(lim1 - abs(s1), lim2 - abs(s2)), 0.0) * (1.0 - 1e-9)
     ev[EV_NEAR2] = near * near
     return ev
@@ -200,9 +204,9 @@ def _model_events(model, y, p, ev, g, switches):
         g[4] = ev[EV_REACH2] - d2
         if switches or d2 > ev[EV_NEAR2]:
             model_tether_margins(model, y, p, g)  # writes g[0], g[1]
-            l10, l20, s = ev[EV_L10], ev[EV_L20], ev[EV_STRETCH]
-            g[5] = s * l10 - (g[0] + l10)
-            g[6] = s * l20 - (g[1] + l20)
+            l10, l20 = ev[EV_L10], ev[EV_L20]
+            g[5] = ev[EV_STRETCH] * l10 - (g[0] + l10)
+            g[6] = ev[EV_STRETCH2] * l20 - (g[1] + l20)
             g[7] = ev[EV_BREAK1] - g[0]
             g[8] = ev[EV_BREAK2] - g[1]
         else:

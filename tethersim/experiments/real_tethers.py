@@ -13,6 +13,8 @@ the questions of the issue:
 * :func:`trim`: where the balloon sits and the boom trims, and how the trim moves with
   the air density (the solar cycle's ×0.5 … ×2), with the slowest mode's decay time and
   the lines' axial mode from the linearisation (tethersim.analysis.equilibrium);
+* :func:`single_line_reach`: how far from the COM a single line may hold the boom and
+  still leave an upright trim (docs/real-tethers.md, "One line");
 * :func:`density_step`: a nonlinear run from the nominal-air equilibrium, at rest,
   flying in air ``density`` x nominal (the step in drag a solar cycle makes), on the
   implicit scheme (Radau IIA), whose tensions, peak and snap loads and safety factor
@@ -92,6 +94,23 @@ def trim(sat: Satellite, model: str = REAL_MODEL, densities=DENSITIES) -> dict:
                          for k in densities},
             "slowest_decay_h": max(tau for _, _, tau in modes) / 3600,
             "axial_mode": max(w for w, _, _ in modes)}
+
+
+def single_line_reach(sat: Satellite) -> float:
+    """s_c = 3 ω² I / D [m]: a single line held farther than this from the COM turns the
+    boom out of upright.
+
+    Held at s along the boom, the line pulls with the balloon's drag D along the flow, a
+    torque D s cos θ that the gravity gradient's 3 ω² I sin θ cos θ balances at
+    sin θ = s / s_c; beyond s_c the boom lies along the flow.  D = ½ ρ C_D A3 v², v the
+    air's speed past the COM, (ω − ω_E) r0 (Eq 3.33): the balloon's drag at a trim
+    behind the COM.  A stiff line's equilibrium (a chain of no beads,
+    tests/model/test_beads_attachment.py) agrees to 1e-4 rad.
+    """
+    from tethersim.model.constants import OMEGA_EARTH
+    v = (sat.omega - OMEGA_EARTH) * sat.r0
+    drag = 0.5 * sat.rho * sat.CD * sat.A3 * v * v  # rho: density_scale included
+    return 3 * sat.omega ** 2 * sat.pitch_inertia / drag
 
 
 def density_step(sat: Satellite, periods: float, density: float, model: str = REAL_MODEL,

@@ -57,6 +57,7 @@ def real_numbers(sat, periods: float) -> dict:
 
 def section_real(page: Page, periods: float, sat_name: str = "satI") -> dict:
     """Add the section (module docstring) to ``page``; return :func:`real_numbers`."""
+    from tethersim.experiments.real_tethers import single_line_reach
     from tethersim.model.presets import load_preset
     from tethersim.output.plots.run import plot_tensions
 
@@ -88,6 +89,12 @@ def section_real(page: Page, periods: float, sat_name: str = "satI") -> dict:
                 f"scheme (status {run.status}): θ moves by at most {excursion:.3g} rad"))
     body.append(page.img(png, "Tensions of the stretched Dyneema lines after the step in "
                               "drag, with each breaking load."))
+    reach = single_line_reach(sat)
+    body.append(f"<p>One line instead of two: held at the COM it exerts no torque, so the "
+                f"boom trims upright but the balloon neither holds nor damps its pitch; held "
+                f"at s from the COM it tilts the boom to sin θ = s / s_c, and beyond "
+                f"s_c = 3 ω² I / D = {100 * reach:.3g} cm (D the balloon's drag) it lays the "
+                f"boom along the flow (docs/real-tethers.md, \"One line\").</p>")
     body.append(f"<p class='note'>{html.escape(_note())}</p>")
     page.add("And on real tethers?", "\n".join(body))
     return nums
