@@ -160,3 +160,20 @@ def test_a_model_that_holds_its_lines_at_the_ends_refuses_attachment_points():
     # the ends given explicitly are the thesis's lines
     assert np.array_equal(parameter_vector(SAT.replace(s1=SAT.b, s2=-SAT.a), "derived"),
                           parameter_vector(SAT, "derived"))
+
+
+@pytest.mark.slow
+def test_a_line_through_the_com_leaves_the_pitch_mode_the_boom_alones():
+    """find_equilibrium of one Dyneema line held at the COM (it runs the chain of no beads):
+    the pitch mode is the boom's own libration, √3 ω (the end bodies' drag shifts it by
+    ~1e-6), and the balloon adds no damping: it decays as slowly as the boom alone, in
+    years (the bridle's slowest mode: days, docs/real-tethers.md)."""
+    from tethersim.analysis.equilibrium import find_equilibrium
+    from tethersim.model.materials import with_tethers
+    sat = with_tethers(SAT.replace(l10=30.0, E2=0.0, c2=0.0, s1=0.0), "dyneema-sk75", 1e-3,
+                       tethers=(1,))
+    eq = find_equilibrium(sat, "objective-damper")
+    assert eq.model == "objective-damper+beads0"
+    w, _, tau = min(eq.modes(), key=lambda m: m[0])
+    assert w == pytest.approx(math.sqrt(3) * sat.omega, rel=1e-4)
+    assert tau > 1e4 * 3600

@@ -18,9 +18,16 @@ import numpy as np
 from tethersim.analysis.metrics import SETTLING_TOL, wrap
 from tethersim.engine.domain import state_violation
 from tethersim.engine.linearise import attitude_jacobian, rk4_max_step
+from tethersim.engine.start import moved_attachments
 from tethersim.engine.steady import CIRCULAR, RESIDUAL_TOL, NoEquilibrium, steady_coordinates
 from tethersim.model.inputs import parameter_vector
-from tethersim.model.registry import DEFAULT_MODEL, get_model, kernels_of
+from tethersim.model.registry import (
+    BEAD_BASES,
+    DEFAULT_MODEL,
+    bead_model_name,
+    get_model,
+    kernels_of,
+)
 from tethersim.model.satellite import Satellite
 
 NEUTRAL_TOL = 1e-10  # |λ| [1/s] below which a mode is neutral (a cyclic coordinate)
@@ -182,6 +189,10 @@ def find_equilibrium(sat: Satellite, model: str = DEFAULT_MODEL, guess=None) -> 
         raise TypeError(f"sat must be a tethersim Satellite (load_preset/load), got "
                         f"{type(sat).__name__}")
     mdl = get_model(model, CIRCULAR, "find_equilibrium")
+    if moved_attachments(sat) and model in BEAD_BASES:
+        # lines held between the boom's ends: the chain of no beads, as simulate runs it
+        model = bead_model_name(model, 0)
+        mdl = get_model(model)
     if sat.orbit != "circular":
         # the free orbit's r, ν never stand still: the circular answer would be a
         # silent stand-in for an equilibrium that does not exist
@@ -234,6 +245,13 @@ def _checked_guess(guess, n: int):
     return tuple(float(x) for x in g)
 
 
+def _line_state(sat: Satellite, eq: Equilibrium, j: int) -> str:
+    """'taut', 'slack' or 'absent' (E = c = 0 and no mass: one line flown alone)."""
+    if sat.absent_lines[j - 1]:
+        return "absent"
+    return "taut" if eq.taut[j - 1] else "slack"
+
+
 def format_equilibrium(eq: Equilibrium) -> str:
     s = eq.satellite
     lines = [f"{s.name}, model {eq.model}: equilibrium in the rotating frame"]
@@ -246,8 +264,8 @@ def format_equilibrium(eq: Equilibrium) -> str:
              f"theta {eq.theta:.6g} rad ({math.degrees(eq.theta):.4g} deg)"
              + "".join(f"   {k} {v:.6g}" for k, v in eq.coordinates.items()
                        if k in ("delta_z", "phi", "psi")),
-             f"  tether 1 {'taut' if eq.taut[0] else 'slack'}, tether 2 "
-             f"{'taut' if eq.taut[1] else 'slack'}; residual {eq.residual:.2g}",
+             f"  tether 1 {_line_state(s, eq, 1)}, tether 2 {_line_state(s, eq, 2)}; "
+             f"residual {eq.residual:.2g}",
              f"  linearly {'stable' if eq.stable else 'UNSTABLE'}"
              + (f" ({eq.neutral} neutral eigenvalues: yaw about the boom)" if eq.neutral else "")
              + "; oscillatory modes "

@@ -135,8 +135,8 @@ def event_parameters(sat, model: str, stops=STOPS) -> np.ndarray:
         raise ValueError(f"stops = {sorted(unknown)!r}: allowed values {', '.join(STOPS)}")
     inf = math.inf
     stretch_on = {"tether 1 stretch", "tether 2 stretch"} & stops
-    absent = (sat.E1 == sat.c1 == sat.mt1 == 0.0, sat.E2 == sat.c2 == sat.mt2 == 0.0)
-    stretch1, stretch2 = (inf if gone or not stretch_on else MAX_STRETCH for gone in absent)
+    stretch1, stretch2 = (inf if gone or not stretch_on else MAX_STRETCH
+                          for gone in sat.absent_lines)
     ev = np.empty(N_EV)
     ev[EV_H_MIN] = sat.reentry_altitude if "re-entry" in stops else -inf
     ev[EV_ROLL] = ROLL_LIMIT if "roll" in stops else inf

@@ -293,6 +293,11 @@ class Satellite:
         return options.uniform_density(self)
 
     @property
+    def absent_lines(self) -> tuple:
+        """(tether 1, tether 2) absent: E = c = 0 and no mass, one line flown alone."""
+        return (self.E1 == self.c1 == self.mt1 == 0.0, self.E2 == self.c2 == self.mt2 == 0.0)
+
+    @property
     def pitch_inertia(self) -> float:
         """m1 b² + m2 a² [kg m²]: the point-mass moment about the COM (Eq 3.30)."""
         return self.m1 * self.b**2 + self.m2 * self.a**2
