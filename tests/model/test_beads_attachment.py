@@ -157,6 +157,10 @@ def test_a_model_that_holds_its_lines_at_the_ends_refuses_attachment_points():
         parameter_vector(SAT.replace(s1=0.0), "3d")
     msg = str(e.value)
     assert "s1, s2 = 0.0, None m" in msg and "bead chain" in msg and "\n" not in msg
+    # a run of such a model (a free orbit here) says the same, not a word about beads
+    with pytest.raises(ValueError) as e:
+        ts.simulate(SAT.replace(s1=0.0, orbit="free"), periods=0.01, progress=False)
+    assert "model 'free' holds its tethers at the boom ends" in str(e.value)
     # the ends given explicitly are the thesis's lines
     assert np.array_equal(parameter_vector(SAT.replace(s1=SAT.b, s2=-SAT.a), "derived"),
                           parameter_vector(SAT, "derived"))

@@ -107,15 +107,17 @@ def start_run(sat: Satellite, model: str, start: str = "auto", beads=None) -> tu
     equilibrium (:func:`chain_at_rest`), whose boom and balloon coordinates then become
     the satellite's ``initial``.
     """
-    from tethersim.model.bead_layout import check_beads
+    from tethersim.model.bead_layout import attachments_refused, check_beads
     from tethersim.model.inputs import initial_model_state
-    from tethersim.model.registry import bead_model_name
+    from tethersim.model.registry import BEAD_BASES, bead_model_name
     if beads is not None:
         sat = sat.replace(beads=check_beads(beads))
     elif sat.beads is not None:
         check_beads(sat.beads)
-    elif moved_attachments(sat):
-        sat = sat.replace(beads=0)  # lines held between the boom's ends: a chain's
+    elif moved_attachments(sat):  # lines held between the boom's ends: a chain's
+        if model not in BEAD_BASES:
+            raise ValueError(attachments_refused(sat, model))
+        sat = sat.replace(beads=0)
     # the lines' equilibrium: massless, held at their points on the boom (a chain of no
     # beads where those are not the boom's ends), the beads' then from it
     hung = bead_model_name(model, 0) if moved_attachments(sat) else model

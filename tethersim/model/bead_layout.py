@@ -77,6 +77,15 @@ def attachment_points(sat) -> tuple:
     return (sat.b if sat.s1 is None else sat.s1, -sat.a if sat.s2 is None else sat.s2)
 
 
+def attachments_refused(sat, model: str) -> str:
+    """The one-line refusal of ``sat``'s attachment points by ``model``, whose lines hold
+    the boom's ends (only a chain over :data:`BASES` holds them elsewhere)."""
+    return (f"s1, s2 = {sat.s1}, {sat.s2} m (tether attachment points): model {model!r} "
+            f"holds its tethers at the boom ends (b, -a); attachment points run as a bead "
+            f"chain over {', '.join(BASES)} (simulate, tethersim run; --beads 0 for "
+            f"massless lines; docs/beads.md)")
+
+
 def parameter_vector(base_p, mt1: float, mt2: float, dt1: float = 0.0, dt2: float = 0.0,
                      CDt: float = 0.0, n: int = 1, s1: float | None = None,
                      s2: float | None = None) -> np.ndarray:

@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 from tethersim.model.air.vector import air_vector as _air_vector
-from tethersim.model.bead_layout import attachment_points
+from tethersim.model.bead_layout import attachment_points, attachments_refused
 from tethersim.model.constants import J2_EARTH, MU_EARTH, R_EARTH
 from tethersim.model.inertia import body_inertias
 from tethersim.model.options import air_model
@@ -58,10 +58,7 @@ def parameter_vector(sat: Satellite, model: str) -> np.ndarray:
         return bead_layout.parameter_vector(base, sat.mt1, sat.mt2, sat.dt1, sat.dt2, sat.CDt,
                                             n=chain[1], s1=sat.s1, s2=sat.s2)
     if attachment_points(sat) != (sat.b, -sat.a):
-        raise ValueError(f"s1, s2 = {sat.s1}, {sat.s2} m (tether attachment points): model "
-                         f"{model!r} holds its tethers at the boom ends (b, -a); attachment "
-                         f"points run as a bead chain (simulate, --beads 0 for massless "
-                         f"lines; docs/beads.md)")
+        raise ValueError(attachments_refused(sat, model))
     values = model_values(sat)
     return np.array([values[n] for n in get_model(model).parameters], dtype=np.float64)
 
