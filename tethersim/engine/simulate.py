@@ -39,7 +39,7 @@ from tethersim.engine.linearise import rk4_amplification
 from tethersim.engine.progress import advance as _advance
 from tethersim.engine.progress import progress_bar
 from tethersim.engine.result import SimResult
-from tethersim.engine.start import atol_floor, atol_hint, check_start_mode, start_run
+from tethersim.engine.start import atol_floor, atol_hint, check_start_mode, default_atol, start_run
 from tethersim.model.inputs import air_vector, initial_model_state, parameter_vector
 from tethersim.model.registry import DEFAULT_MODEL, model_for_orbit, model_index
 from tethersim.model.satellite import Satellite
@@ -48,7 +48,6 @@ METHODS = ("adaptive", "rk4", "implicit")
 STEPS_PER_PERIOD = 300  # thesis default: 1500 steps for 5 periods (p. 5-1)
 FAITHFUL_STEPS_PER_PERIOD = 200  # thesis chapter 5 runs: 50 periods in 10,000 steps, 26.55 s (p. 5-7)
 SAMPLES_PER_PERIOD = 200  # adaptive output grid when no steps are given
-DEFAULT_ATOL = 1e-12  # the adaptive schemes' atol; real lines: at least atol_floor
 # metrics grid: 26.5 s at 200 km, below half the fastest tether period (~70 s) and far
 # below the pitch libration's (~3100 s); the output grid is refined to at least this
 METRIC_SAMPLES_PER_PERIOD = 200
@@ -78,8 +77,7 @@ def _kernel_args(sat: Satellite, model: str, duration: float) -> tuple:
 
 def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
              method: str = "adaptive", model: str = DEFAULT_MODEL, *,
-             rtol: float = 1e-10, atol: float | None = None,
-             locate_switches: bool | None = None,
+             rtol: float = 1e-10, atol: float | None = None, locate_switches: bool | None = None,
              samples: int | None = None, check: bool = False,
              progress: bool | None = None, step_warning: bool = True,
              start: str = "auto", beads: int | None = None) -> SimResult:
@@ -102,10 +100,8 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
     model : str, optional
         Any name in ``tethersim.MODELS`` (default ``"derived"``).
     rtol, atol : float, optional
-        Adaptive tolerances (default rtol 1e-10; atol 1e-12, or for real lines the
-        rounding level of their force at rest, 1e-10 and with beads 1e-9:
-        tethersim.engine.start.atol_floor).  An atol given below that floor is run as
-        given; a run it stalls says what it needs.
+        Adaptive tolerances (default 1e-10; 1e-12, for real lines their force's rounding
+        floor at rest, tethersim.engine.start.atol_floor: an atol given is run as given).
     locate_switches : bool, optional
         Land steps on taut/slack switches (default: True adaptive, False RK4, as
         the thesis).
@@ -183,8 +179,7 @@ def simulate(sat: Satellite, periods: float = 5.0, steps: int | None = None,
         run = _run_rk4(sat, periods, steps, model, locate, progress, step_warning, y0)
     else:
         rtol = check_range("rtol", rtol, RTOL_RANGE)
-        atol = check_range("atol", max(DEFAULT_ATOL, atol_floor(sat)) if atol is None
-                           else atol, ATOL_RANGE)
+        atol = check_range("atol", default_atol(sat) if atol is None else atol, ATOL_RANGE)
         if samples is not None:
             n_out = check_positive("samples", samples, integer=True)
         elif steps is not None:

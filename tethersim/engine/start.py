@@ -34,6 +34,7 @@ from tethersim.model.registry import get_model
 from tethersim.model.satellite import Satellite
 
 START_MODES = ("auto", "given", "equilibrium")
+DEFAULT_ATOL = 1e-12  # the adaptive schemes' atol (default_atol)
 REAL_LINE_ATOL = 1e-10  # the smallest atol a real line's run meets near rest (atol_floor)
 NEWTON_ITERATIONS = 20  # chain_at_rest's most per stage (3 without progress end it sooner)
 BEAD_LINE_ATOL = 1e-9  # the same with beads on the lines (docs/beads.md, "Running a chain")
@@ -320,6 +321,12 @@ def atol_floor(sat: Satellite) -> float:
     if not real_tethers(sat):
         return 0.0
     return BEAD_LINE_ATOL if sat.beads else REAL_LINE_ATOL
+
+
+def default_atol(sat: Satellite) -> float:
+    """The adaptive schemes' atol when none is given: ``DEFAULT_ATOL``, at least
+    :func:`atol_floor` (docs/tethers.md)."""
+    return max(DEFAULT_ATOL, atol_floor(sat))
 
 
 def atol_hint(sat: Satellite, atol: float) -> str:

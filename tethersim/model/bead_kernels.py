@@ -14,9 +14,9 @@ from types import SimpleNamespace
 
 from numba import njit
 
+from tethersim.model.bead_base import GENERATED
 from tethersim.model.bead_layout import _L10
 from tethersim.model.beads import (
-    GENERATED,
     chain_jacobi,
     chain_power,
     chain_rhs,

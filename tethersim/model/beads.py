@@ -55,7 +55,8 @@ model's, then :data:`EXTRA_PARAMETERS`.  tests/model/test_beads.py and
 tests/derive/test_beads_lagrange.py check it (docs/beads.md).
 
 Compiled code: the kernels here take the base as a literal that picks its generated
-kernels (as tethersim/engine/dynamics.py picks a model's); tethersim.model.bead_kernels
+kernels (tethersim.model.bead_base, as tethersim/engine/dynamics.py picks a model's);
+tethersim.model.bead_kernels
 holds one cached entry point per base (``rhs_derived`` ...) and the chain's event
 functions.  No evaluation allocates: the base model's parameter vector, state and
 rates it builds live in the tail of the chain's parameter vector (``SCRATCH`` floats,
@@ -66,11 +67,10 @@ from __future__ import annotations
 
 import math
 
-from numba import literally, njit, types
-from numba.extending import overload
+from numba import literally, njit
 
-import tethersim.generated as generated
 from tethersim.generated.trig import sincos
+from tethersim.model.bead_base import GENERATED, _base_family_forces, _base_jacobi, _base_rhs
 from tethersim.model.bead_layout import (  # noqa: F401  (the layout, re-exported: one import for users)
     _A,
     _A1,
@@ -105,7 +105,6 @@ from tethersim.model.bead_layout import (  # noqa: F401  (the layout, re-exporte
     straight_chain,
 )
 
-GENERATED = {name: generated.MODELS[name] for name in BASES}
 # the kernels' scratch, the tail of the parameter vector (bead_layout.SCRATCH): base p,
 # base state, base rates
 _S_PB = NB + len(EXTRA_PARAMETERS)
@@ -118,54 +117,6 @@ _FAMILIES = GENERATED[BASES[0]].FAMILIES
 assert all(GENERATED[b].FAMILIES == _FAMILIES for b in BASES)
 _DRAG = tuple(i for i, f in enumerate(_FAMILIES) if f.startswith("drag"))
 N_FAMILIES = len(_FAMILIES)
-
-
-def _base_rhs(kind, t, y, p, dydt):
-    """The generated rhs of base ``BASES[kind]`` (compiled code, literal ``kind`` only)."""
-    raise NotImplementedError("_base_rhs is only callable from compiled code")
-
-
-def _base_jacobi(kind, y, p):
-    """The generated jacobi of base ``BASES[kind]`` (compiled code, literal ``kind`` only)."""
-    raise NotImplementedError("_base_jacobi is only callable from compiled code")
-
-
-def _base_family_forces(kind, y, p, out):
-    """The generated family_forces of base ``BASES[kind]`` (compiled code, literal only)."""
-    raise NotImplementedError("_base_family_forces is only callable from compiled code")
-
-
-@overload(_base_family_forces, prefer_literal=True)
-def _base_family_forces_overload(kind, y, p, out):
-    if not isinstance(kind, types.IntegerLiteral):
-        return None
-    f = GENERATED[BASES[kind.literal_value]].family_forces
-
-    def impl(kind, y, p, out):
-        f(y, p, out)
-    return impl
-
-
-@overload(_base_rhs, prefer_literal=True)
-def _base_rhs_overload(kind, t, y, p, dydt):
-    if not isinstance(kind, types.IntegerLiteral):
-        return None
-    f = GENERATED[BASES[kind.literal_value]].rhs
-
-    def impl(kind, t, y, p, dydt):
-        f(t, y, p, dydt)
-    return impl
-
-
-@overload(_base_jacobi, prefer_literal=True)
-def _base_jacobi_overload(kind, y, p):
-    if not isinstance(kind, types.IntegerLiteral):
-        return None
-    f = GENERATED[BASES[kind.literal_value]].jacobi
-
-    def impl(kind, y, p):
-        return f(y, p)
-    return impl
 
 
 @njit(cache=True, inline="always")
