@@ -18,8 +18,8 @@ import numpy as np
 from tethersim.analysis.metrics import SETTLING_TOL, wrap
 from tethersim.engine.domain import state_violation
 from tethersim.engine.linearise import attitude_jacobian, rk4_max_step
-from tethersim.engine.start import moved_attachments
 from tethersim.engine.steady import CIRCULAR, RESIDUAL_TOL, NoEquilibrium, steady_coordinates
+from tethersim.model.bead_layout import moved_attachments
 from tethersim.model.inputs import parameter_vector
 from tethersim.model.registry import (
     BEAD_BASES,

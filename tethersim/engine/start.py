@@ -108,20 +108,21 @@ def start_run(sat: Satellite, model: str, start: str = "auto", beads=None) -> tu
     equilibrium (:func:`chain_at_rest`), whose boom and balloon coordinates then become
     the satellite's ``initial``.
     """
-    from tethersim.model.bead_layout import attachments_refused, check_beads
+    from tethersim.model.bead_layout import attachments_refused, check_beads, moved_attachments
     from tethersim.model.inputs import initial_model_state
     from tethersim.model.registry import BEAD_BASES, bead_model_name
     if beads is not None:
         sat = sat.replace(beads=check_beads(beads))
     elif sat.beads is not None:
         check_beads(sat.beads)
-    elif moved_attachments(sat):  # lines held between the boom's ends: a chain's
-        if model not in BEAD_BASES:
-            raise ValueError(attachments_refused(sat, model))
+    moved = moved_attachments(sat)
+    if moved and model not in BEAD_BASES:
+        raise ValueError(attachments_refused(sat, model))
+    if moved and sat.beads is None:  # lines held between the boom's ends: a chain's
         sat = sat.replace(beads=0)
     # the lines' equilibrium: massless, held at their points on the boom (a chain of no
     # beads where those are not the boom's ends), the beads' then from it
-    hung = bead_model_name(model, 0) if moved_attachments(sat) else model
+    hung = bead_model_name(model, 0) if moved else model
     sat, start = start_satellite(sat, hung, start)
     if sat.beads is None:
         return sat, start, model, initial_model_state(sat, model)
@@ -132,12 +133,6 @@ def start_run(sat: Satellite, model: str, start: str = "auto", beads=None) -> tu
         sat = sat.replace(initial=(*(float(v) for v in y[:3]), 0.0, 0.0, 0.0),
                           source=sat.source)
     return sat, start, model, y
-
-
-def moved_attachments(sat: Satellite) -> bool:
-    """Whether a tether holds the boom elsewhere than the thesis's end (``s1``, ``s2``)."""
-    from tethersim.model.bead_layout import attachment_points
-    return attachment_points(sat) != (sat.b, -sat.a)
 
 
 def chain_at_rest(y, model: str, sat: Satellite) -> np.ndarray:

@@ -77,6 +77,11 @@ def attachment_points(sat) -> tuple:
     return (sat.b if sat.s1 is None else sat.s1, -sat.a if sat.s2 is None else sat.s2)
 
 
+def moved_attachments(sat) -> bool:
+    """Whether a tether holds the boom elsewhere than the thesis's end (``s1``, ``s2``)."""
+    return attachment_points(sat) != (sat.b, -sat.a)
+
+
 def attachments_refused(sat, model: str) -> str:
     """The one-line refusal of ``sat``'s attachment points by ``model``, whose lines hold
     the boom's ends (only a chain over :data:`BASES` holds them elsewhere)."""

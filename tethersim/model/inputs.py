@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 from tethersim.model.air.vector import air_vector as _air_vector
-from tethersim.model.bead_layout import attachment_points, attachments_refused
+from tethersim.model.bead_layout import attachments_refused, moved_attachments
 from tethersim.model.constants import J2_EARTH, MU_EARTH, R_EARTH
 from tethersim.model.inertia import body_inertias
 from tethersim.model.options import air_model
@@ -57,7 +57,7 @@ def parameter_vector(sat: Satellite, model: str) -> np.ndarray:
         base = parameter_vector(sat.replace(s1=None, s2=None), chain[0])
         return bead_layout.parameter_vector(base, sat.mt1, sat.mt2, sat.dt1, sat.dt2, sat.CDt,
                                             n=chain[1], s1=sat.s1, s2=sat.s2)
-    if attachment_points(sat) != (sat.b, -sat.a):
+    if moved_attachments(sat):
         raise ValueError(attachments_refused(sat, model))
     values = model_values(sat)
     return np.array([values[n] for n in get_model(model).parameters], dtype=np.float64)
