@@ -71,7 +71,7 @@ def test_lane_dop853_step_error_and_dense_output_equal_the_scalar_ones_bit_for_b
     S = np.zeros(kern.N_TRANSCENDENTAL * LANES)
     call(dop853_lanes_step, m, Yl, H, Pl, Ks, YS, Y_new, S)
     err = np.empty(k)
-    dop853_lanes_error(n, Ks, H, Yl, Y_new, rtol, atol, err)
+    dop853_lanes_error(n, Ks, H, Yl, Y_new, rtol, atol, err, np.empty(2 * LANES))
     Fd = np.zeros(7 * m_rows)
     call(dop853_lanes_dense, m, Yl, Y_new, H, Pl, Ks, YS, Fd, S)
     stages = [_unflat(Ks[s * m_rows:(s + 1) * m_rows], k, n) for s in range(N_K)]

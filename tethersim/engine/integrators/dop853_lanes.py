@@ -96,67 +96,36 @@ def dop853_lanes_step(model, Y, H, P, Ks, YS, Y_new, S):
 
 
 @njit(cache=True, error_model="numpy")
-def dop853_lanes_error(n, Ks, H, Y, Y_new, rtol, atol, err):
-    """err[k]: ``steps.dop853_error_norm`` of lane k's last step.
+def dop853_lanes_error(n, Ks, H, Y, Y_new, rtol, atol, err, acc):
+    """err[k]: ``steps.dop853_error_norm`` of lane k's last step; ``acc`` is (2*LANES,)
+    scratch (the norms' sums over the rows).
 
-    Per lane the scalar function's sums in its order; the lanes in fours, each lane's
-    sums in registers (_stage_state_lanes says why).
+    The lane loop inside the row loop, each lane's sums over the stages (a constant
+    count, unrolled) inside it: the lane loop is then innermost and LLVM vectorises it,
+    one lane per vector element.  Measured on an AVX-512 EPYC (8 lanes): 150 ns a call
+    against 500 ns for sums four lanes at a time, which compiled to scalar code there.
+    Each lane's sums in the scalar function's order; unsigned indices (U1).
     """
-    for kb in range(0, H.shape[0], 4):
-        e50 = 0.0
-        e51 = 0.0
-        e52 = 0.0
-        e53 = 0.0
-        e30 = 0.0
-        e31 = 0.0
-        e32 = 0.0
-        e33 = 0.0
-        for i in range(n):
-            r = np.uint64(i * LANES + kb)
-            p0 = 0.0
-            p1 = 0.0
-            p2 = 0.0
-            p3 = 0.0
-            q0 = 0.0
-            q1 = 0.0
-            q2 = 0.0
-            q3 = 0.0
+    K = H.shape[0]
+    for k in range(K):
+        acc[k] = 0.0
+        acc[LANES + k] = 0.0
+    for i in range(n):
+        for k in range(K):
+            s5 = 0.0
+            s3 = 0.0
             for j in range(N_STAGES + 1):
-                c5 = E5[j]
-                c3 = E3[j]
-                o = np.uint64((j * n + i) * LANES + kb)
-                p0 += c5 * Ks[o]
-                p1 += c5 * Ks[o + U1]
-                p2 += c5 * Ks[o + U2]
-                p3 += c5 * Ks[o + U3]
-                q0 += c3 * Ks[o]
-                q1 += c3 * Ks[o + U1]
-                q2 += c3 * Ks[o + U2]
-                q3 += c3 * Ks[o + U3]
-            sc0 = atol + max(abs(Y[r]), abs(Y_new[r])) * rtol
-            sc1 = atol + max(abs(Y[r + U1]), abs(Y_new[r + U1])) * rtol
-            sc2 = atol + max(abs(Y[r + U2]), abs(Y_new[r + U2])) * rtol
-            sc3 = atol + max(abs(Y[r + U3]), abs(Y_new[r + U3])) * rtol
-            e50 += (p0 / sc0) ** 2
-            e51 += (p1 / sc1) ** 2
-            e52 += (p2 / sc2) ** 2
-            e53 += (p3 / sc3) ** 2
-            e30 += (q0 / sc0) ** 2
-            e31 += (q1 / sc1) ** 2
-            e32 += (q2 / sc2) ** 2
-            e33 += (q3 / sc3) ** 2
-        _norm(n, H[kb], e50, e30, err, kb)
-        _norm(n, H[kb + 1], e51, e31, err, kb + 1)
-        _norm(n, H[kb + 2], e52, e32, err, kb + 2)
-        _norm(n, H[kb + 3], e53, e33, err, kb + 3)
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def _norm(n, h, e5, e3, err, k):
-    if e5 == 0.0 and e3 == 0.0:
-        err[k] = 0.0
-    else:
-        err[k] = abs(h) * e5 / math.sqrt((e5 + 0.01 * e3) * n)
+                o = np.uint64((j * n + i) * LANES + k)
+                s5 += E5[j] * Ks[o]
+                s3 += E3[j] * Ks[o]
+            r = np.uint64(i * LANES + k)
+            scale = atol + max(abs(Y[r]), abs(Y_new[r])) * rtol
+            acc[k] += (s5 / scale) ** 2
+            acc[LANES + k] += (s3 / scale) ** 2
+    for k in range(K):
+        e5, e3 = acc[k], acc[LANES + k]
+        norm = abs(H[k]) * e5 / math.sqrt((e5 + 0.01 * e3) * n)
+        err[k] = 0.0 if e5 == 0.0 and e3 == 0.0 else norm
 
 
 @njit(cache=True, error_model="numpy")
@@ -179,25 +148,15 @@ def dop853_lanes_dense(model, Y, Y_new, H, P, Ks, YS, F, S):
             F[r] = dy
             F[um + r] = h * k0 - dy
             F[U2 * um + r] = 2.0 * dy - h * (Ks[us * um + r] + k0)
+        # the lane loop innermost, each lane's sum over the stages (a constant count,
+        # unrolled) inside it: LLVM vectorises across the lanes (dop853_lanes_error;
+        # 340 ns against 650 ns for sums four lanes at a time, AVX-512, 8 lanes)
         for q in range(D.shape[0]):
-            for kb in range(0, K, 4):
-                a0 = 0.0
-                a1 = 0.0
-                a2 = 0.0
-                a3 = 0.0
+            for k in range(K):
+                acc = 0.0
                 for j in range(N_K):
-                    c = D[q, j]
-                    o = np.uint64(j * m + i * LANES + kb)
-                    a0 += c * Ks[o]
-                    a1 += c * Ks[o + U1]
-                    a2 += c * Ks[o + U2]
-                    a3 += c * Ks[o + U3]
-                r = np.uint64((3 + q) * m + i * LANES + kb)
-                h = np.uint64(kb)
-                F[r] = H[h] * a0
-                F[r + U1] = H[h + U1] * a1
-                F[r + U2] = H[h + U2] * a2
-                F[r + U3] = H[h + U3] * a3
+                    acc += D[q, j] * Ks[np.uint64(j * m + i * LANES + k)]
+                F[np.uint64((3 + q) * m + i * LANES + k)] = H[k] * acc
 
 
 @njit(cache=True)

@@ -189,14 +189,14 @@ def _dense_one(model, air, k, T, P, Y, Y_new, Ks, TL, H, lane, out_y, y, yn, pw,
 @njit(cache=True, nogil=True)
 def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, tol,
                    ss_fraction, rec_f, rec_i, Y, PL, Ks, YS, Y_new, S, Fd, H, TL, HL, HN,
-                   TE, err, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm):
+                   TE, err, acc, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm):
     air, T, Y0, P, span, EV, cols = (borrow(air), borrow(T), borrow(Y0), borrow(P),
                                      borrow(span), borrow(EV), borrow(cols))
     rec_f, rec_i, Y, PL, Ks, YS = (borrow(rec_f), borrow(rec_i), borrow(Y), borrow(PL),
                                    borrow(Ks), borrow(YS))
     Y_new, S, Fd, H, TL = (borrow(Y_new), borrow(S), borrow(Fd), borrow(H),
                                 borrow(TL))
-    HL, HN, TE, err = borrow(HL), borrow(HN), borrow(TE), borrow(err)
+    HL, HN, TE, err, acc = borrow(HL), borrow(HN), borrow(TE), borrow(err), borrow(acc)
     lane, g0, g1, out_y, y, f = (borrow(lane), borrow(g0), borrow(g1), borrow(out_y),
                                  borrow(y), borrow(f))
     yn, pw, work, Fs, g, buf, pm = (borrow(yn), borrow(pw), borrow(work), borrow(Fs),
@@ -228,7 +228,7 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
         if active == 0:
             return
         dop853_lanes_step(model, Y, H, PL, Ks, YS, Y_new, S)
-        dop853_lanes_error(ns, Ks, H, Y, Y_new, rtol, atol, err)
+        dop853_lanes_error(ns, Ks, H, Y, Y_new, rtol, atol, err, acc)
         dense = 0
         for k in range(K):
             lane[k, DENSE] = 0
@@ -330,7 +330,7 @@ def sweep_block_lanes853(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, 
     S = np.zeros(model_transcendentals(model) * LANES)
     Fd = np.zeros(7 * m)
     H, TL, HL, HN, TE = np.zeros(K), np.zeros(K), np.zeros(K), np.zeros(K), np.zeros(K)
-    err = np.zeros(K)
+    err, acc = np.zeros(K), np.zeros(2 * LANES)  # the error norms, their sums' scratch
     lane = np.zeros((K, 9), dtype=np.int64)
     for k in range(K):
         lane[k, ST] = EMPTY
@@ -345,4 +345,4 @@ def sweep_block_lanes853(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, 
     pm = np.empty(N_PITCH)
     _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, tol,
                    ss_fraction, rec_f, rec_i, Y, PL, Ks, YS, Y_new, S, Fd, H, TL, HL, HN,
-                   TE, err, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm)
+                   TE, err, acc, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm)
