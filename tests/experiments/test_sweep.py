@@ -190,6 +190,7 @@ def test_blocks_hold_about_forty_orbits_and_keep_every_worker_busy():
     assert block_size(5.0, 10_000, 2) == 8
     assert block_size(50.0, 10_000, 2) == 1
     assert block_size(50.0, 10_000, 2, lanes=4) == 4  # never fewer points than lanes
+    assert block_size(50.0, 40, 2, lanes=8) == 5  # balance first: >= 4 tasks per thread
     assert block_size(5.0, 10_000, 2, lanes=4) == 8
     assert block_size(0.1, 10_000, 2) == 64  # capped
     assert block_size(5.0, 20, 2) == 3  # 20 points on 2 threads: >= 4 tasks each
@@ -198,13 +199,16 @@ def test_blocks_hold_about_forty_orbits_and_keep_every_worker_busy():
 
 def test_a_sweep_of_long_runs_fills_the_simd_lanes(monkeypatch):
     """A 50-orbit sweep (the report's maps) gives each compiled block at least the lanes'
-    points: blocks of one point ran point by point, never on the lanes."""
+    points: blocks of one point ran point by point, never on the lanes.  Ten lanes' worth
+    of points on two threads, whatever the CPU's lanes (4 with AVX2, 8 with AVX-512):
+    fewer points are cut for balance first (block_size)."""
     from tethersim.experiments.sweep import batch, runner
     from tethersim.experiments.sweep.plan import Plan
     sizes = []
     monkeypatch.setattr(batch, "run_satellites",
                         lambda plan, sats: sizes.append(len(sats)) or [{}] * len(sats))
-    runner.run_plan(Plan(periods=50.0), [SAT] * 40, workers=2, progress=False)
-    assert batch.lane_width(Plan(periods=50.0)) >= 4
-    assert sum(sizes) == 40 and min(sizes) >= batch.lane_width(Plan(periods=50.0))
+    lanes = batch.lane_width(Plan(periods=50.0))
+    runner.run_plan(Plan(periods=50.0), [SAT] * (10 * lanes), workers=2, progress=False)
+    assert lanes >= 4
+    assert sum(sizes) == 10 * lanes and min(sizes) >= lanes
     assert batch.lane_width(Plan(periods=50.0, method="implicit")) == 1
