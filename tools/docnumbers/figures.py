@@ -199,3 +199,8 @@ from tools.docnumbers import figures_deorbit as _deorbit  # noqa: E402
 
 QUANTITIES.update(_deorbit.QUANTITIES)
 FIGURES += _deorbit.FIGURES
+
+from tools.docnumbers import figures_atlas_real as _atlas_real  # noqa: E402
+
+QUANTITIES.update(_atlas_real.QUANTITIES)
+FIGURES += _atlas_real.FIGURES
