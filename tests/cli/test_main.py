@@ -14,7 +14,7 @@ from tethersim.cli.main import main as console_main
 
 SATI_TEXT = (resources.files("tethersim.model.presets") / "satI.toml").read_text()
 NAMES = ("run", "validate", "show", "equilibrium", "compare", "forces", "sweep", "tune",
-         "report", "headlines", "feasibility", "design", "mc", "deorbit")
+         "report", "headlines", "feasibility", "design", "mc", "deorbit", "deploy")
 
 
 def test_version_prints_the_package_version(capsys):

@@ -1,5 +1,5 @@
 """Command line: ``tethersim run | validate | show | equilibrium | compare | forces | sweep |
-tune | report | headlines``.
+tune | report | headlines | feasibility | design | mc | deorbit | deploy``.
 
 One module per command (``tethersim/cli/<command>.py``, each with ``add_parser(sub)``
 and ``run(args)``) over the option groups of :mod:`tethersim.cli.options`.  This
@@ -26,6 +26,7 @@ from tethersim._version import __version__
 from tethersim.cli import (
     compare,
     deorbit,
+    deploy,
     design,
     equilibrium,
     feasibility,
@@ -43,7 +44,7 @@ from tethersim.cli import (
 
 # in the order of `tethersim --help`
 COMMANDS = (run, validate, show, equilibrium, compare, forces, sweep, tune, report, headlines,
-            feasibility, design, mc, deorbit)
+            feasibility, design, mc, deorbit, deploy)
 # the options that set a command's run sizes: simulate()'s size refusal, which names its
 # own arguments, names these instead (a command without --steps never blames --steps)
 SIZE_OPTIONS = {"run": "--periods/--steps", "compare": "--periods/--steps",
@@ -51,7 +52,7 @@ SIZE_OPTIONS = {"run": "--periods/--steps", "compare": "--periods/--steps",
                 "tune": "--periods", "report": "--periods", "headlines": "--periods",
                 "feasibility": "--periods/--max-lifetime",
                 "design": "--periods/--max-lifetime", "mc": "--periods/--max-lifetime",
-                "deorbit": "--from/--n/--max-years"}
+                "deorbit": "--from/--n/--max-years", "deploy": "--periods/--sample"}
 
 
 def build_parser() -> options.Parser:

@@ -225,9 +225,9 @@ def parse_grid(name: str, spec: str) -> np.ndarray:
     try:
         return _parse_grid(name, spec)
     except ValueError as exc:
-        if "not a number" not in str(exc) and "must be finite" not in str(exc):
+        p = PARAMETERS.get(name)
+        if p is None or ("not a number" not in str(exc) and "must be finite" not in str(exc)):
             raise
-        p = PARAMETERS[name]
         raise ValueError(f"{exc} (expected {name} values in {p.unit}, plausible range "
                          f"{p.low:g}..{p.high:g})") from None
 

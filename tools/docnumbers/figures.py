@@ -204,3 +204,8 @@ from tools.docnumbers import figures_atlas_real as _atlas_real  # noqa: E402
 
 QUANTITIES.update(_atlas_real.QUANTITIES)
 FIGURES += _atlas_real.FIGURES
+
+from tools.docnumbers import figures_deploy as _deploy  # noqa: E402
+
+QUANTITIES.update(_deploy.QUANTITIES)
+FIGURES += _deploy.FIGURES

@@ -1,0 +1,80 @@
+"""tethersim/cli/deploy.py: the deployment table, its plot, its refusals and its
+interruption."""
+from __future__ import annotations
+
+import csv
+import json
+
+import pytest
+
+from tests.tiers import VARIANT_LOOP
+from tethersim.experiments import deployment
+
+PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+LINES = ["--set", "l10=30.83", "--set", "l20=28.92", "--tethers", "dyneema-sk75:1"]
+SHORT = ["--periods", "0.005", "--sample", "0.01", "--quiet"]  # 26.5 s: the first catches
+
+
+def _rows(path):
+    with path.open() as fh:
+        return list(csv.DictReader(fh))
+
+
+@VARIANT_LOOP  # deploy runs objective-damper's Radau loop (~35 s cold)
+def test_deploy_writes_a_row_per_start_and_the_plot(tmp_path, cli):
+    out = tmp_path / "d"
+    code, stdout, _ = cli(["deploy", "satI", *LINES, *SHORT, "--speeds", "0.1,1",
+                           "--release", "1", "--out", str(out)])
+    assert code == 0, stdout
+    rows = _rows(out / "deployment.csv")
+    assert [(r["start"], float(r["arrival speed [m/s] or release distance [m]"]))
+            for r in rows] == [("arrival", 0.1), ("arrival", 1.0), ("release", 1.0)]
+    arrive, release = rows[1], rows[2]
+    assert float(arrive["first catch [s]"]) == 0.0  # an arrival starts on taut lines
+    assert 10 < float(release["first catch [s]"]) < 26.5  # drag carries it ~28 m in ~18 s
+    # a catch ten times faster pulls about ten times harder (the lines are linear springs)
+    ratio = float(arrive["first catch's peak tension [N]"]) / float(
+        rows[0]["first catch's peak tension [N]"])
+    assert 8 < ratio < 11
+    assert (out / "deployment.png").read_bytes()[:8] == PNG_MAGIC
+    record = json.loads((out / "satellite.json").read_text())
+    assert "deployment.csv" in " ".join(record["files"])
+    assert "first peak [N]" in stdout and "deployment.png" in stdout
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--speeds", "-1"], "--speeds: arrival speed = -1 m/s: allowed 0 to 100 m/s"),
+    (["--release", "40"], "--release: release distance = 40 m: a free release starts with "
+                          "both lines slack, 0 < distance < 28.9 m"),
+    (["--speeds", "", "--release", ""], "--speeds and --release are both empty"),
+    (["--speeds", "fast"], "--speeds fast: 'fast' is not a number (expected speeds 0 to 100"),
+    (["--periods", "50", "--sample", "0.0001"], "--periods/--sample: sample = 0.0001 s over "
+                                                "50 orbits"),
+])
+def test_deploy_refuses_bad_starts_in_one_line_before_any_output(tmp_path, cli, argv,
+                                                                 message):
+    out = tmp_path / "never"
+    code, _, stderr = cli(["deploy", "satI", *LINES, "--quiet", "--out", str(out), *argv])
+    assert code == 2 and message in stderr, stderr
+    assert stderr.count("\n") == 1
+    assert not out.exists()
+
+
+@VARIANT_LOOP  # deploy runs objective-damper's Radau loop (~35 s cold)
+def test_an_interrupted_deploy_keeps_the_starts_it_finished(tmp_path, cli, monkeypatch):
+    done = []
+    real = deployment.deploy
+
+    def deploy_then_ctrl_c(*args):
+        if done:
+            raise KeyboardInterrupt
+        done.append(1)
+        return real(*args)
+
+    monkeypatch.setattr(deployment, "deploy", deploy_then_ctrl_c)
+    out = tmp_path / "d"
+    code, _, stderr = cli(["deploy", "satI", *LINES, *SHORT, "--speeds", "0.1,1",
+                           "--release", "", "--out", str(out)])
+    assert code == 130 and "1 of 2 starts written" in stderr, stderr
+    assert len(_rows(out / "deployment.csv")) == 1
+    assert (out / "satellite.json").is_file()

@@ -1,0 +1,240 @@
+"""How the balloon reaches its lines: the deployment on real tethers (issue 21;
+docs/real-tethers.md, "Deployment").
+
+Every other run of docs/real-tethers.md starts at rest at the equilibrium.  A real
+balloon gets there by a deployment, and on a line that barely stretches the end of it is
+a snap.  This module starts the two ends of the range of deployments:
+
+* :func:`released`: a **free release**.  The balloon is inflated beside the satellite
+  and let go at rest, ``distance`` behind the COM, its lines slack.  Drag carries it
+  back until the lines catch it.
+* :func:`arrival`: the end of a **braked deployment**.  A deployer has paid the lines
+  out under tension and stops them at full length.  The balloon is at its trim point,
+  moving away from the COM at ``speed``, and the lines must stop it.
+
+The deployer itself (the reel, its brake, the lines' paying out) is not modelled.
+:func:`deploy` runs either start on the implicit scheme and reads what a tether
+engineer asks of it (:class:`Deployment`): the first catch's tension, the largest
+tension and its safety factor, how far the boom pitches, whether it turns over and which
+way up it ends.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from tethersim.engine.result import SimResult
+from tethersim.engine.simulate import simulate
+from tethersim.engine.start import equilibrium_satellite
+from tethersim.experiments.real_tethers import REAL_MODEL, RUN_TOLERANCES
+from tethersim.model.satellite import Satellite
+
+#: s: the output grid of :func:`deploy`.  A catch lasts half the balloon's bounce on its
+#: lines, π √(m3 / k): 41 ms on both of SatI's 29 m lines of 1 mm Dyneema, 57 ms on one;
+#: 2 ms samples read its peak to within 1 − cos(π 1 ms / 41 ms) = 0.3 %.
+SAMPLE = 0.002
+MAX_SAMPLES = 5_000_000  # a deployment's output grid: 400 MB of states
+MAX_SPEED = 100.0  # m/s: an arrival speed beyond any deployer (a free release reaches ~3)
+#: the deployment table's columns (key, header with unit): tethersim.output.tables.write_table
+COLUMNS = (("start", "start"), ("value", "arrival speed [m/s] or release distance [m]"),
+           ("status", "status"),
+           ("first_catch", "first catch [s]"), ("catch_speed", "speed at the catch [m/s]"),
+           ("first_peak", "first catch's peak tension [N]"), ("peak", "largest tension [N]"),
+           ("safety_factor", "safety factor"), ("catches", "catches"),
+           ("excursion", "pitch excursion [rad]"), ("turned_over", "turned over"),
+           ("inverted", "ends inverted"), ("closest", "closest approach [m]"))
+
+
+def line_lengths(sat: Satellite, delta_x: float, delta_y: float, theta: float) -> tuple:
+    """Distances [m] from the tip-mass and the bus to the balloon at (δx, δy) with the
+    boom at pitch θ (the lines' λ1, λ2 when they hold the boom ends, Eqs 3.10-3.11)."""
+    s, c = math.sin(theta), math.cos(theta)
+    return (math.hypot(sat.b * s - delta_x, sat.b * c - delta_y),
+            math.hypot(-sat.a * s - delta_x, -sat.a * c - delta_y))
+
+
+def released(sat: Satellite, distance: float, offset: float = 0.0,
+             model: str = REAL_MODEL) -> Satellite:
+    """``sat`` starting as a free release: the balloon at rest at (δx, δy) =
+    (``distance``, ``offset``) [m] from the COM, the boom at its trim, at rest.
+
+    Raises
+    ------
+    ValueError
+        When the balloon would start outside its lines' reach (a line already taut):
+        the allowed distances are named.
+    """
+    trim = equilibrium_satellite(sat, model)
+    theta = trim.initial[2]
+    lam = line_lengths(sat, distance, offset, theta)
+    if not (distance > 0 and lam[0] < sat.l10 and lam[1] < sat.l20):
+        reach = min(math.sqrt(max(sat.l10 ** 2 - (sat.b - offset) ** 2, 0.0)),
+                    math.sqrt(max(sat.l20 ** 2 - (sat.a + offset) ** 2, 0.0)))
+        raise ValueError(f"release distance = {distance:g} m: a free release starts with "
+                         f"both lines slack, 0 < distance < {reach:.3g} m at offset "
+                         f"{offset:g} m (lines {sat.l10:g} and {sat.l20:g} m)")
+    return trim.replace(initial=(float(distance), float(offset), theta, 0.0, 0.0, 0.0))
+
+
+def arrival(sat: Satellite, speed: float, model: str = REAL_MODEL) -> Satellite:
+    """``sat`` starting at the end of a braked deployment: the balloon at its trim point,
+    moving away from the COM at ``speed`` [m/s]; the boom at its trim, at rest.
+
+    Raises
+    ------
+    ValueError
+        For a speed outside 0 ... :data:`MAX_SPEED`.
+    """
+    if not 0.0 <= speed <= MAX_SPEED:
+        raise ValueError(f"arrival speed = {speed:g} m/s: allowed 0 to {MAX_SPEED:g} m/s "
+                         f"(a free release reaches a few m/s)")
+    trim = equilibrium_satellite(sat, model)
+    dx, dy, theta = trim.initial[:3]
+    r = math.hypot(dx, dy)
+    return trim.replace(initial=(dx, dy, theta, speed * dx / r, speed * dy / r, 0.0))
+
+
+@dataclass(frozen=True)
+class Deployment:
+    """What a deployment asks of the lines and the boom (SI).
+
+    Attributes
+    ----------
+    result : SimResult
+        The run, on a :data:`SAMPLE` grid.
+    status : str
+        The run's end: ``ok``, or ``tether-broke`` when a catch pulled a line past its
+        breaking load (at the located time).
+    first_catch : float
+        Time [s] the lines first pull (0 for an arrival: they are taut at the start).
+    catch_speed : float
+        The balloon's speed [m/s] relative to the COM as the lines first pull.
+    first_peak : float
+        Largest tension [N] of either line in the first catch.
+    peak : float
+        Largest tension [N] of either line over the run.
+    safety_factor : float
+        The smaller of the lines' breaking load over their largest tension (NaN when
+        they never break).
+    catches : int
+        Times a slack bridle pulled again, seen on the grid: the rebounds, and the
+        chatter of a balloon coming to rest on its lines (a count that moves with the
+        last bits of the arithmetic)
+    excursion : float
+        Largest |θ − θ(0)| [rad].
+    turned_over : bool
+        Whether the boom passed horizontal (|θ| beyond π/2 from upright).
+    inverted : bool
+        Whether the boom ends the run upside down (tip-mass below).
+    closest : float
+        Closest approach [m] of the balloon to the COM after the first catch.
+    """
+
+    result: SimResult
+    status: str
+    first_catch: float
+    catch_speed: float
+    first_peak: float
+    peak: float
+    safety_factor: float
+    catches: int
+    excursion: float
+    turned_over: bool
+    inverted: bool
+    closest: float
+
+
+def samples(periods: float, period: float, sample: float) -> int:
+    """Output samples of a :func:`deploy` run of ``periods`` orbits of ``period`` [s] every
+    ``sample`` [s]; ValueError naming the sample and the allowed count."""
+    n = periods * period / sample if sample > 0 else math.inf
+    if not 1 <= n <= MAX_SAMPLES:
+        raise ValueError(f"sample = {sample:g} s over {periods:g} orbits: {n:.3g} samples; "
+                         f"allowed 1 to {MAX_SAMPLES:g} (a longer run takes a coarser sample)")
+    return round(n)
+
+
+def deploy(start: Satellite, periods: float = 1.0, sample: float = SAMPLE,
+           model: str = REAL_MODEL) -> Deployment:
+    """Run a deployment start (:func:`released`, :func:`arrival`) for ``periods`` orbits
+    on the implicit scheme (Radau IIA at :data:`RUN_TOLERANCES`), sampled every
+    ``sample`` seconds, and read its :class:`Deployment`."""
+    res = simulate(start, periods=periods, method="implicit", model=model, progress=False,
+                   start="given", steps=samples(periods, start.period, sample),
+                   **RUN_TOLERANCES)
+    y = res.model_states
+    tension = res.tether_tensions()
+    pull = tension.max(axis=1)
+    taut = pull > 0
+    first = int(np.argmax(taut)) if taut.any() else len(pull)
+    end = first + int(np.argmin(taut[first:])) if not taut[first:].all() else len(pull)
+    factors = [fb / tension[:, j].max() for j, fb in enumerate((start.Fb1, start.Fb2))
+               if fb > 0 and tension[:, j].max() > 0]
+    up = np.cos(y[:, 2])
+    caught = first < len(pull)
+    return Deployment(
+        result=res,
+        status=res.status,
+        first_catch=float(res.t[first]) if caught else math.nan,
+        catch_speed=float(np.hypot(y[first, 3], y[first, 4])) if caught else math.nan,
+        first_peak=float(pull[first:end].max()) if caught else 0.0,
+        peak=float(pull.max()),
+        safety_factor=min(factors) if factors else math.nan,
+        catches=int(np.count_nonzero(taut[1:] & ~taut[:-1])),
+        excursion=float(np.abs(y[:, 2] - y[0, 2]).max()),
+        turned_over=bool((up < 0).any()),
+        inverted=bool(up[-1] < 0),
+        closest=float(np.hypot(y[first:, 0], y[first:, 1]).min()) if caught else math.nan)
+
+
+def catch_closed_form(start: Satellite) -> float:
+    """The first catch's peak pull [N] along the trim line u for an :func:`arrival`
+    start, from the bridle's linear modes.
+
+    Taut lines are springs k_j = E_j / l_j0 [N/m] along their directions e_j, so the
+    balloon (mass m3 against the satellite's m1 + m2: reduced mass μ) sits in a 2-D
+    spring of stiffness K = Σ k_j e_j e_jᵀ.  Started at the trim with velocity v u, its
+    displacement is Σ_i (φ_i · u) (v / ω_i) sin(ω_i t) φ_i over the modes K φ_i =
+    μ ω_i² φ_i, and the pull along u is D + v μ Σ_i (φ_i · u)² ω_i sin(ω_i t), with D the
+    lines' pull along u at the start (it holds the drag).  For one mode this is the
+    energy balance's D + v √(k μ).  Left out: the dampers (set c = 0 to compare), the
+    boom's turn (SatI: the peak 0.2 % high), the gravity gradient and Coriolis over the
+    catch's tens of milliseconds.
+    """
+    dx, dy, theta, vx, vy, _ = start.initial
+    v = math.hypot(vx, vy)
+    u = np.array([dx, dy]) / math.hypot(dx, dy)
+    s, c = math.sin(theta), math.cos(theta)
+    stiffness, pull = np.zeros((2, 2)), 0.0
+    for E, l0, p in ((start.E1, start.l10, (start.b * s, start.b * c)),
+                     (start.E2, start.l20, (-start.a * s, -start.a * c))):
+        d = np.array([dx - p[0], dy - p[1]])
+        lam = float(np.linalg.norm(d))
+        e = d / lam
+        stiffness += E / l0 * np.outer(e, e)
+        pull += E * max(lam - l0, 0.0) / l0 * float(e @ u)
+    mu = start.m3 * (start.m1 + start.m2) / (start.m3 + start.m1 + start.m2)
+    k, phi = np.linalg.eigh(stiffness)
+    held = k > 1e-12 * k.max()  # one taut line holds along itself only: one mode
+    omega, share = np.sqrt(k[held] / mu), (phi[:, held].T @ u) ** 2
+    # the catch ends at the pull's first maximum (the lines then slacken): it lies within
+    # the slower mode's half period; samples 1e-4 of it apart read it to ~1e-7
+    t = np.linspace(0.0, math.pi / omega.min(), 10001)
+    along = pull + v * mu * (share * omega * np.sin(np.outer(t, omega))).sum(1)
+    falls = np.flatnonzero(np.diff(along) < 0)
+    return float(along[falls[0]] if falls.size else along[-1])
+
+
+def starts(sat: Satellite, speeds=(), releases=(), model: str = REAL_MODEL) -> list:
+    """[(kind, value, start)]: an :func:`arrival` per speed [m/s], then a
+    :func:`released` per distance [m] (each checked before anything runs)."""
+    return ([("arrival", float(v), arrival(sat, v, model)) for v in speeds]
+            + [("release", float(d), released(sat, d, model=model)) for d in releases])
+
+
+def row(kind: str, value: float, dep: Deployment) -> dict:
+    """One row of the deployment table (:data:`COLUMNS`)."""
+    return {"start": kind, "value": value,
+            **{k: getattr(dep, k) for k, _ in COLUMNS[2:]}}
