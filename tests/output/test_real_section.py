@@ -63,3 +63,20 @@ def test_the_single_line_reach_is_the_satellites_own(built):
     _, _, text = built
     reach = single_line_reach(load_preset("satI"))
     assert f"s_c = 3 ω² I / D = {100 * reach:.3g} cm" in html.unescape(text)
+
+
+def test_the_deployment_table_is_the_deployments_own(built):
+    from tethersim.experiments.deployment import arrival, deploy
+    from tethersim.experiments.real_tethers import STRETCHED_LENGTHS, real_lines
+    from tethersim.model.presets import load_preset
+    from tethersim.output.real_section import ARRIVAL
+
+    page, nums, text = built
+    table = next(t for t in _tables(text) if t[0][0] == "end of the deployment")
+    rows = {r[0]: r for r in table[1:]}
+    assert len(rows) == 2
+    braked = deploy(arrival(real_lines(load_preset("satI"), STRETCHED_LENGTHS), ARRIVAL))
+    first = rows[f"braked arrival at {ARRIVAL:g} m/s"]
+    assert first[1:3] == [f"{braked.first_peak:.4g}", f"{braked.safety_factor:.4g}"]
+    # a braked arrival keeps the boom upright; a free release turns it over
+    assert [r[4] for r in rows.values()] == ["no", "yes"]

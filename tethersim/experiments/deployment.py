@@ -102,8 +102,8 @@ class Deployment:
 
     Attributes
     ----------
-    result : SimResult
-        The run, on a :data:`SAMPLE` grid.
+    result : SimResult or None
+        The run, on a :data:`SAMPLE` grid (None where a caller dropped it).
     status : str
         The run's end: ``ok``, or ``tether-broke`` when a catch pulled a line past its
         breaking load (at the located time).
@@ -132,7 +132,7 @@ class Deployment:
         Closest approach [m] of the balloon to the COM after the first catch.
     """
 
-    result: SimResult
+    result: SimResult | None
     status: str
     first_catch: float
     catch_speed: float

@@ -5,7 +5,8 @@ its move with the air density and its slowest decay on the thesis's tethers and 
 1 mm Dyneema lines of two geometries (SatI's 6 m, and cut to the thesis's stretched
 equilibrium); then a run of the stretched lines from rest at the nominal-air
 equilibrium into doubled air (the solar cycle's step in drag), its tensions against
-the breaking load plotted.
+the breaking load plotted; and the end of the stretched lines' deployment
+(:mod:`tethersim.experiments.deployment`): a braked arrival and a free release.
 """
 from __future__ import annotations
 
@@ -17,6 +18,8 @@ from tethersim.output.page import table as _table
 
 BAND = 0.05  # rad: the thesis's pitch trim band (p. 5-18)
 STEP_DENSITY = 2.0  # x nominal air: the run's step in drag
+ARRIVAL = 0.1  # m/s: the braked arrival of the deployment table (docs/real-tethers.md)
+RELEASE = 1.0  # m behind the COM: the free release
 
 
 def real_numbers(sat, periods: float) -> dict:
@@ -34,8 +37,13 @@ def real_numbers(sat, periods: float) -> dict:
     dict
         ``rows``: {label: (satellite, :func:`~tethersim.experiments.real_tethers.trim`)};
         ``run``: the density-step run of the stretched lines; ``loads``: its
-        :class:`~tethersim.analysis.tethers.TetherLoads`.
+        :class:`~tethersim.analysis.tethers.TetherLoads`; ``deploy``: {label:
+        :class:`~tethersim.experiments.deployment.Deployment` without its run} for a
+        braked arrival and a free release of the stretched lines (one orbit each).
     """
+    from dataclasses import replace
+
+    from tethersim.experiments.deployment import arrival, deploy, released
     from tethersim.analysis.tethers import tether_loads
     from tethersim.experiments.real_tethers import (
         LINE,
@@ -51,8 +59,12 @@ def real_numbers(sat, periods: float) -> dict:
             f"{line}, {sat.l10:g} / {sat.l20:g} m lines": real_lines(sat),
             f"{line}, {STRETCHED_LENGTHS[0]:g} / {STRETCHED_LENGTHS[1]:g} m lines": stretched}
     run = density_step(stretched, periods, STEP_DENSITY)
+    starts = {f"braked arrival at {ARRIVAL:g} m/s": arrival(stretched, ARRIVAL),
+              f"free release {RELEASE:g} m behind the COM": released(stretched, RELEASE)}
     return {"rows": {k: (s, trim(s)) for k, s in sats.items()}, "run": run,
-            "loads": tether_loads(run)}
+            "loads": tether_loads(run),
+            # the runs' 2 ms grids are hundreds of MB: only the record is kept
+            "deploy": {k: replace(deploy(s), result=None) for k, s in starts.items()}}
 
 
 def section_real(page: Page, periods: float, sat_name: str = "satI") -> dict:
@@ -89,6 +101,15 @@ def section_real(page: Page, periods: float, sat_name: str = "satI") -> dict:
                 f"scheme (status {run.status}): θ moves by at most {excursion:.3g} rad"))
     body.append(page.img(png, "Tensions of the stretched Dyneema lines after the step in "
                               "drag, with each breaking load."))
+    body.append(_table(
+        ["end of the deployment", "first catch's peak tension [N]", "safety factor",
+         "pitch excursion [rad]", "boom turned over"],
+        [[label, f"{d.first_peak:.4g}", f"{d.safety_factor:.4g}", f"{d.excursion:.3g}",
+          "yes" if d.turned_over else "no"] for label, d in nums["deploy"].items()],
+        caption="The stretched lines at the end of a deployment, one orbit on the implicit "
+                "scheme sampled every 2 ms: the lines catch the balloon within centimetres, "
+                "and each catch's impulse turns the boom (docs/real-tethers.md, "
+                "\"Deployment\"; tethersim deploy)"))
     reach = single_line_reach(sat)
     body.append(f"<p>One line instead of two: held at the COM it exerts no torque, so the "
                 f"boom trims upright but the balloon neither holds nor damps its pitch; held "

@@ -9,7 +9,8 @@ table that sets each surviving statement of the thesis (docs/sources.md, "The th
 beside what this project computes; whether the design works in a real orbit
 (balloon lost and re-entry of the free orbit, settling, trim across the solar cycle:
 docs/feasibility.md); the same satellite on real (Dyneema) lines: trim, its move with
-the air, decay, and the tensions of a run into doubled air (docs/real-tethers.md);
+the air, decay, the tensions of a run into doubled air and the catch at the end of
+a deployment (docs/real-tethers.md);
 and whether the balloon makes the satellite resist rolling (the 3-D models:
 linear roll and yaw modes against the boom alone, two disturbed runs;
 docs/roll.md).
