@@ -43,8 +43,8 @@ def real_numbers(sat, periods: float) -> dict:
     """
     from dataclasses import replace
 
-    from tethersim.experiments.deployment import arrival, deploy, released
     from tethersim.analysis.tethers import tether_loads
+    from tethersim.experiments.deployment import arrival, deploy, released
     from tethersim.experiments.real_tethers import (
         LINE,
         STRETCHED_LENGTHS,
