@@ -70,6 +70,11 @@ def pre(text: str) -> str:
     return f"<pre>{html.escape(text)}</pre>"
 
 
+def cell(v, fmt=".3g") -> str:
+    """A number formatted for a table cell; ``—`` for None or a non-finite float."""
+    return "—" if v is None or (isinstance(v, float) and not math.isfinite(v)) else format(v, fmt)
+
+
 def is_blank(cell) -> bool:
     """True for an empty, ``—``, NaN or zero cell (``0``, ``0.000``, ``0 of 9``, ``0 %``)."""
     if isinstance(cell, float) and not math.isfinite(cell):

@@ -23,17 +23,17 @@ from __future__ import annotations
 import html
 import math
 import time
-from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from tethersim.analysis.metrics import steady_state_window
 from tethersim.analysis.outcome import outcome
-from tethersim.model import params
 from tethersim.model.presets import load_preset
 from tethersim.output.feasibility_section import section_feasibility
+from tethersim.output.maps_section import MAPS, section_maps
 from tethersim.output.page import Page, write_html
+from tethersim.output.page import cell as _g
 from tethersim.output.page import pre as _pre
 from tethersim.output.page import table as _table
 from tethersim.output.real_section import section_real
@@ -41,37 +41,6 @@ from tethersim.output.roll_section import section_roll
 from tethersim.output.torque_section import section_torque_balance
 
 SATS = ("satI", "satII", "dumbsat")
-
-
-@dataclass(frozen=True)
-class MapSpec:
-    """One stability map: satellite, axes (edge units) and the thesis figure it redoes."""
-
-    sat: str
-    figure: str
-    x: tuple  # (name, start, stop)
-    y: tuple
-
-    def grid(self, n: int) -> tuple:
-        return ((self.x[0], np.linspace(self.x[1], self.x[2], n).tolist()),
-                (self.y[0], np.linspace(self.y[1], self.y[2], n).tolist()))
-
-
-# ranges: SatI's moduli as the thesis swept them (p. 5-18); the others (lost) span 0 to
-# about 2.5x the preset, so that the band E2 ≈ (b/a) E1 crosses the map; damping from 0
-# to 40-50x the preset, past the upper limit where the pitch trim is lost
-MAPS = (
-    MapSpec("satI", "5.21", ("E1", 0.0, 0.02), ("E2", 0.0, 0.06)),
-    MapSpec("satI", "5.13", ("c1", 0.0, 0.012), ("c2", 0.0, 0.012)),
-    MapSpec("satII", "5.22", ("E1", 0.0, 0.005), ("E2", 0.0, 0.12)),
-    MapSpec("satII", "5.23", ("c1", 0.0, 0.012), ("c2", 0.0, 0.012)),
-    MapSpec("dumbsat", "5.27", ("E1", 0.0, 0.06), ("E2", 0.0, 0.06)),
-    MapSpec("dumbsat", "5.28", ("c1", 0.0, 0.06), ("c2", 0.0, 0.06)),
-)
-
-
-def _g(v, fmt=".3g"):
-    return "—" if v is None or (isinstance(v, float) and not math.isfinite(v)) else format(v, fmt)
 
 
 # --- sections ---------------------------------------------------------------------------
@@ -230,80 +199,6 @@ def section_moduli_only(page: Page) -> None:
     page.fact("The tether, taut at 6 m, stretches far beyond", "5-3",
               f"tether 1 up to λ/l0 = {stretch:.2f} ({6 * stretch:.1f} m)",
               "yes" if stretch > 2 else "no", "the balloon trails ~29 m on 6 m tethers")
-
-
-def section_maps(page: Page, grid: int, periods: float, workers, progress) -> list:
-    from tethersim.analysis.classify import agreement
-    from tethersim.analysis.predict import predicted_map
-    from tethersim.experiments.sweep import SweepSpec, run_sweep
-    from tethersim.experiments.sweep.analysis import band_slope, class_counts, differences
-    from tethersim.experiments.sweep.plan import CLASS_RTOL
-    from tethersim.output.plots.sweep import plot_stability_map
-
-    body, summary = [], []
-    for ms in MAPS:
-        sat = load_preset(ms.sat)
-        axes = ms.grid(grid)
-        name = f"{ms.sat}_{axes[0][0]}_{axes[1][0]}"
-        data = {}
-        for method in ("adaptive", "faithful"):
-            # a map asks for classes: the class tolerance (docs/tolerances.md)
-            spec = SweepSpec(sat, axes, periods=periods, method=method, rtol=CLASS_RTOL)
-            # the settings in the name: a report with another grid starts its own stores
-            store = run_sweep(spec, page.out / "sweeps" / f"{name}_{method}_{grid}x{grid}"
-                              f"_{periods:g}orbits_rtol{CLASS_RTOL:g}.zarr",
-                              workers=workers, progress=progress)
-            data[method] = store.dataset()
-        ds, fa = data["adaptive"], data["faithful"]
-        pred = predicted_map(sat, axes[0][0], axes[0][1], axes[1][0], axes[1][1],
-                             periods=periods, progress=False)
-        agree = agreement(pred.predicted_class.values, ds.stability_class.values)
-        agree_f = agreement(fa.stability_class.values, ds.stability_class.values)
-        slope = band_slope(ds) if axes[0][0] == "E1" else float("nan")
-        n_diff = int(differences(ds, fa).sum())
-        nominal = {n: params.edge_value(sat, n) for n, _ in axes}
-        path = plot_stability_map(
-            ds, page.out / "img" / f"map_{name}.png", nominal=nominal,
-            predicted=pred.predicted_class.values, other=fa.stability_class.values,
-            other_label="faithful RK4 differs",
-            band_slope=slope if math.isfinite(slope) else None,
-            title=f"{sat.name}: {axes[1][0]} vs {axes[0][0]} (thesis Fig {ms.figure}), "
-                  f"{periods:g} orbits, DOP853 rtol {CLASS_RTOL:g}")
-        counts = class_counts(ds)
-        if axes[0][0] == "c1":
-            nom = max(sat.c1, sat.c2)
-            high = (ds.c1 > 10 * nom) & (ds.c2 > 10 * nom) & ds.done
-            hc = ds.stability_class.where(high).values
-            n_over = int(np.sum((hc == 3) | (hc == 4)))
-            n_off = int(np.sum(hc == 2))
-            page.fact(f"{sat.name}: an upper range of damping turns the satellite over", "5-11, 5-13",
-                      f"above 10x nominal damping (both tethers): {n_over} points turn over "
-                      f"(upside down or tumbling), {n_off} lose the trim (offset), of "
-                      f"{int(high.sum())}", "yes" if n_over > n_off else "no",
-                      "the thesis damper's torque at rest tilts the trim as damping grows "
-                      "(docs/headlines.md); it does not turn the satellite over")
-        summary.append((sat.name, f"Fig {ms.figure}", f"{axes[0][0]} x {axes[1][0]}",
-                        ", ".join(f"{k} {v}" for k, v in counts.items() if v),
-                        _g(slope, ".3g"), f"{agree['same_stability']:.3f}",
-                        f"{agree['same_class']:.3f}", f"{n_diff} of {ds.stability_class.size}",
-                        f"{agree_f['same_class']:.3f}"))
-        body.append(page.img(path, f"{sat.name} {axes[1][0]} vs {axes[0][0]}: classes (left, "
-                                   f"black line: predicted stable region), steady pitch (right)"))
-    page.add("Stability maps (thesis Figs 5.13, 5.21-5.23, 5.27-5.28)",
-             f"<p>{grid} x {grid} grids of {periods:g}-orbit runs (DOP853 at rtol {CLASS_RTOL:g}, "
-             "the tolerance at which classes have converged: docs/tolerances.md); classes as "
-             "docs/metrics.md. "
-             "Predicted: from the equilibrium near θ = 0 and the eigenvalues of the generated "
-             "Jacobian (tethersim.analysis.predict). Faithful: the thesis's fixed RK4 step (26.55 s).</p>"
-             + _table(("satellite", "thesis figure", "axes", "classes (converged)",
-                       "band slope E2/E1", "predicted vs simulated: same stable verdict",
-                       "same class", "faithful differs at", "faithful vs converged: same class"),
-                      summary, reasons={
-                          "band slope E2/E1": "no stable band on these grids (c1 x c2 maps "
-                                              "have none by construction)",
-                          "faithful differs at": "the thesis's RK4 step gives the converged "
-                                                 "class at every point"}) + "".join(body))
-    return summary
 
 
 def section_facts(page: Page) -> None:

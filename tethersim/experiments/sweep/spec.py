@@ -49,6 +49,9 @@ class SweepSpec:
     progress : bool or None
         Init only: a progress bar while the points are checked (None: if that takes
         over a second, as a million-point grid does; False: never).
+    check : bool
+        Init only: build and check every grid point's satellite (default True; False
+        for a copy of a spec that was checked, :meth:`from_json`).
     names : tuple
         The axis names, in order.
     """
@@ -63,9 +66,10 @@ class SweepSpec:
     samples_per_period: int = SAMPLES_PER_PERIOD
     tol: float = SETTLING_TOL
     progress: InitVar[bool | None] = None
+    check: InitVar[bool] = True
     names: tuple = field(init=False)
 
-    def __post_init__(self, progress=None):
+    def __post_init__(self, progress=None, check=True):
         if not isinstance(self.satellite, Satellite):
             raise TypeError("satellite must be a tethersim Satellite")
         if not isinstance(self.axes, (tuple, list)) or not all(
@@ -98,7 +102,8 @@ class SweepSpec:
         object.__setattr__(self, "model", model_for_orbit(self.model, self.satellite.orbit))
         from tethersim.engine.guards import check_sweep  # before validating (or allocating) 10^12 points
         check_sweep([len(v) for _, v in axes], names)
-        self.check_points(progress)
+        if check:
+            self.check_points(progress)
 
     @property
     def plan(self) -> Plan:
@@ -181,11 +186,12 @@ class SweepSpec:
         }, sort_keys=True)
 
     @classmethod
-    def from_json(cls, text: str) -> SweepSpec:
+    def from_json(cls, text: str, check: bool = True) -> SweepSpec:
+        """The spec of :meth:`to_json`'s text; ``check=False`` skips the points' checks
+        (the copy of a spec that was checked: a worker's)."""
         d = json.loads(text)
         sat = d.pop("satellite")
         sat["initial"] = tuple(sat["initial"])
-        # a worker's (or a store's) copy checks its points without a bar: the command
-        # that made the spec showed one
+        # a copy checks its points without a bar: the command that made the spec showed one
         return cls(satellite=Satellite(**sat), axes=tuple((n, v) for n, v in d.pop("axes")),
-                   progress=False, **d)
+                   progress=False, check=check, **d)
