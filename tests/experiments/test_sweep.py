@@ -155,6 +155,22 @@ def test_a_grid_with_an_invalid_satellite_fails_before_any_run_naming_the_point(
         SweepSpec(SAT, (("l10", [6.0, -1.0]),))
 
 
+def test_a_workers_copy_of_a_checked_spec_does_not_check_its_points_again(monkeypatch):
+    from tethersim.experiments.sweep import point
+    text = SweepSpec(SAT, (("E2", [0.03, 0.0427]),), periods=2.0).to_json()
+    point._spec.cache_clear()
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("the points were checked again")
+
+    monkeypatch.setattr(SweepSpec, "check_points", refuse)
+    copy = point._spec(text)
+    assert copy.to_json() == text
+    point._spec.cache_clear()
+    with pytest.raises(AssertionError, match="checked again"):  # a spec made afresh checks
+        SweepSpec.from_json(text)
+
+
 @pytest.mark.parametrize("spec, values", [
     ("0:0.02:5", [0, 0.005, 0.01, 0.015, 0.02]),
     ("0.1,0.3", [0.1, 0.3]),
