@@ -19,7 +19,7 @@ from tethersim.experiments.deployment import (
 from tethersim.experiments.real_tethers import STRETCHED_LENGTHS, real_lines
 from tethersim.model.presets import load_preset
 
-CATCH = 0.01  # orbits (53 s): the first catch of a release from 1 m comes at ~18 s
+CATCH = 0.01  # orbits (53 s): the first catch of a release from 3 m comes at ~17 s
 FINE = 2e-4  # s: 280 samples across a 56 ms catch
 
 
@@ -87,7 +87,7 @@ def test_an_arrival_at_rest_is_the_equilibrium_and_nothing_moves(bridle):
 
 @VARIANT_LOOP  # deploy runs objective-damper's Radau loop (~35 s cold)
 def test_a_release_flies_slack_until_the_drag_carries_it_to_its_lines(bridle):
-    start = released(bridle, 1.0)
+    start = released(bridle, 3.0)
     dep = deploy(start, periods=CATCH, sample=FINE)
     res = dep.result
     y = res.model_states
@@ -108,7 +108,7 @@ def test_a_release_flies_slack_until_the_drag_carries_it_to_its_lines(bridle):
 def test_the_first_catch_spins_the_boom_by_the_lines_angular_impulse(bridle):
     # Newton-Euler for the boom about its COM: I dθ/dt changes by minus the lines'
     # torque (θ turns the tip-mass towards +δx, clockwise) integrated over the catch
-    start = released(bridle, 1.0)
+    start = released(bridle, 3.0)
     dep = deploy(start, periods=CATCH, sample=FINE)
     res = dep.result
     y, t = res.model_states, res.t
@@ -133,11 +133,11 @@ def test_the_first_catch_spins_the_boom_by_the_lines_angular_impulse(bridle):
 
 @VARIANT_LOOP  # deploy runs objective-damper's Radau loop (~35 s cold)
 def test_a_line_too_thin_for_the_catch_breaks_at_its_breaking_load():
-    # 0.05 mm Dyneema breaks at 5.9 N; a free release from 1 m snaps it within the catch
+    # 0.05 mm Dyneema breaks at 5.9 N; a free release from 3 m snaps it within the catch
     thin = real_lines(load_preset("satI"), STRETCHED_LENGTHS, diameter=5e-5)
-    dep = deploy(released(thin, 1.0), periods=CATCH, sample=FINE)
+    dep = deploy(released(thin, 3.0), periods=CATCH, sample=FINE)
     res = dep.result
-    assert dep.status == "tether-broke" and res.event == "tether 1 break"
+    assert dep.status == "tether-broke" and res.event in ("tether 1 break", "tether 2 break")
     quarter = math.pi / 2 * math.sqrt(thin.m3 * thin.l10 / thin.E1)  # to the catch's peak
     assert dep.first_catch < res.event_time < dep.first_catch + quarter
     assert res.t[-1] == res.event_time  # the run ends at the located break
@@ -146,7 +146,9 @@ def test_a_line_too_thin_for_the_catch_breaks_at_its_breaking_load():
 
 
 @pytest.mark.parametrize("call, match", [
-    (lambda s: released(s, 40.0), r"release distance = 40 m: .* 0 < distance < 28.9 m"),
+    (lambda s: released(s, 40.0), r"release distance = 40 m: .* 1.95 < distance < 28.9 m"),
+    (lambda s: released(s, 1.0), r"release distance = 1 m: .* balloon \(radius 1.95 m\) clear "
+                                 r"of the boom"),
     (lambda s: released(s, -1.0), r"release distance = -1 m"),
     (lambda s: arrival(s, -0.5), rf"arrival speed = -0.5 m/s: allowed 0 to {MAX_SPEED:g}"),
     (lambda s: arrival(s, math.nan), r"arrival speed = nan m/s"),

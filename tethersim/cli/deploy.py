@@ -35,8 +35,9 @@ def add_parser(sub) -> None:
     p.add_argument("--speeds", default=SPEEDS, metavar="V,V,...",
                    help=f"arrival speeds [m/s], a list or start:stop:count (default {SPEEDS}); "
                         f"'' for none")
-    p.add_argument("--release", default="1", metavar="D,D,...",
-                   help="free-release distances behind the COM [m] (default 1); '' for none")
+    p.add_argument("--release", default="3", metavar="D,D,...",
+                   help="free-release distances behind the COM [m], the balloon clear of the "
+                        "boom (default 3); '' for none")
     p.add_argument("--sample", type=options.positive_float, default=SAMPLE, metavar="S",
                    help=f"output grid [s] (default {SAMPLE:g}: finer than a real line's catch, "
                         f"which lasts tens of ms)")

@@ -44,7 +44,7 @@ COLUMNS = (("start", "start"), ("value", "arrival speed [m/s] or release distanc
            ("first_peak", "first catch's peak tension [N]"), ("peak", "largest tension [N]"),
            ("safety_factor", "safety factor"), ("catches", "catches"),
            ("excursion", "pitch excursion [rad]"), ("turned_over", "turned over"),
-           ("inverted", "ends inverted"), ("closest", "closest approach [m]"))
+           ("inverted", "ends inverted"), ("clearance", "clearance to the boom [m]"))
 
 
 def line_lengths(sat: Satellite, delta_x: float, delta_y: float, theta: float) -> tuple:
@@ -55,6 +55,20 @@ def line_lengths(sat: Satellite, delta_x: float, delta_y: float, theta: float) -
             math.hypot(-sat.a * s - delta_x, -sat.a * c - delta_y))
 
 
+def balloon_radius(sat: Satellite) -> float:
+    """√(A3 / π) [m]: the radius of a spherical balloon of frontal area A3."""
+    return math.sqrt(sat.A3 / math.pi)
+
+
+def boom_distance(sat: Satellite, delta_x, delta_y, theta):
+    """Distance [m] from the balloon's centre at (δx, δy) to the boom at pitch θ: the
+    segment from the bus (−a) to the tip-mass (+b) along (sin θ, cos θ).  Floats or
+    arrays."""
+    s, c = np.sin(theta), np.cos(theta)
+    along = np.clip(delta_x * s + delta_y * c, -sat.a, sat.b)
+    return np.hypot(delta_x - along * s, delta_y - along * c)
+
+
 def released(sat: Satellite, distance: float, offset: float = 0.0,
              model: str = REAL_MODEL) -> Satellite:
     """``sat`` starting as a free release: the balloon at rest at (δx, δy) =
@@ -63,17 +77,24 @@ def released(sat: Satellite, distance: float, offset: float = 0.0,
     Raises
     ------
     ValueError
-        When the balloon would start outside its lines' reach (a line already taut):
-        the allowed distances are named.
+        When the balloon would not start clear of the boom (its radius,
+        :func:`balloon_radius`: the model's bodies are points and know no contact) or
+        would start outside its lines' reach (a line already taut): the allowed
+        distances are named.
     """
     trim = equilibrium_satellite(sat, model)
     theta = trim.initial[2]
     lam = line_lengths(sat, distance, offset, theta)
-    if not (distance > 0 and lam[0] < sat.l10 and lam[1] < sat.l20):
+    radius = balloon_radius(sat)
+    clear = distance > 0 and boom_distance(sat, distance, offset, theta) > radius
+    if not (clear and lam[0] < sat.l10 and lam[1] < sat.l20):
+        beyond = max(offset - sat.b, -sat.a - offset, 0.0)  # past an end of the boom
+        low = math.sqrt(max(radius ** 2 - beyond ** 2, 0.0))
         reach = min(math.sqrt(max(sat.l10 ** 2 - (sat.b - offset) ** 2, 0.0)),
                     math.sqrt(max(sat.l20 ** 2 - (sat.a + offset) ** 2, 0.0)))
         raise ValueError(f"release distance = {distance:g} m: a free release starts with "
-                         f"both lines slack, 0 < distance < {reach:.3g} m at offset "
+                         f"the balloon (radius {radius:.3g} m) clear of the boom and both "
+                         f"lines slack, {low:.3g} < distance < {reach:.3g} m at offset "
                          f"{offset:g} m (lines {sat.l10:g} and {sat.l20:g} m)")
     return trim.replace(initial=(float(distance), float(offset), theta, 0.0, 0.0, 0.0))
 
@@ -128,8 +149,10 @@ class Deployment:
         Whether the boom passed horizontal (|θ| beyond π/2 from upright).
     inverted : bool
         Whether the boom ends the run upside down (tip-mass below).
-    closest : float
-        Closest approach [m] of the balloon to the COM after the first catch.
+    clearance : float
+        The smallest gap [m] between the balloon (a sphere of :func:`balloon_radius`)
+        and the boom after the first catch; at or below 0 they touched, which the
+        model, whose bodies are points, does not represent.
     """
 
     result: SimResult | None
@@ -143,7 +166,7 @@ class Deployment:
     excursion: float
     turned_over: bool
     inverted: bool
-    closest: float
+    clearance: float
 
 
 def samples(periods: float, period: float, sample: float) -> int:
@@ -186,7 +209,8 @@ def deploy(start: Satellite, periods: float = 1.0, sample: float = SAMPLE,
         excursion=float(np.abs(y[:, 2] - y[0, 2]).max()),
         turned_over=bool((up < 0).any()),
         inverted=bool(up[-1] < 0),
-        closest=float(np.hypot(y[first:, 0], y[first:, 1]).min()) if caught else math.nan)
+        clearance=float(boom_distance(start, y[first:, 0], y[first:, 1], y[first:, 2]).min()
+                        - balloon_radius(start)) if caught else math.nan)
 
 
 def catch_closed_form(start: Satellite) -> float:
