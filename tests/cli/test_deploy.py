@@ -45,7 +45,8 @@ def test_deploy_writes_a_row_per_start_and_the_plot(tmp_path, cli):
 @pytest.mark.parametrize("argv, message", [
     (["--speeds", "-1"], "--speeds: arrival speed = -1 m/s: allowed 0 to 100 m/s"),
     (["--release", "40"], "--release: release distance = 40 m: a free release starts with "
-                          "the balloon (radius 1.95 m) clear of the boom and both lines slack, 1.95 < distance < 28.9 m"),
+                          "the balloon (radius 1.95 m) clear of the boom and both lines "
+                          "slack, 1.95 < distance < 28.9 m"),
     (["--speeds", "", "--release", ""], "--speeds and --release are both empty"),
     (["--speeds", "fast"], "--speeds fast: 'fast' is not a number (expected speeds 0 to 100"),
     (["--periods", "50", "--sample", "0.0001"], "--periods/--sample: sample = 0.0001 s over "
