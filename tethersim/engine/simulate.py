@@ -4,10 +4,10 @@ Methods: "adaptive" (DOP853, error controlled, switches located; the default
 for analysis), "rk4" (fixed step as in thesis Eqs 4.1-4.5; with
 ``locate_switches=False``, the default for RK4, it is the thesis's scheme and
 the result is labelled faithful) and "implicit" (Radau IIA of order 5, error
-controlled, switches located: for stiff, real tethers, docs/tethers.md).  All
-run their whole loop in numba, in chunks so that a progress bar can be shown
-and Ctrl-C keeps what finished.  All locate the model's stopping limits (engine/events.py) in the loop and end
-a run that reaches one just past it: its last sample is the located state.
+controlled, switches located: for stiff, real tethers, docs/tethers.md).  All run their
+whole loop in numba, in chunks so that a progress bar can be shown and Ctrl-C keeps what
+finished; all locate the model's stopping limits (engine/events.py) in the loop and end a
+run that reaches one just past it: its last sample is the located state.
 """
 from __future__ import annotations
 
@@ -66,6 +66,8 @@ QUICK_RUN_S = 0.5
 # ~2500x a nominal run (steps of ~5 ms): a spinning-up run fails in about a minute, not an
 # hour; no tether of this model's scale (N/mm^2 x 1 mm^2) needs more
 MAX_STEPS_PER_PERIOD = 1_000_000
+
+
 class RK4StepWarning(UserWarning):
     """The RK4 step exceeds what the linearised system supports."""
 
@@ -239,7 +241,7 @@ def estimate_error(run: SimResult) -> SimResult:
 
 
 def _with_error(run: SimResult, fine: SimResult) -> SimResult:
-    if fine.status != "ok":
+    if fine.status != "ok":  # no estimate from a rerun that failed
         return run
     # every generalized coordinate (the 3-D layout's θ is the fifth, φ and ψ beside it; a
     # free orbit's r and ν follow): the first three alone never looked at the attitude
@@ -267,11 +269,9 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn, start) -> SimRe
     out_t = np.empty(steps + 1)
     out_y = np.empty((steps + 1, y.size))
     out_t[0], out_y[0] = 0.0, y
-    row, switches, status = 1, 0, "ok"
-    message, stop = "", {}
+    row, switches, status, message, stop, done = 1, 0, "ok", "", {}, 0
     t0 = time.perf_counter()
     chunk = min(steps, RK4_PAUSE_STEPS)  # the same pauses with or without a bar
-    done = 0
     # this model's compiled loop, chosen (compiled or loaded) once, before the bar
     # starts: its rate, hence its ETA, then counts integration only
     loop = specialised(rk4_run, m, (air, 0, y, h, chunk, 1, p, pw, ev, locate, out_t, out_y,
@@ -299,8 +299,7 @@ def _run_rk4(sat, periods, steps, model, locate, progress, warn, start) -> SimRe
             status, message = "interrupted", f"interrupted at t = {out_t[row - 1]:.6g} s"
     if row < out_t.size:  # stopped early: keep only the rows written, not the whole buffer
         out_t, out_y = out_t[:row].copy(), out_y[:row].copy()
-    return SimResult(sat, model, "rk4", out_t, out_y, step=h,
-                     periods=periods,
+    return SimResult(sat, model, "rk4", out_t, out_y, step=h, periods=periods,
                      locate_switches=locate, nfev=4 * done, n_accepted=done,
                      n_switches=switches, status=status, message=message,
                      wall_time=time.perf_counter() - t0, **stop)
