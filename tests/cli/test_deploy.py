@@ -8,11 +8,13 @@ import json
 import pytest
 
 from tests.tiers import VARIANT_LOOP
+from tethersim.analysis.classify import CLASSES
 from tethersim.experiments import deployment
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 LINES = ["--set", "l10=30.83", "--set", "l20=28.92", "--tethers", "dyneema-sk75:1"]
-SHORT = ["--periods", "0.005", "--sample", "0.01", "--quiet"]  # 26.5 s: the first catches
+# 26.5 s: the first catches; settling runs of 3 orbits
+SHORT = ["--periods", "0.005", "--sample", "0.01", "--settle-periods", "3", "--quiet"]
 
 
 def _rows(path):
@@ -36,6 +38,11 @@ def test_deploy_writes_a_row_per_start_and_the_plot(tmp_path, cli):
     ratio = float(arrive["first catch's peak tension [N]"]) / float(
         rows[0]["first catch's peak tension [N]"])
     assert 8 < ratio < 11
+    # the settling runs: a braked arrival settles upright at once; where a free release
+    # ends after its tumbling is chaotic (docs/real-tethers.md), but it is a class
+    assert rows[0]["class after the settling run"] == "stable"
+    assert float(rows[0]["settling time [h]"]) == 0.0
+    assert release["class after the settling run"] in CLASSES
     assert (out / "deployment.png").read_bytes()[:8] == PNG_MAGIC
     record = json.loads((out / "satellite.json").read_text())
     assert "deployment.csv" in " ".join(record["files"])
@@ -51,6 +58,8 @@ def test_deploy_writes_a_row_per_start_and_the_plot(tmp_path, cli):
     (["--speeds", "fast"], "--speeds fast: 'fast' is not a number (expected speeds 0 to 100"),
     (["--periods", "50", "--sample", "0.0001"], "--periods/--sample: sample = 0.0001 s over "
                                                 "50 orbits"),
+    (["--settle-periods", "1"], "--settle-periods 1: 0 (no settling run) or at least 3 orbits"),
+    (["--settle-periods", "nan"], "--settle-periods nan: 0 (no settling run)"),
 ])
 def test_deploy_refuses_bad_starts_in_one_line_before_any_output(tmp_path, cli, argv,
                                                                  message):

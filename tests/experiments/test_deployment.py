@@ -15,6 +15,7 @@ from tethersim.experiments.deployment import (
     deploy,
     line_lengths,
     released,
+    settle,
 )
 from tethersim.experiments.real_tethers import STRETCHED_LENGTHS, real_lines
 from tethersim.model.presets import load_preset
@@ -83,6 +84,14 @@ def test_an_arrival_at_rest_is_the_equilibrium_and_nothing_moves(bridle):
     y = dep.result.model_states
     assert dep.catches == 0 and dep.result.n_switches == 0
     assert np.ptp(y[:, 2]) < 1e-9 and np.abs(y[:, 3:]).max() < 1e-9
+
+
+@VARIANT_LOOP  # deploy runs objective-damper's Radau loop (~35 s cold)
+def test_an_arrival_at_rest_settles_at_once_at_its_own_trim(bridle):
+    start = arrival(bridle, 0.0)
+    settled = settle(start, periods=5.0)
+    assert settled["settled_class"] == "stable" and settled["settling_h"] == 0.0
+    assert settled["theta_ss"] == pytest.approx(start.initial[2], abs=1e-9)
 
 
 @VARIANT_LOOP  # deploy runs objective-damper's Radau loop (~35 s cold)

@@ -5,7 +5,8 @@ trim point, moving outward at each speed) and as free releases (``--release``: t
 balloon let go at rest that far behind the COM, its lines slack), runs each on the
 implicit scheme (tethersim.experiments.deployment) and writes deployment.csv (one row
 per start: the first catch's peak tension, the largest, the safety factor, the boom's
-pitch excursion, whether it turned over) and deployment.png into
+pitch excursion, whether it turned over; and the class and settling time of a second,
+``--settle-periods`` run on the metrics grid) and deployment.png into
 ``results/<satellite>/deploy`` (or ``--out``).  docs/real-tethers.md, "Deployment".
 """
 from __future__ import annotations
@@ -21,15 +22,16 @@ PITCH_POINTS = 4000  # samples of each start's θ(t) kept for the plot
 
 def add_parser(sub) -> None:
     """Declare ``deploy`` and its options on the subparsers ``sub``."""
-    from tethersim.experiments.deployment import REAL_MODEL, SAMPLE
+    from tethersim.experiments.deployment import REAL_MODEL, SAMPLE, SETTLE_PERIODS
     p = sub.add_parser(
         "deploy", help=HELP,
         description="Start the satellite at the end of a braked deployment (--speeds: the "
                     "balloon at its trim point moving outward) and as free releases "
                     "(--release: let go at rest behind the COM, lines slack); run each on the "
                     "implicit scheme and write deployment.csv (first catch's peak tension, "
-                    "largest tension, safety factor, pitch excursion, turned over) and "
-                    "deployment.png. Real lines: --tethers MATERIAL:DIAMETER_MM.")
+                    "largest tension, safety factor, pitch excursion, turned over, and the "
+                    "class and settling time of a --settle-periods run) and deployment.png. "
+                    "Real lines: --tethers MATERIAL:DIAMETER_MM.")
     options.add_satellite(p)
     options.add_periods(p, default=1.0)
     p.add_argument("--speeds", default=SPEEDS, metavar="V,V,...",
@@ -41,6 +43,9 @@ def add_parser(sub) -> None:
     p.add_argument("--sample", type=options.positive_float, default=SAMPLE, metavar="S",
                    help=f"output grid [s] (default {SAMPLE:g}: finer than a real line's catch, "
                         f"which lasts tens of ms)")
+    p.add_argument("--settle-periods", type=float, default=SETTLE_PERIODS, metavar="N",
+                   help=f"orbits of each start's settling run, on the 200-per-orbit metrics "
+                        f"grid: class and settling time (default {SETTLE_PERIODS:g}; 0: none)")
     p.add_argument("--model", choices=options.model_names(), default=REAL_MODEL,
                    help=f"model variant (default {REAL_MODEL}: the damper on the stretch rate, "
                         f"as a line's material loss)")
@@ -71,6 +76,27 @@ def _starts(args, sat) -> list:
     return todo
 
 
+def _check_sizes(args, sat) -> None:
+    """Refuse, before anything runs, a catch grid or a settling run that would not fit."""
+    import math
+
+    from tethersim.analysis.metrics import min_run_orbits
+    from tethersim.engine.guards import check_simulation
+    from tethersim.experiments.deployment import samples
+    try:
+        samples(args.periods, sat.period, args.sample)
+    except ValueError as exc:
+        raise options.UsageError(f"--periods/--sample: {exc}") from None
+    low = math.ceil(min_run_orbits())
+    n = args.settle_periods
+    if not (n == 0 or (math.isfinite(n) and n >= low)):
+        raise options.UsageError(f"--settle-periods {n:g}: 0 (no settling run) or at least "
+                                 f"{low} orbits (a shorter run decides no class, "
+                                 f"docs/metrics.md)")
+    if n:
+        check_simulation(n, check=False, subject="--settle-periods")
+
+
 def run(args) -> int:
     """Run the command.
 
@@ -88,7 +114,7 @@ def run(args) -> int:
     from tqdm.auto import tqdm
 
     from tethersim.cli import preflight
-    from tethersim.experiments.deployment import COLUMNS, deploy, row
+    from tethersim.experiments.deployment import COLUMNS, deploy, row, settle
     from tethersim.output.plots.deploy import FILE, plot_deployment
     from tethersim.output.tables import write_table
 
@@ -96,11 +122,7 @@ def run(args) -> int:
     from tethersim.cli.overrides import refuse_unused
     refuse_unused(args, sat, (args.model,))
     todo = _starts(args, sat)
-    from tethersim.experiments.deployment import samples
-    try:
-        samples(args.periods, sat.period, args.sample)
-    except ValueError as exc:
-        raise options.UsageError(f"--periods/--sample: {exc}") from None
+    _check_sizes(args, sat)
     out = Path(args.out) if args.out else options.default_out(args, "deploy")
     preflight.check_files(out, ("deployment.csv", FILE, "satellite.json"))
     record = options.claim_folder(out, args, sat)
@@ -110,7 +132,9 @@ def run(args) -> int:
         for kind, value, start in tqdm(todo, desc="deploy", unit="start",
                                        disable=options.progress(args) is False, leave=False):
             dep = deploy(start, args.periods, args.sample, args.model)
-            rows.append(row(kind, value, dep))
+            settled = (settle(start, args.settle_periods, args.model)
+                       if args.settle_periods else None)
+            rows.append(row(kind, value, dep, settled))
             y = dep.result.model_states
             every = max(1, len(y) // PITCH_POINTS)
             pitch.append((dep.result.t[::every], y[::every, 2] - y[0, 2]))
@@ -133,11 +157,12 @@ def run(args) -> int:
 
 def _print(rows) -> None:
     head = ("start", "value", "status", "catch [s]", "speed [m/s]", "first peak [N]",
-            "peak [N]", "safety", "pitch [rad]", "turned over")
+            "peak [N]", "safety", "pitch [rad]", "turned over", "settles as", "in [h]")
     print("  ".join(f"{h:>14}" for h in head))
     for r in rows:
         cells = (r["start"], f"{r['value']:g}", r["status"], f"{r['first_catch']:.4g}",
                  f"{r['catch_speed']:.4g}", f"{r['first_peak']:.4g}", f"{r['peak']:.4g}",
                  f"{r['safety_factor']:.4g}", f"{r['excursion']:.4g}",
-                 "yes" if r["turned_over"] else "no")
+                 "yes" if r["turned_over"] else "no", r["settled_class"] or "-",
+                 f"{r['settling_h']:.3g}")
         print("  ".join(f"{c:>14}" for c in cells))

@@ -37,6 +37,7 @@ from tethersim.model.satellite import Satellite
 SAMPLE = 0.002
 MAX_SAMPLES = 5_000_000  # a deployment's output grid: 400 MB of states
 MAX_SPEED = 100.0  # m/s: an arrival speed beyond any deployer (a free release reaches ~3)
+SETTLE_PERIODS = 50.0  # orbits of :func:`settle`: the thesis's run length (p. 5-7)
 #: the deployment table's columns (key, header with unit): tethersim.output.tables.write_table
 COLUMNS = (("start", "start"), ("value", "arrival speed [m/s] or release distance [m]"),
            ("status", "status"),
@@ -44,7 +45,9 @@ COLUMNS = (("start", "start"), ("value", "arrival speed [m/s] or release distanc
            ("first_peak", "first catch's peak tension [N]"), ("peak", "largest tension [N]"),
            ("safety_factor", "safety factor"), ("catches", "catches"),
            ("excursion", "pitch excursion [rad]"), ("turned_over", "turned over"),
-           ("inverted", "ends inverted"), ("clearance", "clearance to the boom [m]"))
+           ("inverted", "ends inverted"), ("clearance", "clearance to the boom [m]"),
+           ("settled_class", "class after the settling run"),
+           ("settling_h", "settling time [h]"))
 
 
 def line_lengths(sat: Satellite, delta_x: float, delta_y: float, theta: float) -> tuple:
@@ -251,6 +254,26 @@ def catch_closed_form(start: Satellite) -> float:
     return float(along[falls[0]] if falls.size else along[-1])
 
 
+def settle(start: Satellite, periods: float = SETTLE_PERIODS, model: str = REAL_MODEL) -> dict:
+    """Where a deployment start settles: ``periods`` orbits on the implicit scheme, judged
+    by the thesis's criterion on the metrics grid (tethersim.analysis.outcome).
+
+    Returns
+    -------
+    dict
+        ``settled_class`` (stable, offset, upside_down, tumbling, ...: docs/metrics.md),
+        ``settling_h``, the last time [h] θ left the ±0.05 rad band about its steady
+        value (NaN when it never settled), and ``theta_ss`` [rad].
+    """
+    from tethersim.analysis.outcome import outcome
+    out = outcome(simulate(start, periods=periods, method="implicit", model=model,
+                           progress=False, start="given", **RUN_TOLERANCES), forces=False)
+    m = out.metrics
+    return {"settled_class": out.class_name,
+            "settling_h": m.settling_time / 3600 if m is not None else math.nan,
+            "theta_ss": m.steady_state_pitch if m is not None else math.nan}
+
+
 def starts(sat: Satellite, speeds=(), releases=(), model: str = REAL_MODEL) -> list:
     """[(kind, value, start)]: an :func:`arrival` per speed [m/s], then a
     :func:`released` per distance [m] (each checked before anything runs)."""
@@ -258,7 +281,10 @@ def starts(sat: Satellite, speeds=(), releases=(), model: str = REAL_MODEL) -> l
             + [("release", float(d), released(sat, d, model=model)) for d in releases])
 
 
-def row(kind: str, value: float, dep: Deployment) -> dict:
-    """One row of the deployment table (:data:`COLUMNS`)."""
-    return {"start": kind, "value": value,
-            **{k: getattr(dep, k) for k, _ in COLUMNS[2:]}}
+def row(kind: str, value: float, dep: Deployment, settled: dict | None = None) -> dict:
+    """One row of the deployment table (:data:`COLUMNS`): the catch's :class:`Deployment`
+    and, when given, its :func:`settle` (else blank)."""
+    settled = settled or {"settled_class": "", "settling_h": math.nan}
+    return {"start": kind, "value": value, "settled_class": settled["settled_class"],
+            "settling_h": settled["settling_h"],
+            **{k: getattr(dep, k) for k, _ in COLUMNS[2:-2]}}
