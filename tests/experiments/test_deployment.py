@@ -44,6 +44,27 @@ def _pull_along_trim(dep, start):
     return pull
 
 
+def test_the_lines_turn_the_boom_only_by_the_balloons_height_times_their_pull(bridle):
+    # Varignon: both lines meet at the balloon, so their torque on the boom about the COM
+    # is the balloon's position crossed with their pull, whatever their lengths: the
+    # generated families (springs and Kelvin-Voigt dampers) give Q_θ = δx Q_δy − δy Q_δx.
+    # Hence the pay-out rule of docs/real-tethers.md: a balloon level with the COM pulls
+    # the boom without a torque.
+    from generated import objective_damper
+    from generated.layout import FAMILIES
+    from tethersim.model.inputs import parameter_vector
+    lines = [FAMILIES.index(f) for f in ("spring1", "spring2", "damper1", "damper2")]
+    p = parameter_vector(bridle, "objective-damper")
+    rng = np.random.default_rng(7)
+    for _ in range(20):
+        y = np.array([30.0, 0.0, 0.0, 0.0, 0.0, 0.0]) + rng.normal(size=6) * (
+            3.0, 3.0, 0.5, 1.0, 1.0, 0.01)
+        out = np.zeros((len(FAMILIES), 3))
+        objective_damper.family_forces.py_func(y, p.copy(), out)
+        qx, qy, qt = out[lines].sum(axis=0)
+        assert qt == pytest.approx(y[0] * qy - y[1] * qx, rel=1e-12, abs=1e-9)
+
+
 def test_with_one_line_the_closed_form_is_the_energy_balance(bridle):
     # one taut line, one mode: the pull along u peaks at D_u + v (e·u)² √(k μ)
     sat = bridle.replace(E2=0.0, c2=0.0, Fb2=0.0)

@@ -97,6 +97,15 @@ def closed_form_ratio() -> float:
     return float(pull.max() / catch_closed_form(start))
 
 
+def payout_rule() -> tuple:
+    """(b² − a² [m²], l10² − l20² of the stretched bridle [m²], its rigid apex's height
+    above the COM with the boom upright [m]): the pay-out rule's figures."""
+    s = bridle()
+    rule, lines = s.b ** 2 - s.a ** 2, s.l10 ** 2 - s.l20 ** 2
+    # x² + (y − b)² = l10², x² + (y + a)² = l20²: their difference is linear in y
+    return rule, lines, (rule - lines) / (2 * (s.a + s.b))
+
+
 _T = "| arrival speed [m/s] |"
 ROW = ("first_peak", "peak", "safety_factor", "excursion", "settling_h")
 # the pitch's figures move with the rebounds' phases (module docstring): the excursion by up
@@ -130,7 +139,13 @@ QUANTITIES = {
     "deploy_band_speed": first_leaving_speed,
     "deploy_closed_form_pc": lambda: 100 * (1 - closed_form_ratio()),
 }
+QUANTITIES.update({"deploy_rule": lambda: payout_rule()[0],
+                   "deploy_rule_lines": lambda: payout_rule()[1],
+                   "deploy_rule_apex": lambda: abs(payout_rule()[2])})
 FIGURES = [
+    Figure(D, (H, "l10² − l20² = b² − a², "), "deploy_rule"),
+    Figure(D, (H, "The stretched bridle's lengths give "), "deploy_rule_lines"),
+    Figure(D, (H, "puts the apex "), "deploy_rule_apex"),
     Figure(D, (H, "first pull at "), "deploy_release_catch_s", slow=True),
     Figure(D, (H, "first pull at ", " s and "), "deploy_release_speed", slow=True),
     Figure(D, (H, "One line snaps to "), "deploy_release_peak", slow=True),
