@@ -14,6 +14,7 @@ from tethersim.experiments.deployment import (
     catch_closed_form,
     deploy,
     line_lengths,
+    pull_along_trim,
     released,
     settle,
 )
@@ -29,19 +30,6 @@ def bridle():
     """SatI on the stretched bridle of 1 mm Dyneema, dampers off (the closed forms'
     lines are springs)."""
     return real_lines(load_preset("satI"), STRETCHED_LENGTHS).replace(c1=0.0, c2=0.0)
-
-
-def _pull_along_trim(dep, start):
-    """Both lines' pull [N] along the start's trim line u, at each sample."""
-    y = dep.result.model_states
-    tension = dep.result.tether_tensions()
-    u = np.array(start.initial[:2]) / math.hypot(*start.initial[:2])
-    s, c = np.sin(y[:, 2]), np.cos(y[:, 2])
-    pull = np.zeros(len(y))
-    for j, (px, py) in enumerate(((start.b * s, start.b * c), (-start.a * s, -start.a * c))):
-        d = np.stack([y[:, 0] - px, y[:, 1] - py], axis=1)
-        pull += tension[:, j] * ((d / np.linalg.norm(d, axis=1)[:, None]) @ u)
-    return pull
 
 
 def test_the_lines_turn_the_boom_only_by_the_balloons_height_times_their_pull(bridle):
@@ -86,7 +74,7 @@ def test_an_arrivals_first_catch_is_the_bridles_modal_closed_form_to_5e_5(bridle
     # out, shrink 100-fold; what is left is the gravity gradient and Coriolis over ~20 ms
     start = arrival(bridle.replace(m1=1e3, m2=1.05e4), speed)
     dep = deploy(start, periods=1e-4, sample=FINE)
-    pull = _pull_along_trim(dep, start)
+    pull = pull_along_trim(dep.result, start)
     first = pull[:int(np.argmax(dep.result.tether_tensions().max(1) <= 0)) or None].max()
     assert first == pytest.approx(catch_closed_form(start), rel=5e-5)
 
@@ -95,15 +83,15 @@ def test_an_arrivals_first_catch_is_the_bridles_modal_closed_form_to_5e_5(bridle
 def test_on_satI_the_boom_turn_softens_the_catch_by_under_half_a_percent(bridle):
     start = arrival(bridle, 1.0)
     dep = deploy(start, periods=1e-4, sample=FINE)
-    ratio = _pull_along_trim(dep, start).max() / catch_closed_form(start)
+    ratio = pull_along_trim(dep.result, start).max() / catch_closed_form(start)
     assert 0.995 < ratio < 1.0, ratio
 
 
 @VARIANT_LOOP  # deploy runs objective-damper's Radau loop (~35 s cold)
 def test_an_arrival_at_rest_is_the_equilibrium_and_nothing_moves(bridle):
-    dep = deploy(arrival(bridle, 0.0), periods=0.05, sample=1.0)
+    dep = deploy(arrival(bridle, 0.0), periods=0.01)
     y = dep.result.model_states
-    assert dep.catches == 0 and dep.result.n_switches == 0
+    assert dep.catches == 0 and dep.result.n_switches == 0 and dep.first_catch == 0.0
     assert np.ptp(y[:, 2]) < 1e-9 and np.abs(y[:, 3:]).max() < 1e-9
 
 
@@ -157,8 +145,10 @@ def test_the_first_catch_spins_the_boom_by_the_lines_angular_impulse(bridle):
     spin = start.pitch_inertia * (y[b, 5] - y[a - 1, 5])
     # the trapezoid rule on 280 samples of a half sine: ~1e-5 (8e-8 measured)
     assert spin == pytest.approx(-impulse, rel=1e-4)
-    # and it is some 40 times the orbit rate: no gravity gradient can hold that
-    assert abs(y[b, 5]) > 20 * start.omega
+    # the record reads the same catch: its end, its duration, the spin it leaves
+    assert dep.spin == abs(y[b, 5]) and dep.catch_duration == t[b] - t[a]
+    # some 36 times the orbit rate, where the gravity gradient holds at most √3 times it
+    assert dep.spin > 20 * start.omega
 
 
 @VARIANT_LOOP  # deploy runs objective-damper's Radau loop (~35 s cold)
@@ -173,6 +163,18 @@ def test_a_line_too_thin_for_the_catch_breaks_at_its_breaking_load():
     assert res.t[-1] == res.event_time  # the run ends at the located break
     assert dep.first_peak == pytest.approx(thin.Fb1, rel=1e-6)
     assert dep.safety_factor == pytest.approx(1.0, rel=1e-6)
+
+
+def test_a_catch_needs_a_grid_finer_than_it_and_a_planar_model(bridle):
+    # 2 ms is the default; a catch on one 1 mm Dyneema line of ~29 m lasts 56 ms
+    with pytest.raises(ValueError, match=r"sample = 0.5 s: a catch on these lines lasts "
+                                         r"0.0562 s .* 0 < sample <= 0.00562 s"):
+        deploy(arrival(bridle, 0.1), sample=0.5)
+    with pytest.raises(ValueError, match=r"model = 'free', orbit = 'circular': a deployment "
+                                         r"runs the planar circular-orbit models \(derived, "):
+        arrival(bridle, 0.1, model="free")
+    with pytest.raises(ValueError, match="no line is taut"):
+        catch_closed_form(released(bridle, 3.0))
 
 
 @pytest.mark.parametrize("call, match", [

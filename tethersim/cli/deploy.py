@@ -22,7 +22,7 @@ PITCH_POINTS = 4000  # samples of each start's θ(t) kept for the plot
 
 def add_parser(sub) -> None:
     """Declare ``deploy`` and its options on the subparsers ``sub``."""
-    from tethersim.experiments.deployment import REAL_MODEL, SAMPLE, SETTLE_PERIODS
+    from tethersim.experiments.deployment import PLANAR, REAL_MODEL, SAMPLE, SETTLE_PERIODS
     p = sub.add_parser(
         "deploy", help=HELP,
         description="Start the satellite at the end of a braked deployment (--speeds: the "
@@ -46,7 +46,7 @@ def add_parser(sub) -> None:
     p.add_argument("--settle-periods", type=float, default=SETTLE_PERIODS, metavar="N",
                    help=f"orbits of each start's settling run, on the 200-per-orbit metrics "
                         f"grid: class and settling time (default {SETTLE_PERIODS:g}; 0: none)")
-    p.add_argument("--model", choices=options.model_names(), default=REAL_MODEL,
+    p.add_argument("--model", choices=PLANAR, default=REAL_MODEL,
                    help=f"model variant (default {REAL_MODEL}: the damper on the stretch rate, "
                         f"as a line's material loss)")
     options.add_out(p, "results/<satellite>/deploy")
@@ -82,8 +82,9 @@ def _check_sizes(args, sat) -> None:
 
     from tethersim.analysis.metrics import min_run_orbits
     from tethersim.engine.guards import check_simulation
-    from tethersim.experiments.deployment import samples
+    from tethersim.experiments.deployment import check_sample, samples
     try:
+        check_sample(sat, args.sample)
         samples(args.periods, sat.period, args.sample)
     except ValueError as exc:
         raise options.UsageError(f"--periods/--sample: {exc}") from None
@@ -137,7 +138,7 @@ def run(args) -> int:
             rows.append(row(kind, value, dep, settled))
             y = dep.result.model_states
             every = max(1, len(y) // PITCH_POINTS)
-            pitch.append((dep.result.t[::every], y[::every, 2] - y[0, 2]))
+            pitch.append((dep.result.t[::every].copy(), y[::every, 2] - y[0, 2]))
             del dep  # its fine grid is hundreds of MB
             write_table(table, rows, COLUMNS)  # an interruption keeps the finished rows
     except KeyboardInterrupt:

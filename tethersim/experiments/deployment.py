@@ -29,6 +29,7 @@ from tethersim.engine.result import SimResult
 from tethersim.engine.simulate import simulate
 from tethersim.engine.start import equilibrium_satellite
 from tethersim.experiments.real_tethers import REAL_MODEL, RUN_TOLERANCES
+from tethersim.model.registry import MODELS
 from tethersim.model.satellite import Satellite
 
 #: s: the output grid of :func:`deploy`.  A catch lasts half the balloon's bounce on its
@@ -37,17 +38,23 @@ from tethersim.model.satellite import Satellite
 SAMPLE = 0.002
 MAX_SAMPLES = 5_000_000  # a deployment's output grid: 400 MB of states
 MAX_SPEED = 100.0  # m/s: an arrival speed beyond any deployer (a free release reaches ~3)
+#: the models a deployment runs: planar, circular orbit (their state is δx, δy, θ and rates)
+PLANAR = tuple(m.name for m in MODELS if m.geometry == "planar" and m.orbit == "circular")
 SETTLE_PERIODS = 50.0  # orbits of :func:`settle`: the thesis's run length (p. 5-7)
 #: the deployment table's columns (key, header with unit): tethersim.output.tables.write_table
 COLUMNS = (("start", "start"), ("value", "arrival speed [m/s] or release distance [m]"),
            ("status", "status"),
            ("first_catch", "first catch [s]"), ("catch_speed", "speed at the catch [m/s]"),
-           ("first_peak", "first catch's peak tension [N]"), ("peak", "largest tension [N]"),
-           ("safety_factor", "safety factor"), ("catches", "catches"),
+           ("catch_duration", "first catch's duration [s]"),
+           ("first_peak", "first catch's peak tension [N]"),
+           ("spin", "pitch rate after the first catch [rad/s]"), ("peak", "largest tension [N]"),
+           ("safety_factor", "safety factor"), ("catches", "catches after the first"),
            ("excursion", "pitch excursion [rad]"), ("turned_over", "turned over"),
-           ("inverted", "ends inverted"), ("clearance", "clearance to the boom [m]"),
+           ("inverted", "ends the other way up"), ("clearance", "clearance to the boom [m]"),
            ("settled_class", "class after the settling run"),
            ("settling_h", "settling time [h]"))
+#: the :class:`Deployment` fields of a row (:data:`COLUMNS` between the start and the settling)
+RECORD = tuple(k for k, _ in COLUMNS[2:-2])
 
 
 def line_lengths(sat: Satellite, delta_x: float, delta_y: float, theta: float) -> tuple:
@@ -85,6 +92,7 @@ def released(sat: Satellite, distance: float, offset: float = 0.0,
         would start outside its lines' reach (a line already taut): the allowed
         distances are named.
     """
+    check_model(sat, model)
     trim = equilibrium_satellite(sat, model)
     theta = trim.initial[2]
     lam = line_lengths(sat, distance, offset, theta)
@@ -114,6 +122,7 @@ def arrival(sat: Satellite, speed: float, model: str = REAL_MODEL) -> Satellite:
     if not 0.0 <= speed <= MAX_SPEED:
         raise ValueError(f"arrival speed = {speed:g} m/s: allowed 0 to {MAX_SPEED:g} m/s "
                          f"(a free release reaches a few m/s)")
+    check_model(sat, model)
     trim = equilibrium_satellite(sat, model)
     dx, dy, theta = trim.initial[:3]
     r = math.hypot(dx, dy)
@@ -129,29 +138,35 @@ class Deployment:
     result : SimResult or None
         The run, on a :data:`SAMPLE` grid (None where a caller dropped it).
     status : str
-        The run's end: ``ok``, or ``tether-broke`` when a catch pulled a line past its
-        breaking load (at the located time).
+        The run's end: ``ok``; ``tether-broke`` when a catch pulled a line past its
+        breaking load (at the located time); any other status (a failed run) leaves
+        every figure below NaN (False, 0).
     first_catch : float
         Time [s] the lines first pull (0 for an arrival: they are taut at the start).
     catch_speed : float
-        The balloon's speed [m/s] relative to the COM as the lines first pull.
+        The balloon's speed [m/s] relative to the COM as the lines first pull (the last
+        sample before the catch; an arrival's speed).
+    catch_duration : float
+        How long [s] the first catch pulled, to the grid's sample.
     first_peak : float
         Largest tension [N] of either line in the first catch.
+    spin : float
+        The boom's pitch rate |dθ/dt| [rad/s] as the first catch ends.
     peak : float
         Largest tension [N] of either line over the run.
     safety_factor : float
         The smaller of the lines' breaking load over their largest tension (NaN when
         they never break).
     catches : int
-        Times a slack bridle pulled again, seen on the grid: the rebounds, and the
-        chatter of a balloon coming to rest on its lines (a count that moves with the
-        last bits of the arithmetic)
+        Times the bridle caught the balloon again after the first catch, seen on the
+        grid: the rebounds, and the chatter of a balloon coming to rest on its lines (a
+        count that moves with the last bits of the arithmetic).
     excursion : float
         Largest |θ − θ(0)| [rad].
     turned_over : bool
-        Whether the boom passed horizontal (|θ| beyond π/2 from upright).
+        Whether the boom passed a quarter turn from where it started (|θ − θ(0)| > π/2).
     inverted : bool
-        Whether the boom ends the run upside down (tip-mass below).
+        Whether the boom ends the run the other way up from its start.
     clearance : float
         The smallest gap [m] between the balloon (a sphere of :func:`balloon_radius`)
         and the boom after the first catch; at or below 0 they touched, which the
@@ -162,7 +177,9 @@ class Deployment:
     status: str
     first_catch: float
     catch_speed: float
+    catch_duration: float
     first_peak: float
+    spin: float
     peak: float
     safety_factor: float
     catches: int
@@ -170,6 +187,27 @@ class Deployment:
     turned_over: bool
     inverted: bool
     clearance: float
+
+
+def check_model(sat: Satellite, model: str) -> None:
+    """Refuse a model or satellite whose state is not the planar (δx, δy, θ) one that
+    :func:`deploy` reads (one line naming the allowed models)."""
+    chain = sat.beads is not None or sat.s1 is not None or sat.s2 is not None
+    if model not in PLANAR or sat.orbit != "circular" or chain:
+        raise ValueError(f"model = {model!r}, orbit = {sat.orbit!r}: a deployment runs the "
+                         f"planar circular-orbit models ({', '.join(PLANAR)}) on a circular "
+                         f"orbit, lines held at the boom's ends, no bead chains")
+
+
+def check_sample(sat: Satellite, sample: float) -> None:
+    """Refuse a grid too coarse to read a catch's peak: ``sample`` [s] at most a tenth
+    of the shortest catch, π √(m3 / k) on the stiffer line (k = E_j / l_j0)."""
+    k = max(sat.E1 / sat.l10, sat.E2 / sat.l20)
+    catch = math.pi * math.sqrt(sat.m3 / k) if k > 0 else math.inf
+    if not 0 < sample <= catch / 10:
+        raise ValueError(f"sample = {sample:g} s: a catch on these lines lasts {catch:.3g} s "
+                         f"(π √(m3 / k)); reading its peak takes 0 < sample <= "
+                         f"{catch / 10:.3g} s")
 
 
 def samples(periods: float, period: float, sample: float) -> int:
@@ -182,38 +220,75 @@ def samples(periods: float, period: float, sample: float) -> int:
     return round(n)
 
 
+def _finished(res: SimResult) -> SimResult:
+    """The run, unless Ctrl-C stopped it: a truncated run is not a deployment's answer."""
+    if res.status == "interrupted":
+        raise KeyboardInterrupt
+    return res
+
+
 def deploy(start: Satellite, periods: float = 1.0, sample: float = SAMPLE,
            model: str = REAL_MODEL) -> Deployment:
     """Run a deployment start (:func:`released`, :func:`arrival`) for ``periods`` orbits
     on the implicit scheme (Radau IIA at :data:`RUN_TOLERANCES`), sampled every
-    ``sample`` seconds, and read its :class:`Deployment`."""
-    res = simulate(start, periods=periods, method="implicit", model=model, progress=False,
-                   start="given", steps=samples(periods, start.period, sample),
-                   **RUN_TOLERANCES)
+    ``sample`` seconds (:func:`check_sample`), and read its :class:`Deployment`.
+
+    Raises
+    ------
+    KeyboardInterrupt
+        When Ctrl-C stopped the run (it is not recorded).
+    """
+    check_model(start, model)
+    check_sample(start, sample)
+    res = _finished(simulate(start, periods=periods, method="implicit", model=model,
+                             progress=False, start="given",
+                             steps=samples(periods, start.period, sample), **RUN_TOLERANCES))
+    if res.status not in ("ok", "tether-broke"):
+        nan = math.nan
+        return Deployment(res, res.status, nan, nan, nan, nan, nan, nan, nan, 0, nan, False,
+                          False, nan)
     y = res.model_states
     tension = res.tether_tensions()
     pull = tension.max(axis=1)
     taut = pull > 0
-    first = int(np.argmax(taut)) if taut.any() else len(pull)
-    end = first + int(np.argmin(taut[first:])) if not taut[first:].all() else len(pull)
+    caught = bool(taut.any())
+    first = int(np.argmax(taut)) if caught else len(pull)
+    end = first + int(np.argmin(taut[first:])) if not taut[first:].all() else len(pull) - 1
     factors = [fb / tension[:, j].max() for j, fb in enumerate((start.Fb1, start.Fb2))
                if fb > 0 and tension[:, j].max() > 0]
-    up = np.cos(y[:, 2])
-    caught = first < len(pull)
+    turn = y[:, 2] - y[0, 2]
     return Deployment(
         result=res,
         status=res.status,
         first_catch=float(res.t[first]) if caught else math.nan,
-        catch_speed=float(np.hypot(y[first, 3], y[first, 4])) if caught else math.nan,
-        first_peak=float(pull[first:end].max()) if caught else 0.0,
+        catch_speed=float(np.hypot(*y[max(first - 1, 0), 3:5])) if caught else math.nan,
+        catch_duration=float(res.t[end] - res.t[first]) if caught else math.nan,
+        first_peak=float(pull[first:end + 1].max()) if caught else 0.0,
+        spin=float(abs(y[end, 5])) if caught else math.nan,
         peak=float(pull.max()),
         safety_factor=min(factors) if factors else math.nan,
-        catches=int(np.count_nonzero(taut[1:] & ~taut[:-1])),
-        excursion=float(np.abs(y[:, 2] - y[0, 2]).max()),
-        turned_over=bool((up < 0).any()),
-        inverted=bool(up[-1] < 0),
+        catches=int(np.count_nonzero(taut[1:] & ~taut[:-1])) - (1 if first > 0 else 0)
+        if caught else 0,
+        excursion=float(np.abs(turn).max()),
+        turned_over=bool((np.cos(turn) < 0).any()),
+        inverted=bool(np.cos(turn[-1]) < 0),
         clearance=float(boom_distance(start, y[first:, 0], y[first:, 1], y[first:, 2]).min()
                         - balloon_radius(start)) if caught else math.nan)
+
+
+def pull_along_trim(result: SimResult, start: Satellite) -> np.ndarray:
+    """Both lines' pull [N] on the balloon projected on the start's trim line u (from the
+    COM to the balloon), at each sample of ``result``: the quantity of
+    :func:`catch_closed_form`."""
+    y = result.model_states
+    tension = result.tether_tensions()
+    u = np.array(start.initial[:2]) / math.hypot(*start.initial[:2])
+    s, c = np.sin(y[:, 2]), np.cos(y[:, 2])
+    pull = np.zeros(len(y))
+    for j, (px, py) in enumerate(((start.b * s, start.b * c), (-start.a * s, -start.a * c))):
+        d = np.stack([y[:, 0] - px, y[:, 1] - py], axis=1)
+        pull += tension[:, j] * ((d / np.linalg.norm(d, axis=1)[:, None]) @ u)
+    return pull
 
 
 def catch_closed_form(start: Satellite) -> float:
@@ -227,8 +302,14 @@ def catch_closed_form(start: Satellite) -> float:
     μ ω_i² φ_i, and the pull along u is D + v μ Σ_i (φ_i · u)² ω_i sin(ω_i t), with D the
     lines' pull along u at the start (it holds the drag).  For one mode this is the
     energy balance's D + v √(k μ).  Left out: the dampers (set c = 0 to compare), the
-    boom's turn (SatI: the peak 0.2 % high), the gravity gradient and Coriolis over the
-    catch's tens of milliseconds.
+    boom's turn (on SatI the run's peak is a few tenths of a percent lower,
+    docs/real-tethers.md), the gravity gradient and Coriolis over the catch's tens of
+    milliseconds.
+
+    Raises
+    ------
+    ValueError
+        When no line is taut at the start (the closed form is of a catch on taut lines).
     """
     dx, dy, theta, vx, vy, _ = start.initial
     v = math.hypot(vx, vy)
@@ -239,9 +320,14 @@ def catch_closed_form(start: Satellite) -> float:
                      (start.E2, start.l20, (-start.a * s, -start.a * c))):
         d = np.array([dx - p[0], dy - p[1]])
         lam = float(np.linalg.norm(d))
+        if lam <= l0 or E == 0:
+            continue  # a slack line is no spring
         e = d / lam
         stiffness += E / l0 * np.outer(e, e)
-        pull += E * max(lam - l0, 0.0) / l0 * float(e @ u)
+        pull += E * (lam - l0) / l0 * float(e @ u)
+    if not stiffness.any():
+        raise ValueError("catch_closed_form: no line is taut at the start; the closed form "
+                         "is of a catch on taut lines (an arrival)")
     mu = start.m3 * (start.m1 + start.m2) / (start.m3 + start.m1 + start.m2)
     k, phi = np.linalg.eigh(stiffness)
     held = k > 1e-12 * k.max()  # one taut line holds along itself only: one mode
@@ -266,8 +352,10 @@ def settle(start: Satellite, periods: float = SETTLE_PERIODS, model: str = REAL_
         value (NaN when it never settled), and ``theta_ss`` [rad].
     """
     from tethersim.analysis.outcome import outcome
-    out = outcome(simulate(start, periods=periods, method="implicit", model=model,
-                           progress=False, start="given", **RUN_TOLERANCES), forces=False)
+    check_model(start, model)
+    out = outcome(_finished(simulate(start, periods=periods, method="implicit", model=model,
+                                     progress=False, start="given", **RUN_TOLERANCES)),
+                  forces=False)
     m = out.metrics
     return {"settled_class": out.class_name,
             "settling_h": m.settling_time / 3600 if m is not None else math.nan,
@@ -285,6 +373,5 @@ def row(kind: str, value: float, dep: Deployment, settled: dict | None = None) -
     """One row of the deployment table (:data:`COLUMNS`): the catch's :class:`Deployment`
     and, when given, its :func:`settle` (else blank)."""
     settled = settled or {"settled_class": "", "settling_h": math.nan}
-    return {"start": kind, "value": value, "settled_class": settled["settled_class"],
-            "settling_h": settled["settling_h"],
-            **{k: getattr(dep, k) for k, _ in COLUMNS[2:-2]}}
+    return {"start": kind, "value": value, **{k: getattr(dep, k) for k in RECORD},
+            "settled_class": settled["settled_class"], "settling_h": settled["settling_h"]}

@@ -47,7 +47,6 @@ MAPS = (
 )
 
 
-
 def section_maps(page: Page, grid: int, periods: float, workers, progress) -> list:
     from concurrent.futures import ThreadPoolExecutor
 
@@ -78,6 +77,8 @@ def section_maps(page: Page, grid: int, periods: float, workers, progress) -> li
                                   workers=workers, progress=progress)
                 data[method] = store.dataset()
             rows.append(beside.submit(_map_row, page, ms, sat, axes, name, data, pred, periods))
+            for done in (r for r in (*predicted, *rows) if r.done()):
+                done.result()  # a failure in a finished map's Python stops the report now
         body, summary = zip(*(r.result() for r in rows))
     except BaseException:  # Ctrl-C: the finished stores stay; the queued work is dropped
         beside.shutdown(wait=False, cancel_futures=True)

@@ -14,18 +14,22 @@ from __future__ import annotations
 import math
 from functools import cache
 
-import numpy as np
-
 from tethersim.analysis.metrics import SETTLING_TOL
 from tethersim.experiments.deployment import (
     arrival,
     balloon_radius,
     catch_closed_form,
     deploy,
+    pull_along_trim,
     released,
     settle,
 )
-from tethersim.experiments.real_tethers import STRETCHED_LENGTHS, real_lines
+from tethersim.experiments.real_tethers import (
+    RUN_TOLERANCES,
+    STRETCHED_LENGTHS,
+    real_lines,
+)
+from tethersim.model.materials import LOSS_FACTOR
 from tethersim.model.presets import load_preset
 from tools.docnumbers.check import Figure
 
@@ -43,8 +47,8 @@ def bridle():
 
 
 def _summary(dep) -> dict:
-    keep = ("first_catch", "catch_speed", "first_peak", "peak", "safety_factor", "catches",
-            "excursion", "turned_over", "inverted", "clearance")
+    keep = ("first_catch", "catch_speed", "catch_duration", "first_peak", "spin", "peak",
+            "safety_factor", "catches", "excursion", "turned_over", "inverted", "clearance")
     return {k: getattr(dep, k) for k in keep}
 
 
@@ -59,12 +63,7 @@ def release() -> dict:
     """The free release from :data:`RELEASE` behind the COM, with the boom's spin after
     the catch."""
     dep = deploy(released(bridle(), RELEASE))
-    y, t = dep.result.model_states, dep.result.t
-    taut = dep.result.tether_tensions().max(axis=1) > 0
-    first = int(np.argmax(taut))
-    end = first + int(np.argmin(taut[first:]))
-    return {**_summary(dep), "spin": abs(y[end, 5]), "spin_orbits": abs(y[end, 5]) / bridle().omega,
-            "catch_s": float(t[end] - t[first])}
+    return {**_summary(dep), "spin_orbits": dep.spin / bridle().omega}
 
 
 @cache
@@ -76,7 +75,7 @@ def ensemble() -> tuple:
 def first_leaving_speed() -> float:
     """The slowest arrival of :data:`SCAN` whose pitch leaves the ±0.05 rad band."""
     for v in SCAN:
-        if deploy(arrival(bridle(), v), sample=0.5).excursion > SETTLING_TOL:
+        if deploy(arrival(bridle(), v)).excursion > SETTLING_TOL:
             return v
     return math.nan
 
@@ -84,17 +83,9 @@ def first_leaving_speed() -> float:
 def closed_form_ratio() -> float:
     """The first catch's pull along the trim line over the modal closed form, SatI at 1 m/s
     with the dampers off (tests/experiments/test_deployment.py)."""
-    sat = bridle().replace(c1=0.0, c2=0.0)
-    start = arrival(sat, 1.0)
+    start = arrival(bridle().replace(c1=0.0, c2=0.0), 1.0)
     dep = deploy(start, periods=1e-4, sample=2e-4)
-    y, tension = dep.result.model_states, dep.result.tether_tensions()
-    u = np.array(start.initial[:2]) / math.hypot(*start.initial[:2])
-    s, c = np.sin(y[:, 2]), np.cos(y[:, 2])
-    pull = np.zeros(len(y))
-    for j, (px, py) in enumerate(((sat.b * s, sat.b * c), (-sat.a * s, -sat.a * c))):
-        d = np.stack([y[:, 0] - px, y[:, 1] - py], axis=1)
-        pull += tension[:, j] * ((d / np.linalg.norm(d, axis=1)[:, None]) @ u)
-    return float(pull.max() / catch_closed_form(start))
+    return float(pull_along_trim(dep.result, start).max() / catch_closed_form(start))
 
 
 def payout_rule() -> tuple:
@@ -118,7 +109,7 @@ QUANTITIES = {
     "deploy_release_sf": lambda: release()["safety_factor"],
     "deploy_release_spin": lambda: release()["spin"],
     "deploy_release_spin_orbits": lambda: release()["spin_orbits"],
-    "deploy_release_catch_ms": lambda: 1e3 * release()["catch_s"],
+    "deploy_release_catch_ms": lambda: 1e3 * release()["catch_duration"],
     "deploy_k1": lambda: bridle().E1 / bridle().l10,
     "deploy_k2": lambda: bridle().E2 / bridle().l20,
     "deploy_m3": lambda: bridle().m3,
@@ -131,6 +122,14 @@ QUANTITIES = {
     "deploy_radius": lambda: balloon_radius(bridle()),
     "deploy_arrivals_over": lambda: sum(arrived(v)["turned_over"] for v in SPEEDS),
     "deploy_arrivals_n": lambda: len(SPEEDS),
+    "deploy_over_speed": lambda: min(v for v in SPEEDS if arrived(v)["turned_over"]),
+    "deploy_release_distance": lambda: RELEASE,
+    "deploy_rtol": lambda: RUN_TOLERANCES["rtol"],
+    "deploy_atol": lambda: RUN_TOLERANCES["atol"],
+    "deploy_loss": lambda: LOSS_FACTOR,
+    "deploy_offset": lambda: max(o for _, o in RELEASES),
+    **{f"deploy_release_at_{i}": (lambda k=i: sorted({d for d, _ in RELEASES})[k])
+       for i in range(4)},
     "deploy_stable_n": lambda: sum(arrived(v)["settled_class"] == "stable" for v in SPEEDS),
     "deploy_arrivals_sf_min": lambda: min(arrived(v)["safety_factor"] for v in SPEEDS),
     # the rebounds' largest pull over the first catch's, among the arrivals that stay upright
@@ -165,11 +164,21 @@ FIGURES = [
     Figure(D, (H, "of radius "), "deploy_radius", slow=True),
     Figure(D, (H, "turns the boom over in "), "deploy_arrivals_over", slow=True),
     Figure(D, (H, "turns the boom over in ", " of "), "deploy_arrivals_n", slow=True),
+    Figure(D, (H, "the boom first turns over at "), "deploy_over_speed", slow=True),
+    Figure(D, (H, "turns the boom over.** From "), "deploy_release_distance"),
+    Figure(D, (H, "on Radau IIA (rtol "), "deploy_rtol"),
+    Figure(D, (H, "on Radau IIA (rtol ", "atol "), "deploy_atol"),
+    Figure(D, (H, "loss factor of "), "deploy_loss"),
+    Figure(D, (H, "In all 12 releases ("), "deploy_release_at_0"),
+    Figure(D, (H, "In all 12 releases (", ", "), "deploy_release_at_1"),
+    Figure(D, (H, "In all 12 releases (", ", ", ", "), "deploy_release_at_2"),
+    Figure(D, (H, "In all 12 releases (", " and "), "deploy_release_at_3"),
+    Figure(D, (H, "each level, "), "deploy_offset"),
     Figure(D, (H, "a libration of their own: "), "deploy_stable_n", slow=True),
     Figure(D, (H, "safety factor stays above "), "deploy_arrivals_sf_min", slow=True),
     Figure(D, (H, "pull comes up to "), "deploy_rebound_pc", slow=True),
     Figure(D, (H, "first leaves the band at "), "deploy_band_speed", slow=True),
-    Figure(D, (H, "softens it by "), "deploy_closed_form_pc", slow=True),
+    Figure(D, (H, "softens the catch by "), "deploy_closed_form_pc", slow=True),
 ]
 for _v in SPEEDS:
     for _j, _key in enumerate(ROW):
