@@ -163,6 +163,23 @@ def test_the_thesis_damper_on_a_real_line_says_why_there_is_no_equilibrium():
     assert "model 'objective-damper' damps the stretch rate only" in line
 
 
+def test_the_thesis_damper_turning_a_real_bridle_over_is_no_default_start():
+    """SatI's stretched bridle of 1 mm Dyneema: the thesis's damper (model derived) rests
+    with the boom turned over; the default start says so in one line and names the model
+    whose damper is the line's loss, which rests upright; asked for, the turned-over rest
+    is still where a run starts."""
+    from tethersim.engine.start import start_satellite
+    from tethersim.experiments.real_tethers import STRETCHED_LENGTHS, real_lines
+    sat = real_lines(SAT, STRETCHED_LENGTHS)
+    with pytest.raises(ValueError) as e:
+        start_satellite(sat, "derived")
+    line = one_line(str(e.value))
+    assert "turns the boom over at its equilibrium (θ = -2.908 rad)" in line
+    assert "model 'objective-damper' damps the stretch rate" in line
+    assert abs(start_satellite(sat, "objective-damper")[0].initial[2]) < 0.01
+    assert abs(start_satellite(sat, "derived", "equilibrium")[0].initial[2]) > 2.9
+
+
 def test_the_command_line_takes_the_start(tmp_path, capsys):
     argv = ["run", "satI", "--periods", "0.01", "--no-plots", "--no-check", "--quiet"]
     assert main([*argv, "--start", "rest", "--out", str(tmp_path / "a")]) == 2

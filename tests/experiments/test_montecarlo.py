@@ -93,3 +93,38 @@ def test_epoch_days_left_out_are_exactly_those_msis_refuses():
     for d in every[::97]:  # and a spread of kept days load
         if d in kept:
             SAT.replace(atmosphere="nrlmsise00", epoch=f"{d}T12:00:00")
+
+
+def test_real_lines_deploy_from_their_own_equilibrium_as_a_whole_formation():
+    """On real lines a sample starts at its own equilibrium, boom and balloon turned
+    together by the θ0 offset (each line keeps its length), turning at the θ̇0 offset,
+    the balloon moving off the COM at the δẋ0 offset; the samples record that start."""
+    from tethersim.engine.start import equilibrium_satellite
+    from tethersim.experiments.deployment import line_lengths
+    from tethersim.experiments.real_tethers import STRETCHED_LENGTHS, real_lines
+    sat = real_lines(SAT, STRETCHED_LENGTHS)
+    spec = MCSpec(sat, n=3, seed=2, model="objective-damper", periods=3.0,
+                  max_lifetime_h=10.0)
+    for vals, circ, free in sample_satellites(sat, spec.inputs, spec.units("sample"),
+                                              spec.model):
+        eq = equilibrium_satellite(circ, "objective-damper").initial
+        x, y, theta, vx, vy, rate = circ.initial
+        turn = theta - eq[2]
+        assert abs(turn) <= math.radians(15) + 1e-12
+        assert line_lengths(circ, x, y, theta) == pytest.approx(
+            line_lengths(circ, *eq[:3]), rel=1e-12)
+        assert (theta, rate, vx) == (vals["theta0"], vals["theta_dot0"], vals["delta_x_dot0"])
+        # the velocity: the formation's turn, ω (y, −x), plus a speed along u = (x, y) / r
+        # within the δẋ0 band
+        r = math.hypot(x, y)
+        away = (vx - rate * y) * r / x
+        assert vy == pytest.approx(-rate * x + away * y / r, rel=1e-12, abs=1e-15)
+        assert abs(away) <= 0.05 + 1e-15
+        assert free.initial == circ.initial
+
+
+def test_real_lines_under_the_thesis_damper_are_refused_before_any_run():
+    from tethersim.experiments.real_tethers import STRETCHED_LENGTHS, real_lines
+    with pytest.raises(ValueError, match="turns the boom over at its equilibrium"):
+        MCSpec(real_lines(SAT, STRETCHED_LENGTHS), n=2, seed=1, periods=3.0,
+               max_lifetime_h=10.0)

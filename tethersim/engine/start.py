@@ -18,7 +18,9 @@ resolves simulate()'s ``start``:
     tethersim.model.materials.real_tethers), else ``"given"``; so the thesis's
     tethers (EA 0.004-0.06 N) start where the thesis started them, to the last bit.
     A real-line satellite without an equilibrium to find starts from its given state if that
-    passes :func:`check_given_start` (the result's ``start`` says "given").
+    passes :func:`check_given_start` (the result's ``start`` says "given"); one whose
+    equilibrium the thesis's damper turned over is refused in one line naming the model
+    whose damper is the line's loss (:func:`_upright_or_refused`).
 
 The resolved start becomes the run's satellite (its ``initial`` is the state the
 run starts from), so a rerun (``estimate_error``) and the files record it.
@@ -88,7 +90,7 @@ def start_satellite(sat: Satellite, model: str, start: str = "auto") -> tuple:
     if start == "equilibrium":
         return equilibrium_satellite(sat, model), mode
     try:
-        return equilibrium_satellite(sat, model), mode
+        return _upright_or_refused(equilibrium_satellite(sat, model), model), mode
     except NoEquilibrium as exc:
         # auto: a stiff satellite with no equilibrium to find (the thesis's damper on a
         # real line turns its rest into a sideways push) starts where it is given, if
@@ -98,6 +100,27 @@ def start_satellite(sat: Satellite, model: str, start: str = "auto") -> tuple:
         except ValueError:
             raise exc from None
         return sat, "given"
+
+
+def _upright_or_refused(eq: Satellite, model: str) -> Satellite:
+    """The auto start ``eq``, unless the thesis's damper turned its boom over.
+
+    The thesis's damper acts on the whole relative velocity of a line's ends, which is
+    not zero at rest (the formation turns with the orbit): on a real line its push
+    across the line turns the boom over at the equilibrium (docs/real-tethers.md).  A
+    default start there would fly an inverted satellite without a word; one line says
+    why and which model damps a line's material loss.
+    """
+    theta = eq.initial[2]
+    thesis_damper = "Kelvin-Voigt" not in get_model(model).description
+    if thesis_damper and (eq.c1 or eq.c2) and abs(theta) > math.pi / 2:
+        raise ValueError(
+            f"start = 'auto' on real lines: model {model}'s damper (the thesis's, on the whole "
+            f"relative velocity) with c1 = {eq.c1:.4g}, c2 = {eq.c2:.4g} N s/m turns the boom "
+            f"over at its equilibrium (θ = {theta:.4g} rad); model 'objective-damper' damps "
+            f"the stretch rate, as a line's material loss does (docs/real-tethers.md); "
+            f"start='equilibrium' (--start equilibrium) starts there anyway")
+    return eq
 
 
 def start_run(sat: Satellite, model: str, start: str = "auto", beads=None) -> tuple:

@@ -266,3 +266,10 @@ FIGURES += [
     Figure(T, ("stretched beyond ",), "real_max_strain_pct"),
     Figure(T, ("a modulus of ",), "real_ea_mpa"),
 ]
+
+# docs/tethers.md, "Where a run starts": the thesis's damper turns the stretched real bridle
+# over at rest, the auto start that engine/start.py refuses
+QUANTITIES["real_thesis_damper_turned_theta"] = lambda: equilibrium_satellite(
+    real("stretched"), "derived").initial[2]
+FIGURES.append(Figure("docs/tethers.md", ("stretched Dyneema bridle: θ = ",),
+                      "real_thesis_damper_turned_theta"))

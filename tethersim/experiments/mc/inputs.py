@@ -184,7 +184,7 @@ def unit_draws(inputs: tuple, n: int, seed: int) -> np.ndarray:
         np.empty((0, len(inputs)))
 
 
-def sample_satellites(base, inputs: tuple, u: np.ndarray) -> list:
+def sample_satellites(base, inputs: tuple, u: np.ndarray, model: str = "derived") -> list:
     """[(values, circular satellite, free satellite)] at each row of unit numbers ``u``.
 
     ``values`` maps each input's name to its value in SI (the epoch as an ISO UTC
@@ -192,6 +192,14 @@ def sample_satellites(base, inputs: tuple, u: np.ndarray) -> list:
     table's daily indices (f107, f107a, ap left None): the circular one the uniform
     density (the 24-local-time mean at the orbit altitude on the epoch's day: the
     thesis's held orbit), the free one each body's own density along the run.
+
+    Each satellite's ``initial`` is the sample's start (the plans run it as given).  The
+    thesis's tethers start at the design's ``initial`` plus the drawn offsets, as the
+    thesis did.  Real lines (engine/start.py: their auto start is the equilibrium) start
+    at the sample's own equilibrium in ``model``, deployed by the same offsets as a whole
+    formation: boom and balloon turned together by the θ0 offset (the lines keep their
+    length), turning at the θ̇0 offset, the balloon moving away from the COM at the
+    δẋ0 offset; an equilibrium the thesis's damper turned over is refused in one line.
     """
     out = []
     for row in np.atleast_2d(u):
@@ -208,6 +216,30 @@ def sample_satellites(base, inputs: tuple, u: np.ndarray) -> list:
         circ = base.replace(initial=tuple(init), atmosphere="nrlmsise00",
                             epoch=vals.get("epoch", base.epoch), f107=None, f107a=None, ap=None,
                             orbit="circular", density_mode="uniform", **changes)
+        circ = _deployed(circ, model, np.subtract(init, base.initial))
+        for name, (k, _) in _INITIAL.items():  # the start as run (real lines: deployed)
+            if name in vals:
+                vals[name] = circ.initial[k]
         free = circ.replace(orbit="free", density_mode="per-body")
         out.append((vals, circ, free))
     return out
+
+
+def _deployed(sat, model: str, offset):
+    """``sat`` itself for the thesis's tethers (its ``initial`` holds the offsets); on real
+    lines its equilibrium in ``model`` deployed by ``offset`` (θ0, θ̇0, δẋ0 at indices 2,
+    5, 3) as a whole formation (:func:`sample_satellites`)."""
+    from tethersim.engine.start import resolved_mode, start_satellite
+    if resolved_mode(sat, "auto") != "equilibrium":
+        return sat
+    eq = start_satellite(sat, model)[0]  # refuses a start the thesis's damper turned over
+    dx, dy, theta = eq.initial[:3]
+    turn, rate, away = offset[2], offset[5], offset[3]
+    # θ turns the tip-mass from +y towards +x: a turn by φ maps (x, y) to
+    # (x cos φ + y sin φ, −x sin φ + y cos φ), and turning at rate ω moves (x, y) at
+    # ω (y, −x)
+    x = dx * math.cos(turn) + dy * math.sin(turn)
+    y = -dx * math.sin(turn) + dy * math.cos(turn)
+    r = math.hypot(x, y)
+    return eq.replace(initial=(x, y, theta + turn, rate * y + away * x / r,
+                               -rate * x + away * y / r, rate))

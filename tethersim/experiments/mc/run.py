@@ -60,7 +60,7 @@ def sample_rows(spec_json: str, part: str, idx: list) -> list:
     from tethersim.experiments.sweep.batch import run_satellites
     spec = _spec(spec_json)
     units = _units(spec_json, part)
-    samples = sample_satellites(spec.satellite, spec.inputs, units[list(idx)])
+    samples = sample_satellites(spec.satellite, spec.inputs, units[list(idx)], spec.model)
     circ = run_satellites(spec.circular_plan, [s[1] for s in samples])
     free = run_satellites(spec.free_plans[0], [s[2] for s in samples])
     for plan in spec.free_plans[1:]:

@@ -109,7 +109,7 @@ class MCSpec:
                 row = np.full((1, d), 0.5)
                 row[0, j] = u
                 try:
-                    sample_satellites(self.satellite, self.inputs, row)
+                    sample_satellites(self.satellite, self.inputs, row, self.model)
                 except ValueError as exc:
                     raise ValueError(f"range of {inp.name} = {inp.low}:{inp.high}: at its "
                                      f"{end} end, {exc}") from None
@@ -136,13 +136,16 @@ class MCSpec:
     @cached_property
     def circular_plan(self) -> Plan:
         """The settling run's plan."""
-        return Plan(periods=self.periods, model=self.model, rtol=self.rtol)
+        # every sample starts where sample_satellites put it (given): the deployment's
+        # offsets about the thesis's start, or about a real line's equilibrium
+        return Plan(periods=self.periods, model=self.model, rtol=self.rtol, start="given")
 
     @cached_property
     def free_plans(self) -> tuple:
         """The free run's plans, one per stage (orbits of the design's period)."""
         caps = sorted({min(FIRST_STAGE_H, self.max_lifetime_h), self.max_lifetime_h})
         return tuple(Plan(periods=h * 3600 / self.satellite.period, model=self.model,
+                          start="given",
                           rtol=self.rtol) for h in caps)
 
     def size(self, part: str) -> int:

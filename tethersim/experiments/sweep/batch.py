@@ -103,7 +103,7 @@ def run_satellites(plan: Plan, sats: list) -> list:
     for i, s in enumerate(sats):
         model = model_for_orbit(plan.model, s.orbit)  # a free orbit runs the free twin
         # where simulate() starts it: as given, or a real line's equilibrium (engine/start.py)
-        sats[i] = s = start_satellite(s, model)[0]
+        sats[i] = s = start_satellite(s, model, plan.start)[0]
         air = air_vector(s, periods * s.period)  # as simulate() builds it
         groups.setdefault((model, air.tobytes()), (air, []))[1].append(i)
     records = {}

@@ -19,6 +19,7 @@ from tethersim.engine.simulate import (
     METRIC_SAMPLES_PER_PERIOD,
     RTOL_RANGE,
 )
+from tethersim.engine.start import check_start_mode
 from tethersim.model.registry import DEFAULT_MODEL, model_index
 
 METHODS = ("adaptive", "faithful", "implicit")
@@ -59,6 +60,11 @@ class Plan:
         RK4 steps and adaptive output samples per orbit.
     tol : float
         Settling band [rad].
+    start : {"auto", "given", "equilibrium"}
+        Where every run starts (simulate's ``start``, tethersim.engine.start): ``auto``
+        (the default) starts real lines at their equilibrium, the thesis's tethers as
+        given; ``given`` for satellites whose ``initial`` is the start (a Monte Carlo's
+        deployment offsets about the equilibrium, tethersim.experiments.mc.inputs).
     """
 
     periods: float = 50.0
@@ -68,6 +74,7 @@ class Plan:
     steps_per_period: int = FAITHFUL_STEPS_PER_PERIOD
     samples_per_period: int = SAMPLES_PER_PERIOD
     tol: float = SETTLING_TOL
+    start: str = "auto"
 
     def __post_init__(self):
         if self.method not in METHODS:
@@ -78,6 +85,7 @@ class Plan:
             if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
                 raise ValueError(f"{key} = {v!r}: must be a finite number > 0")
         check_tol(self.tol)  # the settling band: (0, pi) rad, as outcome() takes it
+        check_start_mode(self.start)
         if not RTOL_RANGE[0] <= self.rtol <= RTOL_RANGE[1]:
             raise ValueError(f"rtol = {self.rtol:g}: allowed range {RTOL_RANGE[0]:g} <= rtol "
                              f"<= {RTOL_RANGE[1]:g}")
