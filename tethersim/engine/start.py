@@ -20,7 +20,7 @@ resolves simulate()'s ``start``:
     A real-line satellite without an equilibrium to find starts from its given state if that
     passes :func:`check_given_start` (the result's ``start`` says "given"); one whose
     equilibrium the thesis's damper turned over is refused in one line naming the model
-    whose damper is the line's loss (:func:`_upright_or_refused`).
+    whose damper is the line's loss (:func:`upright_or_refused`).
 
 The resolved start becomes the run's satellite (its ``initial`` is the state the
 run starts from), so a rerun (``estimate_error``) and the files record it.
@@ -90,7 +90,7 @@ def start_satellite(sat: Satellite, model: str, start: str = "auto") -> tuple:
     if start == "equilibrium":
         return equilibrium_satellite(sat, model), mode
     try:
-        return _upright_or_refused(equilibrium_satellite(sat, model), model), mode
+        return upright_or_refused(equilibrium_satellite(sat, model), model), mode
     except NoEquilibrium as exc:
         # auto: a stiff satellite with no equilibrium to find (the thesis's damper on a
         # real line turns its rest into a sideways push) starts where it is given, if
@@ -102,7 +102,7 @@ def start_satellite(sat: Satellite, model: str, start: str = "auto") -> tuple:
         return sat, "given"
 
 
-def _upright_or_refused(eq: Satellite, model: str) -> Satellite:
+def upright_or_refused(eq: Satellite, model: str) -> Satellite:
     """The auto start ``eq``, unless the thesis's damper turned its boom over.
 
     The thesis's damper acts on the whole relative velocity of a line's ends, which is
@@ -119,7 +119,8 @@ def _upright_or_refused(eq: Satellite, model: str) -> Satellite:
             f"relative velocity) with c1 = {eq.c1:.4g}, c2 = {eq.c2:.4g} N s/m turns the boom "
             f"over at its equilibrium (θ = {theta:.4g} rad); model 'objective-damper' damps "
             f"the stretch rate, as a line's material loss does (docs/real-tethers.md); "
-            f"start='equilibrium' (--start equilibrium) starts there anyway")
+            f"simulate(start='equilibrium') (tethersim run --start equilibrium) starts "
+            f"there anyway")
     return eq
 
 
