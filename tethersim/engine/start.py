@@ -90,7 +90,7 @@ def start_satellite(sat: Satellite, model: str, start: str = "auto") -> tuple:
     if start == "equilibrium":
         return equilibrium_satellite(sat, model), mode
     try:
-        return upright_or_refused(equilibrium_satellite(sat, model), model), mode
+        return upright_or_refused(sat, equilibrium_satellite(sat, model), model), mode
     except NoEquilibrium as exc:
         # auto: a stiff satellite with no equilibrium to find (the thesis's damper on a
         # real line turns its rest into a sideways push) starts where it is given, if
@@ -102,18 +102,29 @@ def start_satellite(sat: Satellite, model: str, start: str = "auto") -> tuple:
         return sat, "given"
 
 
-def upright_or_refused(eq: Satellite, model: str) -> Satellite:
-    """The auto start ``eq``, unless the thesis's damper turned its boom over.
+def upright_or_refused(sat: Satellite, eq: Satellite, model: str) -> Satellite:
+    """The auto start ``eq`` (the equilibrium of ``sat``), unless the thesis's damper
+    turned its boom over.
 
     The thesis's damper acts on the whole relative velocity of a line's ends, which is
     not zero at rest (the formation turns with the orbit): on a real line its push
-    across the line turns the boom over at the equilibrium (docs/real-tethers.md).  A
+    across the line can turn the boom over at the equilibrium (docs/real-tethers.md).  A
     default start there would fly an inverted satellite without a word; one line says
-    why and which model damps a line's material loss.
+    why and which model damps a line's material loss.  Only the damper's doing is
+    refused: lines that rest turned over without their dampers too (a stiff line held
+    far from the COM, docs/real-tethers.md "One line") start there.
     """
     theta = eq.initial[2]
     thesis_damper = "Kelvin-Voigt" not in get_model(model).description
-    if thesis_damper and (eq.c1 or eq.c2) and abs(theta) > math.pi / 2:
+    # turned over: more than 120° from upright; upright: within 60° (a boom along the
+    # flow, θ near ±90°, is neither: a single stiff line's own rest, "One line")
+    if not (thesis_damper and (eq.c1 or eq.c2) and math.cos(theta) < -0.5):
+        return eq
+    try:  # the damper's doing only if the same lines rest upright without it
+        undamped = equilibrium_satellite(sat.replace(c1=0.0, c2=0.0), model).initial[2]
+    except NoEquilibrium:
+        return eq
+    if math.cos(undamped) > 0.5:
         raise ValueError(
             f"start = 'auto' on real lines: model {model}'s damper (the thesis's, on the whole "
             f"relative velocity) with c1 = {eq.c1:.4g}, c2 = {eq.c2:.4g} N s/m turns the boom "

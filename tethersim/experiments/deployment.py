@@ -93,7 +93,7 @@ def released(sat: Satellite, distance: float, offset: float = 0.0,
         distances are named.
     """
     check_model(sat, model)
-    trim = upright_or_refused(equilibrium_satellite(sat, model), model)
+    trim = upright_or_refused(sat, equilibrium_satellite(sat, model), model)
     theta = trim.initial[2]
     lam = line_lengths(sat, distance, offset, theta)
     radius = balloon_radius(sat)
@@ -123,7 +123,7 @@ def arrival(sat: Satellite, speed: float, model: str = REAL_MODEL) -> Satellite:
         raise ValueError(f"arrival speed = {speed:g} m/s: allowed 0 to {MAX_SPEED:g} m/s "
                          f"(a free release reaches a few m/s)")
     check_model(sat, model)
-    trim = upright_or_refused(equilibrium_satellite(sat, model), model)
+    trim = upright_or_refused(sat, equilibrium_satellite(sat, model), model)
     dx, dy, theta = trim.initial[:3]
     r = math.hypot(dx, dy)
     return trim.replace(initial=(dx, dy, theta, speed * dx / r, speed * dy / r, 0.0))
