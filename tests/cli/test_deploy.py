@@ -18,7 +18,7 @@ from tethersim.model.presets import load_preset
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 LINES = ["--set", "l10=30.83", "--set", "l20=28.92", "--tethers", "dyneema-sk75:1"]
 # 26.5 s: the first catches; settling runs of 3 orbits
-SHORT = ["--periods", "0.005", "--sample", "0.005", "--settle-periods", "3", "--quiet"]
+SHORT = ["--periods", "0.005", "--sample", "0.002", "--settle-periods", "3", "--quiet"]
 
 
 def _rows(path):

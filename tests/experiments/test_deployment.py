@@ -166,9 +166,9 @@ def test_a_line_too_thin_for_the_catch_breaks_at_its_breaking_load():
 
 
 def test_a_catch_needs_a_grid_finer_than_it_and_a_planar_model(bridle):
-    # 2 ms is the default; a catch on one 1 mm Dyneema line of ~29 m lasts 56 ms
+    # 2 ms is the default; a catch on both 1 mm Dyneema lines of ~30 m lasts 40 ms
     with pytest.raises(ValueError, match=r"sample = 0.5 s: a catch on these lines lasts "
-                                         r"0.0562 s .* 0 < sample <= 0.00562 s"):
+                                         r"0.0404 s .* 0 < sample <= 0.00404 s"):
         deploy(arrival(bridle, 0.1), sample=0.5)
     with pytest.raises(ValueError, match=r"model = 'free', orbit = 'circular': a deployment "
                                          r"runs the planar circular-orbit models \(derived, "):

@@ -201,8 +201,8 @@ def check_model(sat: Satellite, model: str) -> None:
 
 def check_sample(sat: Satellite, sample: float) -> None:
     """Refuse a grid too coarse to read a catch's peak: ``sample`` [s] at most a tenth
-    of the shortest catch, π √(m3 / k) on the stiffer line (k = E_j / l_j0)."""
-    k = max(sat.E1 / sat.l10, sat.E2 / sat.l20)
+    of the shortest catch, π √(m3 / k) with both lines pulling (k = Σ E_j / l_j0)."""
+    k = sat.E1 / sat.l10 + sat.E2 / sat.l20
     catch = math.pi * math.sqrt(sat.m3 / k) if k > 0 else math.inf
     if not 0 < sample <= catch / 10:
         raise ValueError(f"sample = {sample:g} s: a catch on these lines lasts {catch:.3g} s "
