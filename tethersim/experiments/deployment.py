@@ -103,10 +103,12 @@ def released(sat: Satellite, distance: float, offset: float = 0.0,
         low = math.sqrt(max(radius ** 2 - beyond ** 2, 0.0))
         reach = min(math.sqrt(max(sat.l10 ** 2 - (sat.b - offset) ** 2, 0.0)),
                     math.sqrt(max(sat.l20 ** 2 - (sat.a + offset) ** 2, 0.0)))
+        allowed = (f"{low:.3g} < distance < {reach:.3g} m" if reach > low else
+                   "no distance gives both")
         raise ValueError(f"release distance = {distance:g} m: a free release starts with "
                          f"the balloon (radius {radius:.3g} m) clear of the boom and both "
-                         f"lines slack, {low:.3g} < distance < {reach:.3g} m at offset "
-                         f"{offset:g} m (lines {sat.l10:g} and {sat.l20:g} m)")
+                         f"lines slack, {allowed} at offset {offset:g} m (lines "
+                         f"{sat.l10:g} and {sat.l20:g} m)")
     return trim.replace(initial=(float(distance), float(offset), theta, 0.0, 0.0, 0.0))
 
 
