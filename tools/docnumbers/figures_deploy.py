@@ -14,6 +14,8 @@ from __future__ import annotations
 import math
 from functools import cache
 
+import numpy as np
+
 from tethersim.analysis.metrics import SETTLING_TOL
 from tethersim.experiments.deployment import (
     arrival,
@@ -88,6 +90,16 @@ def closed_form_ratio() -> float:
     return float(pull_along_trim(dep.result, start).max() / catch_closed_form(start))
 
 
+@cache
+def rubber_bands() -> tuple:
+    """(peak tension [N], further stretch [m]) of SatI's own tethers taking an arrival at
+    1 m/s: the first catch (0.05 orbit holds it: the bounce's period is ~70 s)."""
+    dep = deploy(arrival(load_preset("satI"), 1.0), periods=0.05)
+    y = dep.result.model_states
+    r = np.hypot(y[:, 0], y[:, 1])
+    return dep.first_peak, float(r.max() - r[0])
+
+
 def payout_rule() -> tuple:
     """(b² − a² [m²], l10² − l20² of the stretched bridle [m²], its rigid apex's height
     above the COM with the boom upright [m]): the pay-out rule's figures."""
@@ -124,6 +136,8 @@ QUANTITIES = {
     "deploy_arrivals_n": lambda: len(SPEEDS),
     "deploy_over_speed": lambda: min(v for v in SPEEDS if arrived(v)["turned_over"]),
     "deploy_release_distance": lambda: RELEASE,
+    "deploy_rubber_peak": lambda: rubber_bands()[0],
+    "deploy_rubber_stretch": lambda: rubber_bands()[1],
     "deploy_rtol": lambda: RUN_TOLERANCES["rtol"],
     "deploy_atol": lambda: RUN_TOLERANCES["atol"],
     "deploy_loss": lambda: LOSS_FACTOR,
@@ -166,6 +180,8 @@ FIGURES = [
     Figure(D, (H, "turns the boom over in ", " of "), "deploy_arrivals_n", slow=True),
     Figure(D, (H, "the boom first turns over at "), "deploy_over_speed", slow=True),
     Figure(D, (H, "turns the boom over.** From "), "deploy_release_distance"),
+    Figure(D, (H, "with a peak of "), "deploy_rubber_peak", slow=True),
+    Figure(D, (H, "with a peak of ", "stretching "), "deploy_rubber_stretch", slow=True),
     Figure(D, (H, "on Radau IIA (rtol "), "deploy_rtol"),
     Figure(D, (H, "on Radau IIA (rtol ", "atol "), "deploy_atol"),
     Figure(D, (H, "loss factor of "), "deploy_loss"),
