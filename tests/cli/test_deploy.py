@@ -98,3 +98,14 @@ def test_an_interrupted_deploy_keeps_the_starts_it_finished(tmp_path, cli, monke
     assert code == 130 and "1 of 2 starts written" in stderr, stderr
     assert len(_rows(out / "deployment.csv")) == 1
     assert (out / "satellite.json").is_file()
+
+
+@VARIANT_LOOP  # deploy runs objective-damper's Radau loop (~35 s cold)
+def test_the_default_release_is_left_out_where_the_lines_cannot_reach_it(tmp_path, cli):
+    # the thesis's 6 m tethers cannot hold a balloon released clear of the boom
+    out = tmp_path / "d"
+    code, stdout, _ = cli(["deploy", "satI", "--speeds", "0.1", "--periods", "0.005",
+                           "--settle-periods", "0", "--quiet", "--out", str(out)])
+    assert code == 0
+    assert "no free release: release distance = 3 m" in stdout
+    assert [r["start"] for r in _rows(out / "deployment.csv")] == ["arrival"]

@@ -22,7 +22,13 @@ PITCH_POINTS = 4000  # samples of each start's θ(t) kept for the plot
 
 def add_parser(sub) -> None:
     """Declare ``deploy`` and its options on the subparsers ``sub``."""
-    from tethersim.experiments.deployment import PLANAR, REAL_MODEL, SAMPLE, SETTLE_PERIODS
+    from tethersim.experiments.deployment import (
+        PLANAR,
+        REAL_MODEL,
+        RELEASE,
+        SAMPLE,
+        SETTLE_PERIODS,
+    )
     p = sub.add_parser(
         "deploy", help=HELP,
         description="Start the satellite at the end of a braked deployment (--speeds: the "
@@ -37,9 +43,10 @@ def add_parser(sub) -> None:
     p.add_argument("--speeds", default=SPEEDS, metavar="V,V,...",
                    help=f"arrival speeds [m/s], a list or start:stop:count (default {SPEEDS}); "
                         f"'' for none")
-    p.add_argument("--release", default="3", metavar="D,D,...",
-                   help="free-release distances behind the COM [m], the balloon clear of the "
-                        "boom (default 3); '' for none")
+    p.add_argument("--release", default=None, metavar="D,D,...",
+                   help=f"free-release distances behind the COM [m], the balloon clear of the "
+                        f"boom (default {RELEASE:g} where the lines reach past it, else none: "
+                        f"the thesis's 6 m tethers cannot); '' for none")
     p.add_argument("--sample", type=options.positive_float, default=SAMPLE, metavar="S",
                    help=f"output grid [s] (default {SAMPLE:g}: finer than a real line's catch, "
                         f"which lasts tens of ms)")
@@ -63,6 +70,9 @@ def _starts(args, sat) -> list:
     for option, key, what in (("speeds", "speeds", f"speeds 0 to {MAX_SPEED:g} m/s"),
                               ("release", "releases", "distances behind the COM in m")):
         text = getattr(args, option)
+        if text is None:  # the default release, where the satellite's lines allow one
+            todo += _default_release(args, sat)
+            continue
         try:
             values = [] if not text.strip() else [float(v) for v in parse_grid(option, text)]
         except ValueError as exc:
@@ -74,6 +84,17 @@ def _starts(args, sat) -> list:
     if not todo:
         raise options.UsageError("--speeds and --release are both empty: nothing to deploy")
     return todo
+
+
+def _default_release(args, sat) -> list:
+    """The default free release (RELEASE behind the COM), or none, said in one line, when
+    the satellite's lines cannot reach past the balloon beside the boom."""
+    from tethersim.experiments.deployment import RELEASE, starts
+    try:
+        return starts(sat, releases=(RELEASE,), model=args.model)
+    except ValueError as exc:
+        print(f"no free release: {exc}")
+        return []
 
 
 def _check_sizes(args, sat) -> None:

@@ -37,6 +37,7 @@ from tethersim.model.satellite import Satellite
 #: 2 ms samples read its peak to within 1 − cos(π 1 ms / 41 ms) = 0.3 %.
 SAMPLE = 0.002
 MAX_SAMPLES = 5_000_000  # a deployment's output grid: 400 MB of states
+RELEASE = 3.0  # m behind the COM: the default free release, clear of SatI's boom
 MAX_SPEED = 100.0  # m/s: an arrival speed beyond any deployer (a free release reaches ~3)
 #: the models a deployment runs: planar, circular orbit (their state is δx, δy, θ and rates)
 PLANAR = tuple(m.name for m in MODELS if m.geometry == "planar" and m.orbit == "circular")

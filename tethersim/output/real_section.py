@@ -19,7 +19,6 @@ from tethersim.output.page import table as _table
 BAND = 0.05  # rad: the thesis's pitch trim band (p. 5-18)
 STEP_DENSITY = 2.0  # x nominal air: the run's step in drag
 ARRIVAL = 0.1  # m/s: the braked arrival of the deployment table (docs/real-tethers.md)
-RELEASE = 3.0  # m behind the COM: the free release, the balloon clear of the boom
 
 
 def real_numbers(sat, periods: float) -> dict:
@@ -44,7 +43,7 @@ def real_numbers(sat, periods: float) -> dict:
     from dataclasses import replace
 
     from tethersim.analysis.tethers import tether_loads
-    from tethersim.experiments.deployment import arrival, deploy, released
+    from tethersim.experiments.deployment import RELEASE, arrival, deploy, released
     from tethersim.experiments.real_tethers import (
         LINE,
         STRETCHED_LENGTHS,

@@ -18,6 +18,7 @@ import numpy as np
 
 from tethersim.analysis.metrics import SETTLING_TOL
 from tethersim.experiments.deployment import (
+    RELEASE,
     arrival,
     balloon_radius,
     catch_closed_form,
@@ -40,7 +41,6 @@ H = "## Deployment: the catch at full length"
 SPEEDS = (0.01, 0.03, 0.1, 0.3, 1.0, 3.0)  # m/s: the table's arrivals
 SCAN = tuple(round(0.05 * k, 2) for k in range(1, 13))  # m/s: 0.05 ... 0.6
 RELEASES = tuple((d, o) for d in (2.5, 3.0, 5.0, 10.0) for o in (-0.5, 0.0, 0.5))  # (δx, δy) m
-RELEASE = 3.0  # m: the doc's free release (the balloon, radius 1.95 m, clear of the boom)
 
 
 @cache
