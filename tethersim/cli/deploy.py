@@ -143,8 +143,8 @@ def run(args) -> int:
     sat = options.satellite(args)
     from tethersim.cli.overrides import refuse_unused
     refuse_unused(args, sat, (args.model,))
+    _check_sizes(args, sat)  # cheap: before the starts' equilibria are solved
     todo = _starts(args, sat)
-    _check_sizes(args, sat)
     out = Path(args.out) if args.out else options.default_out(args, "deploy")
     preflight.check_files(out, ("deployment.csv", FILE, "satellite.json"))
     record = options.claim_folder(out, args, sat)

@@ -102,6 +102,12 @@ def start_satellite(sat: Satellite, model: str, start: str = "auto") -> tuple:
         return sat, "given"
 
 
+def thesis_damper(model: str) -> bool:
+    """Whether ``model``'s damper is the thesis's (on the whole relative velocity of a
+    line's ends), not a Kelvin-Voigt damper on the line's stretch rate."""
+    return "Kelvin-Voigt" not in get_model(model).description
+
+
 def upright_or_refused(sat: Satellite, eq: Satellite, model: str) -> Satellite:
     """The auto start ``eq`` (the equilibrium of ``sat``), unless the thesis's damper
     turned its boom over.
@@ -115,10 +121,9 @@ def upright_or_refused(sat: Satellite, eq: Satellite, model: str) -> Satellite:
     far from the COM, docs/real-tethers.md "One line") start there.
     """
     theta = eq.initial[2]
-    thesis_damper = "Kelvin-Voigt" not in get_model(model).description
     # turned over: more than 120° from upright; upright: within 60° (a boom along the
     # flow, θ near ±90°, is neither: a single stiff line's own rest, "One line")
-    if not (thesis_damper and (eq.c1 or eq.c2) and math.cos(theta) < -0.5):
+    if not (thesis_damper(model) and (eq.c1 or eq.c2) and math.cos(theta) < -0.5):
         return eq
     try:  # the damper's doing only if the same lines rest upright without it
         undamped = equilibrium_satellite(sat.replace(c1=0.0, c2=0.0), model).initial[2]
@@ -282,7 +287,7 @@ def equilibrium_satellite(sat: Satellite, model: str) -> Satellite:
         q, _ = steady_coordinates(solved, circular, np.array([guess.get(k, 0.0) for k in names]))
     except NoEquilibrium as exc:
         hint = ""
-        if (sat.c1 or sat.c2) and "stretch rate" not in mdl.description:
+        if (sat.c1 or sat.c2) and thesis_damper(circular):
             # the thesis's damper acts on the whole relative velocity: at rest in the orbit
             # frame it still drags the balloon sideways by c x omega x length
             hint = (f"; with c1 = {sat.c1:g}, c2 = {sat.c2:g} N s/m the thesis's damper "
