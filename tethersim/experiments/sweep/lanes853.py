@@ -188,14 +188,14 @@ def _dense_one(model, air, k, T, P, Y, Y_new, Ks, TL, H, lane, out_y, y, yn, pw,
 
 @njit(cache=True, nogil=True)
 def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, tol,
-                   ss_fraction, rec_f, rec_i, Y, PL, Ks, YS, Y_new, S, Fd, H, TL, HL, HN,
+                   ss_fraction, rec_f, rec_i, Y, PL, Ks, YS, Y_new, HR, S, Fd, H, TL, HL, HN,
                    TE, err, acc, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm):
     air, T, Y0, P, span, EV, cols = (borrow(air), borrow(T), borrow(Y0), borrow(P),
                                      borrow(span), borrow(EV), borrow(cols))
     rec_f, rec_i, Y, PL, Ks, YS = (borrow(rec_f), borrow(rec_i), borrow(Y), borrow(PL),
                                    borrow(Ks), borrow(YS))
-    Y_new, S, Fd, H, TL = (borrow(Y_new), borrow(S), borrow(Fd), borrow(H),
-                                borrow(TL))
+    Y_new, HR, S, Fd, H, TL = (borrow(Y_new), borrow(HR), borrow(S), borrow(Fd), borrow(H),
+                               borrow(TL))
     HL, HN, TE, err, acc = borrow(HL), borrow(HN), borrow(TE), borrow(err), borrow(acc)
     lane, g0, g1, out_y, y, f = (borrow(lane), borrow(g0), borrow(g1), borrow(out_y),
                                  borrow(y), borrow(f))
@@ -227,7 +227,7 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
                 nxt += 1
         if active == 0:
             return
-        dop853_lanes_step(model, Y, H, PL, Ks, YS, Y_new, S)
+        dop853_lanes_step(model, Y, H, PL, Ks, YS, Y_new, S, HR)
         dop853_lanes_error(ns, Ks, H, Y, Y_new, rtol, atol, err, acc)
         dense = 0
         for k in range(K):
@@ -265,7 +265,7 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
         # the interpolant's 3 extra stages, only when an output falls in a step: on every
         # lane when more than one needs them, else the one lane's alone (the same numbers)
         if dense > 1:
-            dop853_lanes_dense(model, Y, Y_new, H, PL, Ks, YS, Fd, S)
+            dop853_lanes_dense(model, Y, Y_new, H, PL, Ks, YS, Fd, S, HR)
         for k in range(K):
             d = lane[k, DENSE]
             if d == 0:
@@ -326,7 +326,7 @@ def sweep_block_lanes853(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, 
     Y = np.zeros(m)  # an idle lane steps zeros, never uninitialised (denormal) data
     PL = np.zeros(npar * LANES)
     Ks = np.zeros(N_K * m)
-    YS, Y_new = np.zeros(m), np.zeros(m)
+    YS, Y_new, HR = np.zeros(m), np.zeros(m), np.zeros(m)
     S = np.zeros(model_transcendentals(model) * LANES)
     Fd = np.zeros(7 * m)
     H, TL, HL, HN, TE = np.zeros(K), np.zeros(K), np.zeros(K), np.zeros(K), np.zeros(K)
@@ -344,5 +344,5 @@ def sweep_block_lanes853(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, 
     buf = np.empty(rows)
     pm = np.empty(N_PITCH)
     _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, tol,
-                   ss_fraction, rec_f, rec_i, Y, PL, Ks, YS, Y_new, S, Fd, H, TL, HL, HN,
+                   ss_fraction, rec_f, rec_i, Y, PL, Ks, YS, Y_new, HR, S, Fd, H, TL, HL, HN,
                    TE, err, acc, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm)
