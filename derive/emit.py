@@ -27,7 +27,7 @@ import sympy as sp
 
 from . import codegen, orbit_codegen
 from .geometry import geometry_source
-from .lanes import lanes_source
+from .lanes import lanes_constants, lanes_source
 from .orbit import printable
 from .printer import (
     INDENT,
@@ -52,8 +52,8 @@ class Solve:
 
     ``rhs(model, pr)`` → lines of the rhs kernel; ``preamble``: helper kernels
     printed before it; ``extra(model, pr)`` → further kernels (lists of lines);
-    ``lanes``: also print the rhs on K sweep points at once (derive/lanes.py), where
-    its libm calls read only the state and parameters.
+    ``lanes``: also print the rhs and family_forces on K points at once
+    (derive/lanes.py), where the rhs's libm calls read only the state and parameters.
     """
 
     rhs: Callable
@@ -208,10 +208,14 @@ def module_source(model) -> str:
     """Source text of one generated module."""
     st, pr = style(model), printing(model)
     rhs = st.solve.rhs(model, pr)
+    forces = family_forces_source(pr, model.families)
     lines = header(model) + list(st.solve.preamble) + ["", ""] + rhs
-    if st.solve.lanes and (lanes := lanes_source(rhs)):
-        lines += ["", ""] + lanes
-    lines += ["", ""] + family_forces_source(pr, model.families)
+    lanes = [lanes_source(rhs), lanes_source(forces, "family_forces")] if st.solve.lanes else []
+    if lanes and lanes[0][0]:  # a lane rhs: the lanes' constants and every lane form
+        lines += ["", ""] + lanes_constants(max(n for _, n in lanes))
+        for src, _ in lanes:
+            lines += ["", ""] + src if src else []
+    lines += ["", ""] + forces
     lines += ["", ""] + jacobi_source(pr, model.families, model.energy,
                                       JACOBI_DOC[model.definition.orbit])
     for kernel_lines in st.solve.extra(model, pr):

@@ -1,13 +1,15 @@
-"""The lane form of a printed rhs: K points at once, for SIMD across sweep points.
+"""The lane form of a printed kernel: K points at once, for SIMD across sweep points.
 
 ``lanes_source`` rewrites the lines of a printed scalar ``rhs(t, y, p, dydt)``
 (codegen.rhs_source) into ``rhs_lanes(t, y, p, dydt, s)`` over structure-of-arrays
 inputs: K = len(t) points; row i of y (state), p (parameters), dydt and a scratch s
 (N_TRANSCENDENTAL rows) sits at [i*LANES, i*LANES + K) of its flat array, LANES = 8 a
-constant.  The body is the scalar body, statement for statement, inside
-``for k in range(K)``, so every lane does the same IEEE operations in the same order
-as the scalar rhs (no fast-math: the results are equal bit for bit) and LLVM can
-vectorise the loop across lanes.  It cannot vectorise a loop holding a call to libm
+constant.  ``family_forces(y, p, out)`` (printer.family_forces_source) becomes
+``family_forces_lanes(K, y, p, out, s)`` the same way, out[f, q] at row f*n_q + q: a
+sweep's force peaks take K samples of a run at once.  The body is the scalar body,
+statement for statement, inside ``for k in range(K)``, so every lane does the same IEEE
+operations in the same order as the scalar kernel (no fast-math: the results are equal
+bit for bit) and LLVM can vectorise the loop across lanes.  It cannot vectorise a loop holding a call to libm
 (numba's build has no vector versions, ``numba -s``: SVML not available), so:
 
 * sin and cos (generated/trig.py's ``sincos``: polynomials, libm only for |x| ≥
@@ -39,6 +41,17 @@ CALL = re.compile(TRANSCENDENTAL.pattern + r"|(?<![\w.])(sincos)\(")
 # checks it needs to vectorise fit its budget (with a run-time row stride it gives up)
 LANES = 8
 _UNPACK = re.compile(r"^\s+(\w+) = ([yp])\[(\d+)\]$")
+_OUT = re.compile(r"\bout\[(\d+), (\d+)\]")  # family_forces' out[f, q]
+# the kernels with a lane form: scalar name -> (lane signature, the lane count K, its doc)
+KERNELS = {
+    "rhs": ("rhs_lanes(t, y, p, dydt, s)", "t.shape[0]",
+            ("rhs on K = len(t) <= LANES lanes: row i of y, p, dydt and of the",
+             "scratch s (N_TRANSCENDENTAL rows) is [i*LANES, i*LANES + K).")),
+    "family_forces": ("family_forces_lanes(K, y, p, out, s)", "K",
+                      ("family_forces on K <= LANES lanes: row i of y, p and of the scratch",
+                       "s (N_TRANSCENDENTAL rows) is [i*LANES, i*LANES + K), out[f, q] is",
+                       "row f*n_q + q of out.")),
+}
 _NAME = re.compile(r"[A-Za-z_]\w*")
 
 
@@ -52,10 +65,12 @@ def _call_end(text: str, open_at: int) -> int:
     raise ValueError("unbalanced parentheses in a printed rhs")
 
 
-def _index_names(line: str) -> str:
-    """y[i] -> y[i, k] (and p, dydt), t -> t[k], in a line's code (not its comment)."""
+def _index_names(line: str, n_q: int = 0) -> str:
+    """y[i] -> y[i*LANES + k] (and p, dydt), out[f, q] -> out[(f*n_q + q)*LANES + k],
+    t -> t[k], in a line's code (not its comment)."""
     code, hash_, comment = line.partition("#")
     code = re.sub(r"\b(y|p|dydt)\[(\d+)\]", r"\1[\2*LANES + k]", code)
+    code = _OUT.sub(lambda m: f"out[{int(m[1]) * n_q + int(m[2])}*LANES + k]", code)
     code = re.sub(r"\bt\b", "t[k]", code)
     return code + hash_ + comment
 
@@ -80,13 +95,20 @@ def _logical_lines(lines: list) -> list:
     return out
 
 
-def lanes_source(rhs_lines: list, indent: str = "    ") -> list:
-    """The lines of ``rhs_lanes`` from the lines of a printed scalar ``rhs``, or [] when
-    one of its libm calls reads an intermediate (module docstring)."""
-    start = next(i for i, line in enumerate(rhs_lines) if line.startswith("def rhs("))
-    doc_end = next(i for i in range(start + 1, len(rhs_lines))
-                   if rhs_lines[i].rstrip().endswith('"""'))
-    body = rhs_lines[doc_end + 1:]
+def lanes_source(lines: list, name: str = "rhs", indent: str = "    ") -> tuple:
+    """(The lines of the lane form of the printed scalar kernel ``name`` (KERNELS) from
+    its lines, the scratch rows it needs), or ([], 0) when one of its libm calls reads an
+    intermediate (module docstring)."""
+    signature, count, doc = KERNELS[name]
+    start = next(i for i, line in enumerate(lines) if line.startswith(f"def {name}("))
+    doc_end = next(i for i in range(start + 1, len(lines))
+                   if lines[i].rstrip().endswith('"""'))
+    body = lines[doc_end + 1:]
+    outs = [(int(f), int(q)) for f, q in _OUT.findall("\n".join(body))]
+    n_q = 1 + max(q for _, q in outs) if outs else 0
+    zero = [f"{indent}out[{f}, {q}] = 0.0" for f in range(1 + max(f for f, _ in outs))
+            for q in range(n_q)] if outs else []  # out[:, :] = 0.0, lane by lane
+    body = [z for line in body for z in (zero if line.strip() == "out[:, :] = 0.0" else [line])]
     unpack = {}  # name -> its unpacking line
     for line in body:
         if m := _UNPACK.match(line):
@@ -100,10 +122,10 @@ def lanes_source(rhs_lines: list, indent: str = "    ") -> list:
         end = _call_end(text, m.end() - 1)
         call, arg = text[m.start():end], text[m.end():end - 1]
         if not set(_NAME.findall(arg)) - {"math"} <= set(unpack) or "\n" in call:
-            return []
+            return [], 0
         trig = m.group(2) is not None
         if trig and TRANSCENDENTAL.search(arg):
-            return []
+            return [], 0
         entry = (f"sincos_beyond({arg})", 2) if trig else (call, 1)
         stored.setdefault(entry, sum(n for _, n in stored))
         rows = _rows(stored[entry], entry[1])
@@ -113,22 +135,26 @@ def lanes_source(rhs_lines: list, indent: str = "    ") -> list:
     vector_body = "".join(out).split("\n")
     i1, i2 = indent, indent * 2
     needed = set().union(*(set(_NAME.findall(c)) for c, _ in stored))
-    lines = ["@njit(cache=True, inline=\"always\")",
-             "def rhs_lanes(t, y, p, dydt, s):",
-             f'{i1}"""rhs on K = len(t) <= LANES lanes: row i of y, p, dydt and of the',
-             f"{i1}scratch s (N_TRANSCENDENTAL rows) is [i*LANES, i*LANES + K).",
-             "",
-             f"{i1}Each lane equals rhs bit for bit (derive/lanes.py); libm's values",
-             f'{i1}come first, lane by lane, so that the second loop vectorises.',
-             f'{i1}"""',
-             f"{i1}for k in range(t.shape[0]):"]
-    lines += [_index_names(unpack[n]).replace(i1, i2, 1) for n in unpack if n in needed]
-    lines += [f"{i2}{_rows(first, n)} = {c}" for (c, n), first in stored.items()]
+    src = ["@njit(cache=True, inline=\"always\")",
+           f"def {signature}:",
+           f'{i1}"""{doc[0]}', *(f"{i1}{d}" for d in doc[1:]),
+           "",
+           f"{i1}Each lane equals {name} bit for bit (derive/lanes.py); libm's values",
+           f'{i1}come first, lane by lane, so that the second loop vectorises.',
+           f'{i1}"""',
+           f"{i1}for k in range({count}):"]
+    src += [_index_names(unpack[n]).replace(i1, i2, 1) for n in unpack if n in needed]
+    src += [f"{i2}{_rows(first, n)} = {c}" for (c, n), first in stored.items()]
     if not stored:
-        lines.append(f"{i2}pass")
-    lines.append(f"{i1}for k in range(t.shape[0]):")
+        src.append(f"{i2}pass")
+    src.append(f"{i1}for k in range({count}):")
     for line in vector_body:
-        lines += wrap_statement(i1 + _index_names(line)) if line.strip() else [line]
-    return [f"N_TRANSCENDENTAL = {max(1, sum(n for _, n in stored))}",
-            f"LANES = {LANES}  # row stride of the lane arrays: the most lanes (AVX-512)",
-            "", ""] + lines
+        src += wrap_statement(i1 + _index_names(line, n_q)) if line.strip() else [line]
+    return src, sum(n for _, n in stored)
+
+
+def lanes_constants(rows: int) -> list:
+    """The lane forms' module constants: their scratch rows (the most any needs) and the
+    row stride."""
+    return [f"N_TRANSCENDENTAL = {max(1, rows)}",
+            f"LANES = {LANES}  # row stride of the lane arrays: the most lanes (AVX-512)"]

@@ -305,6 +305,149 @@ def rhs_lanes(t, y, p, dydt, s):
         dydt[5*LANES + k] = 2*Q_theta*a10*r0 + 3*a**3*a10*a3*m2*sin_theta - a11*a4*b**3*m1 - a12*a8 - a12*a9
 
 
+@njit(cache=True, inline="always")
+def family_forces_lanes(K, y, p, out, s):
+    """family_forces on K <= LANES lanes: row i of y, p and of the scratch
+    s (N_TRANSCENDENTAL rows) is [i*LANES, i*LANES + K), out[f, q] is
+    row f*n_q + q of out.
+
+    Each lane equals family_forces bit for bit (derive/lanes.py); libm's values
+    come first, lane by lane, so that the second loop vectorises.
+    """
+    for k in range(K):
+        theta = y[2*LANES + k]
+        s[0*LANES + k], s[1*LANES + k] = sincos_beyond(theta)
+    for k in range(K):
+        delta_x = y[0*LANES + k]
+        delta_y = y[1*LANES + k]
+        theta = y[2*LANES + k]
+        delta_x_dot = y[3*LANES + k]
+        delta_y_dot = y[4*LANES + k]
+        theta_dot = y[5*LANES + k]
+        A1 = p[3*LANES + k]
+        A2 = p[4*LANES + k]
+        A3 = p[5*LANES + k]
+        a = p[6*LANES + k]
+        b = p[7*LANES + k]
+        l10 = p[8*LANES + k]
+        l20 = p[9*LANES + k]
+        E1 = p[10*LANES + k]
+        E2 = p[11*LANES + k]
+        c1 = p[12*LANES + k]
+        c2 = p[13*LANES + k]
+        CD = p[14*LANES + k]
+        r0 = p[15*LANES + k]
+        omega = p[17*LANES + k]
+        omega_earth = p[18*LANES + k]
+        rho1 = p[19*LANES + k]
+        rho2 = p[20*LANES + k]
+        rho3 = p[21*LANES + k]
+        sin_theta, cos_theta = sincos_lane(theta, s[0*LANES + k], s[1*LANES + k])
+        lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
+        lambda2 = math.sqrt((-a*cos_theta - delta_y)**2 + (-a*sin_theta - delta_x)**2)
+        out[0*LANES + k] = 0.0
+        out[1*LANES + k] = 0.0
+        out[2*LANES + k] = 0.0
+        out[3*LANES + k] = 0.0
+        out[4*LANES + k] = 0.0
+        out[5*LANES + k] = 0.0
+        out[6*LANES + k] = 0.0
+        out[7*LANES + k] = 0.0
+        out[8*LANES + k] = 0.0
+        out[9*LANES + k] = 0.0
+        out[10*LANES + k] = 0.0
+        out[11*LANES + k] = 0.0
+        out[12*LANES + k] = 0.0
+        out[13*LANES + k] = 0.0
+        out[14*LANES + k] = 0.0
+        out[15*LANES + k] = 0.0
+        out[16*LANES + k] = 0.0
+        out[17*LANES + k] = 0.0
+        out[18*LANES + k] = 0.0
+        out[19*LANES + k] = 0.0
+        out[20*LANES + k] = 0.0
+        # drag1: air drag on the tip-mass (3.32-3.34)
+        f0_0 = b*sin_theta
+        f0_1 = b*omega*sin_theta - f0_0*omega_earth - f0_0*theta_dot
+        f0_2 = b*cos_theta
+        f0_3 = f0_2 + r0
+        f0_4 = f0_2*theta_dot - f0_3*omega + f0_3*omega_earth
+        f0_5 = math.sqrt(f0_1**2 + f0_4**2)
+        out[0*LANES + k] = 0
+        out[1*LANES + k] = 0
+        out[2*LANES + k] = (1/2)*A1*CD*b*f0_1*f0_5*rho1*sin_theta - 1/2*A1*CD*f0_2*f0_4*f0_5*rho1
+        # drag2: air drag on the main bus (3.32-3.34)
+        f1_0 = a*sin_theta
+        f1_1 = -f1_0*omega + f1_0*omega_earth + f1_0*theta_dot
+        f1_2 = a*cos_theta
+        f1_3 = -f1_2 + r0
+        f1_4 = -f1_2*theta_dot - f1_3*omega + f1_3*omega_earth
+        f1_5 = (1/2)*A2*CD*rho2*math.sqrt(f1_1**2 + f1_4**2)
+        out[3*LANES + k] = 0
+        out[4*LANES + k] = 0
+        out[5*LANES + k] = -f1_0*f1_1*f1_5 + f1_2*f1_4*f1_5
+        # drag3: air drag on the balloon (3.32-3.34)
+        f2_0 = delta_y + r0
+        f2_1 = delta_x_dot - f2_0*omega + f2_0*omega_earth
+        f2_2 = delta_x*omega - delta_x*omega_earth + delta_y_dot
+        f2_3 = (1/2)*A3*CD*rho3*math.sqrt(f2_1**2 + f2_2**2)
+        out[6*LANES + k] = -f2_1*f2_3
+        out[7*LANES + k] = -f2_2*f2_3
+        out[8*LANES + k] = 0
+        # spring1: tension of tether 1 (3.35-3.42)
+        if lambda1 > l10:
+            f3_0 = 1/lambda1
+            f3_1 = -1 + lambda1/l10
+            f3_2 = E1*f3_0*f3_1
+            f3_3 = f3_2*(b*sin_theta - delta_x)
+            f3_4 = b*cos_theta
+            f3_5 = -delta_y + f3_4
+            out[9*LANES + k] = f3_3
+            out[10*LANES + k] = f3_2*f3_5
+            out[11*LANES + k] = E1*b*f3_0*f3_1*f3_5*sin_theta - f3_3*f3_4
+        # spring2: tension of tether 2 (3.36-3.42)
+        if lambda2 > l20:
+            f4_0 = a*sin_theta
+            f4_1 = E2*(-1 + lambda2/l20)/lambda2
+            f4_2 = f4_1*(-delta_x - f4_0)
+            f4_3 = a*cos_theta
+            f4_4 = f4_1*(-delta_y - f4_3)
+            out[12*LANES + k] = f4_2
+            out[13*LANES + k] = f4_4
+            out[14*LANES + k] = -f4_0*f4_4 + f4_2*f4_3
+        # damper1: damping of tether 1 along its stretch rate (variant (issue 5))
+        if lambda1 > l10:
+            f5_0 = b*sin_theta
+            f5_1 = 1/lambda1
+            f5_2 = b*cos_theta
+            f5_3 = (
+                    b*delta_y*f5_1*sin_theta*theta_dot + delta_x*delta_x_dot*f5_1 - delta_x*f5_1*
+                    f5_2*theta_dot - delta_x_dot*f5_0*f5_1 + delta_y*delta_y_dot*f5_1 - delta_y_dot*
+                    f5_1*f5_2)
+            f5_4 = c1*f5_1*f5_3
+            f5_5 = f5_4*(-delta_x + f5_0)
+            f5_6 = -delta_y + f5_2
+            out[15*LANES + k] = f5_5
+            out[16*LANES + k] = f5_4*f5_6
+            out[17*LANES + k] = b*c1*f5_1*f5_3*f5_6*sin_theta - f5_2*f5_5
+        # damper2: damping of tether 2 along its stretch rate (variant (issue 5))
+        if lambda2 > l20:
+            f6_0 = a*sin_theta
+            f6_1 = 1/lambda2
+            f6_2 = delta_x_dot*f6_1
+            f6_3 = delta_y_dot*f6_1
+            f6_4 = a*cos_theta
+            f6_5 = f6_1*theta_dot
+            f6_6 = (
+                    c2*f6_1*(delta_x*f6_2 + delta_x*f6_4*f6_5 - delta_y*f6_0*f6_5 + delta_y*f6_3 +
+                    f6_0*f6_2 + f6_3*f6_4))
+            f6_7 = f6_6*(-delta_x - f6_0)
+            f6_8 = f6_6*(-delta_y - f6_4)
+            out[18*LANES + k] = f6_7
+            out[19*LANES + k] = f6_8
+            out[20*LANES + k] = -f6_0*f6_8 + f6_4*f6_7
+
+
 @njit(cache=True)
 def family_forces(y, p, out):
     """out[f, k] = generalized force of family FAMILIES[f] on q_k (N, N, N m)."""

@@ -11,7 +11,8 @@ import numpy as np
 import pytest
 from numba import njit
 
-from tethersim import load_preset
+from tethersim import load_preset, simulate
+from tethersim.engine.evaluate import family_force_peaks, family_forces_series
 from tethersim.engine.integrators.lanes import (
     LANES,
     has_lanes,
@@ -93,6 +94,39 @@ def test_lane_rhs_equals_the_scalar_rhs_bit_for_bit(model):
             kern.tether_margins(Y[j], P[j], g)
             taut.add(tuple(g > 0))
     assert len(taut) >= 3  # taut and slack tethers, in several combinations
+
+
+# the thesis model in the fast tier, as the rhs above
+@pytest.mark.parametrize("model", [m if m == "derived" else pytest.param(m, marks=pytest.mark.slow)
+                                   for m in LANE_MODELS])
+def test_lane_family_forces_equal_the_scalar_ones_bit_for_bit(model):
+    kern = KERNELS[model_index(model)]
+    forces, forces_lanes = kern.family_forces, kern.family_forces_lanes
+    scalar = njit(lambda y, p, out: forces(y, p, out))
+    lanes = njit(lambda k, y, p, out, s: forces_lanes(k, y, p, out, s))
+    nf, nq = len(kern.FAMILIES), 3
+    for seed, k in ((0, LANES), (1, LANES), (2, 3)):  # a last, partial batch of 3 lanes
+        P, Y = _points(model, k, seed)
+        out = np.full(nf * nq * LANES, np.nan)  # every entry written, zeros included
+        lanes(k, _flat(Y), _flat(P), out, np.empty(kern.N_TRANSCENDENTAL * LANES))
+        got = _unflat(out, k, nf * nq)
+        for j in range(k):
+            want = np.full((nf, nq), np.nan)
+            scalar(Y[j], P[j], want)
+            assert _bits(got[j]) == _bits(want), (model, seed, j)
+
+
+def test_force_peaks_on_lanes_equal_the_largest_force_of_the_series():
+    # the sweeps' force peaks take LANES samples at a time in uniform air; the truth is the
+    # scalar series of every family's force, 1001 samples (not a multiple of LANES)
+    sat = load_preset("satI")
+    res = simulate(sat, 5, samples=1001, progress=False)
+    m, air = model_index("derived"), uniform_air()
+    Y, p = np.ascontiguousarray(res.model_states), parameter_vector(sat, "derived")
+    peaks = family_force_peaks(m, air, res.t, Y, p)
+    want = np.abs(family_forces_series(m, air, res.t, Y, p)).max(axis=(0, 1))
+    assert _bits(peaks) == _bits(want)
+    assert np.all(want > 0.0)
 
 
 @pytest.mark.slow  # compiles an RK4 step of each lane model (~15 s cold)

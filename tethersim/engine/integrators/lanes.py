@@ -50,6 +50,17 @@ def model_rhs_lanes(model, t, y, p, dydt, s):
     raise NotImplementedError("model_rhs_lanes is only callable from compiled code")
 
 
+def model_family_forces_lanes(model, K, y, p, out, s):
+    """Generated lane family_forces of model ``model`` (compiled code, literal model only;
+    a model without one: never called, see :func:`model_has_force_lanes`)."""
+    raise NotImplementedError("model_family_forces_lanes is only callable from compiled code")
+
+
+def model_has_force_lanes(model):
+    """Whether model ``model`` has a lane family_forces, a compile-time constant."""
+    raise NotImplementedError("model_has_force_lanes is only callable from compiled code")
+
+
 def model_transcendentals(model):
     """Rows of the lane rhs's scratch (libm values from its first loop), a compile-time constant."""
     raise NotImplementedError("model_transcendentals is only callable from compiled code")
@@ -63,6 +74,35 @@ def _model_rhs_lanes(model, t, y, p, dydt, s):
 
     def impl(model, t, y, p, dydt, s):
         rhs(t, y, p, dydt, s)
+    return impl
+
+
+def _force_lanes(k: int) -> bool:
+    return has_lanes(k) and hasattr(KERNELS[k], "family_forces_lanes")
+
+
+@overload(model_family_forces_lanes, inline="always", prefer_literal=True)
+def _model_family_forces_lanes(model, K, y, p, out, s):
+    if (k := literal_index(model)) is None:
+        return None
+    forces = KERNELS[k].family_forces_lanes if _force_lanes(k) else None
+
+    def impl(model, K, y, p, out, s):
+        forces(K, y, p, out, s)
+
+    def absent(model, K, y, p, out, s):
+        pass
+    return impl if forces is not None else absent
+
+
+@overload(model_has_force_lanes, inline="always", prefer_literal=True)
+def _model_has_force_lanes(model):
+    if (k := literal_index(model)) is None:
+        return None
+    present = _force_lanes(k)
+
+    def impl(model):
+        return present
     return impl
 
 
