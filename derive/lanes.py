@@ -9,8 +9,9 @@ constant.  ``family_forces(y, p, out)`` (printer.family_forces_source) becomes
 sweep's force peaks take K samples of a run at once.  The body is the scalar body,
 statement for statement, inside ``for k in range(K)``, so every lane does the same IEEE
 operations in the same order as the scalar kernel (no fast-math: the results are equal
-bit for bit) and LLVM can vectorise the loop across lanes.  It cannot vectorise a loop holding a call to libm
-(numba's build has no vector versions, ``numba -s``: SVML not available), so:
+bit for bit) and LLVM can vectorise the loop across lanes.  It cannot vectorise a loop
+holding a call to libm (numba's build has no vector versions, ``numba -s``: SVML not
+available), so:
 
 * sin and cos (generated/trig.py's ``sincos``: polynomials, libm only for |x| ≥
   trig.LIMIT) stay in the vector loop as ``sincos_lane(x, s[j], s[j + 1])``; a first,
@@ -65,13 +66,15 @@ def _call_end(text: str, open_at: int) -> int:
     raise ValueError("unbalanced parentheses in a printed rhs")
 
 
-def _index_names(line: str, n_q: int = 0) -> str:
+def _index_names(line: str, n_q: int = 0, time: bool = True) -> str:
     """y[i] -> y[i*LANES + k] (and p, dydt), out[f, q] -> out[(f*n_q + q)*LANES + k],
-    t -> t[k], in a line's code (not its comment)."""
+    t -> t[k] (``time``: the lane form takes the times t), in a line's code (not its
+    comment)."""
     code, hash_, comment = line.partition("#")
     code = re.sub(r"\b(y|p|dydt)\[(\d+)\]", r"\1[\2*LANES + k]", code)
     code = _OUT.sub(lambda m: f"out[{int(m[1]) * n_q + int(m[2])}*LANES + k]", code)
-    code = re.sub(r"\bt\b", "t[k]", code)
+    if time:
+        code = re.sub(r"\bt\b", "t[k]", code)
     return code + hash_ + comment
 
 
@@ -143,13 +146,14 @@ def lanes_source(lines: list, name: str = "rhs", indent: str = "    ") -> tuple:
            f'{i1}come first, lane by lane, so that the second loop vectorises.',
            f'{i1}"""',
            f"{i1}for k in range({count}):"]
-    src += [_index_names(unpack[n]).replace(i1, i2, 1) for n in unpack if n in needed]
+    time = "(t," in signature
+    src += [_index_names(unpack[n], 0, time).replace(i1, i2, 1) for n in unpack if n in needed]
     src += [f"{i2}{_rows(first, n)} = {c}" for (c, n), first in stored.items()]
     if not stored:
         src.append(f"{i2}pass")
     src.append(f"{i1}for k in range({count}):")
     for line in vector_body:
-        src += wrap_statement(i1 + _index_names(line, n_q)) if line.strip() else [line]
+        src += wrap_statement(i1 + _index_names(line, n_q, time)) if line.strip() else [line]
     return src, sum(n for _, n in stored)
 
 
