@@ -78,7 +78,8 @@ def _model_rhs_lanes(model, t, y, p, dydt, s):
 
 
 def _force_lanes(k: int) -> bool:
-    return has_lanes(k) and hasattr(KERNELS[k], "family_forces_lanes")
+    # a bead chain's loop index lies past KERNELS: its forces run one sample at a time
+    return k < len(KERNELS) and has_lanes(k) and hasattr(KERNELS[k], "family_forces_lanes")
 
 
 @overload(model_family_forces_lanes, inline="always", prefer_literal=True)
