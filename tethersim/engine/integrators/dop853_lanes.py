@@ -53,7 +53,7 @@ def _stage_sum(s):
 
 
 def _dispatch(first, last):
-    """stage_state(s, ...): the sum of stage s, for first <= s <= last, as a chain of
+    """f(s, m, Y, HR, Ks, YS): the sum of stage s, for first <= s <= last, as a chain of
     tests on s (a constant-s sum per stage, one rhs call site in the step's loop)."""
     head = _stage_sum(first)
     if first == last:
