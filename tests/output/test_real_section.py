@@ -1,9 +1,10 @@
 """The report's real-tether section (tethersim/output/real_section.py): its table holds the
 trim of each configuration as tethersim.experiments.real_tethers computes it afresh, and
-its run's loads are the run's own."""
+its run's loads are the run's own; its real-line atlas table is the atlas's rows."""
 from __future__ import annotations
 
 import html
+import math
 import re
 
 import pytest
@@ -11,7 +12,7 @@ import pytest
 from tethersim.analysis.tethers import tether_loads
 from tethersim.experiments.real_tethers import trim
 from tethersim.output.page import Page, write_html
-from tethersim.output.real_section import section_real
+from tethersim.output.real_section import ATLAS_KM, section_real
 
 # the implicit loop of objective-damper (~15 s to compile cold): the slow tier (CI runs it)
 pytestmark = pytest.mark.slow
@@ -54,6 +55,17 @@ def test_the_loads_table_is_the_runs_own_and_the_figure_exists(built):
     assert nums["run"].t[-1] == pytest.approx(PERIODS * nums["run"].satellite.period)
     assert (page.out / "img" / "real_tensions.png").is_file()
     assert "And on real tethers?" in text
+
+
+def test_the_real_line_atlas_table_is_the_atlas_rows(built):
+    """One row per start altitude, each verdict the atlas's own; a real line does not
+    stretch, so the balloon is never lost (docs/real-tethers.md)."""
+    page, nums, text = built
+    table = next(t for t in _tables(text) if t[0][0] == "start altitude [km]")
+    assert [r[0] for r in table[1:]] == [f"{h:g}" for h in ATLAS_KM]
+    assert [r[-1] for r in table[1:]] == [r["verdict"] for r in nums["atlas"]]
+    assert not any(math.isfinite(r["balloon_lost_h"]) for r in nums["atlas"])
+    assert (page.out / "feasibility-real").is_dir()
 
 
 def test_the_single_line_reach_is_the_satellites_own(built):

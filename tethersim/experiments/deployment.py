@@ -231,10 +231,11 @@ def _finished(res: SimResult) -> SimResult:
 
 
 def deploy(start: Satellite, periods: float = 1.0, sample: float = SAMPLE,
-           model: str = REAL_MODEL) -> Deployment:
+           model: str = REAL_MODEL, rtol: float = RUN_TOLERANCES["rtol"]) -> Deployment:
     """Run a deployment start (:func:`released`, :func:`arrival`) for ``periods`` orbits
-    on the implicit scheme (Radau IIA at :data:`RUN_TOLERANCES`), sampled every
-    ``sample`` seconds (:func:`check_sample`), and read its :class:`Deployment`.
+    on the implicit scheme (Radau IIA at ``rtol`` and :data:`RUN_TOLERANCES`'s atol),
+    sampled every ``sample`` seconds (:func:`check_sample`), and read its
+    :class:`Deployment`.
 
     Raises
     ------
@@ -244,8 +245,9 @@ def deploy(start: Satellite, periods: float = 1.0, sample: float = SAMPLE,
     check_model(start, model)
     check_sample(start, sample)
     res = _finished(simulate(start, periods=periods, method="implicit", model=model,
-                             progress=False, start="given",
-                             steps=samples(periods, start.period, sample), **RUN_TOLERANCES))
+                             progress=False, start="given", rtol=rtol,
+                             atol=RUN_TOLERANCES["atol"],
+                             steps=samples(periods, start.period, sample)))
     if res.status not in ("ok", "tether-broke"):
         nan = math.nan
         return Deployment(res, res.status, nan, nan, nan, nan, nan, nan, nan, 0, nan, False,
@@ -343,9 +345,11 @@ def catch_closed_form(start: Satellite) -> float:
     return float(along[falls[0]] if falls.size else along[-1])
 
 
-def settle(start: Satellite, periods: float = SETTLE_PERIODS, model: str = REAL_MODEL) -> dict:
-    """Where a deployment start settles: ``periods`` orbits on the implicit scheme, judged
-    by the thesis's criterion on the metrics grid (tethersim.analysis.outcome).
+def settle(start: Satellite, periods: float = SETTLE_PERIODS, model: str = REAL_MODEL,
+           rtol: float = RUN_TOLERANCES["rtol"]) -> dict:
+    """Where a deployment start settles: ``periods`` orbits on the implicit scheme (as
+    :func:`deploy`), judged by the thesis's criterion on the metrics grid
+    (tethersim.analysis.outcome).
 
     Returns
     -------
@@ -357,8 +361,8 @@ def settle(start: Satellite, periods: float = SETTLE_PERIODS, model: str = REAL_
     from tethersim.analysis.outcome import outcome
     check_model(start, model)
     out = outcome(_finished(simulate(start, periods=periods, method="implicit", model=model,
-                                     progress=False, start="given", **RUN_TOLERANCES)),
-                  forces=False)
+                                     progress=False, start="given", rtol=rtol,
+                                     atol=RUN_TOLERANCES["atol"])), forces=False)
     m = out.metrics
     return {"settled_class": out.class_name,
             "settling_h": m.settling_time / 3600 if m is not None else math.nan,

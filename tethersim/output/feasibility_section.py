@@ -50,7 +50,19 @@ def section_feasibility(page: Page, periods: float, workers=None, sat_name: str 
     rows = run_feasibility(spec, store, workers=workers, log=lambda *a: None, progress=progress)
     png = plot_feasibility(rows, page.out / "img" / "feasibility.png",
                            title=f"{sat.name}: does the design work in a real orbit?")
-    body = [_table(
+    body = [atlas_table(rows)]
+    body.append(page.img(png, "When the free orbit loses its balloon (solid) and re-enters "
+                              "(dotted), band: solar min to max air; settling time of the held "
+                              "circular orbit (dashed); markers coloured by verdict (diamond: "
+                              "sensitive to the integrator tolerance)."))
+    body.append(f"<p class='note'>{html.escape(_note(spec))}</p>")
+    page.add("Does the thesis's design work in a real orbit?", "\n".join(body))
+    return rows
+
+
+def atlas_table(rows, caption: str = "") -> str:
+    """The atlas's rows as the report's table (one per start altitude)."""
+    return _table(
         ["start altitude [km]", "balloon lost [h]", "re-entry [h]", "free run ended",
          "settling [h]",
          "θ_ss nominal / min / mean / max [rad]", "drag make-up [m/s/day]", "feasibility verdict"],
@@ -59,14 +71,7 @@ def section_feasibility(page: Page, periods: float, workers=None, sat_name: str 
           f"{r['free_end']} at {r['end_altitude_km']:.0f} km", _h(r["settling_h"]),
           " / ".join(f"{r[k]:+.3f}" for k in ("theta_ss_rad", "theta_ss_min_rad",
                                                "theta_ss_mean_rad", "theta_ss_max_rad")),
-          f"{r['drag_makeup_m_s_day']:.3g}", r["verdict"]] for r in rows])]
-    body.append(page.img(png, "When the free orbit loses its balloon (solid) and re-enters "
-                              "(dotted), band: solar min to max air; settling time of the held "
-                              "circular orbit (dashed); markers coloured by verdict (diamond: "
-                              "sensitive to the integrator tolerance)."))
-    body.append(f"<p class='note'>{html.escape(_note(spec))}</p>")
-    page.add("Does the thesis's design work in a real orbit?", "\n".join(body))
-    return rows
+          f"{r['drag_makeup_m_s_day']:.3g}", r["verdict"]] for r in rows], caption=caption)
 
 
 def _note(spec) -> str:

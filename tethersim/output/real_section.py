@@ -6,7 +6,8 @@ its move with the air density and its slowest decay on the thesis's tethers and 
 equilibrium); then a run of the stretched lines from rest at the nominal-air
 equilibrium into doubled air (the solar cycle's step in drag), its tensions against
 the breaking load plotted; and the end of the stretched lines' deployment
-(:mod:`tethersim.experiments.deployment`): a braked arrival and a free release.
+(:mod:`tethersim.experiments.deployment`): a braked arrival and a free release; and the
+feasibility atlas of the stretched lines (:mod:`tethersim.experiments.feasibility`).
 """
 from __future__ import annotations
 
@@ -19,6 +20,8 @@ from tethersim.output.page import table as _table
 BAND = 0.05  # rad: the thesis's pitch trim band (p. 5-18)
 STEP_DENSITY = 2.0  # x nominal air: the run's step in drag
 ARRIVAL = 0.1  # m/s: the braked arrival of the deployment table (docs/real-tethers.md)
+ATLAS_KM = (200.0, 300.0, 400.0)  # the real-line atlas's start altitudes (docs/real-tethers.md)
+ATLAS_RTOL = 1e-6  # its class tolerance, checked at rtol / 100 (the atlas's own check)
 
 
 def real_numbers(sat, periods: float) -> dict:
@@ -38,7 +41,8 @@ def real_numbers(sat, periods: float) -> dict:
         ``run``: the density-step run of the stretched lines; ``loads``: its
         :class:`~tethersim.analysis.tethers.TetherLoads`; ``deploy``: {label:
         :class:`~tethersim.experiments.deployment.Deployment` without its run} for a
-        braked arrival and a free release of the stretched lines (one orbit each).
+        braked arrival and a free release of the stretched lines (one orbit each);
+        :func:`section_real` adds ``atlas``, the real-line atlas's rows.
     """
     from dataclasses import replace
 
@@ -66,10 +70,13 @@ def real_numbers(sat, periods: float) -> dict:
             "deploy": {k: replace(deploy(s), result=None) for k, s in starts.items()}}
 
 
-def section_real(page: Page, periods: float, sat_name: str = "satI") -> dict:
-    """Add the section (module docstring) to ``page``; return :func:`real_numbers`."""
+def section_real(page: Page, periods: float, sat_name: str = "satI", workers=None,
+                 progress: bool | None = None) -> dict:
+    """Add the section (module docstring) to ``page``; return :func:`real_numbers`.
+    ``workers``, ``progress``: the real-line atlas's threads and progress bar."""
     from tethersim.experiments.real_tethers import single_line_reach
     from tethersim.model.presets import load_preset
+    from tethersim.output.feasibility_section import atlas_table
     from tethersim.output.plots.run import plot_tensions
 
     sat = load_preset(sat_name)
@@ -109,6 +116,13 @@ def section_real(page: Page, periods: float, sat_name: str = "satI") -> dict:
                 "scheme sampled every 2 ms: the lines catch the balloon within centimetres, "
                 "and each catch's impulse turns the boom (docs/real-tethers.md, "
                 "\"Deployment\"; tethersim deploy)"))
+    nums["atlas"] = _real_atlas(page, periods, sat, workers, progress)
+    body.append(atlas_table(nums["atlas"], caption=(
+        f"The feasibility atlas on the stretched lines (Radau IIA at rtol {ATLAS_RTOL:g}, "
+        f"checked at rtol / 100; every run starts at its equilibrium, so the settling time "
+        f"is zero by construction): a real line does not stretch, so the balloon is not "
+        f"lost as the air thickens (docs/real-tethers.md, \"The feasibility atlas on real "
+        f"lines\")")))
     reach = single_line_reach(sat)
     body.append(f"<p>One line instead of two: held at the COM it exerts no torque, so the "
                 f"boom trims upright but the balloon neither holds nor damps its pitch; held "
@@ -118,6 +132,18 @@ def section_real(page: Page, periods: float, sat_name: str = "satI") -> dict:
     body.append(f"<p class='note'>{html.escape(_note())}</p>")
     page.add("And on real tethers?", "\n".join(body))
     return nums
+
+
+def _real_atlas(page: Page, periods: float, sat, workers, progress) -> list:
+    """The feasibility atlas's rows of the stretched lines at :data:`ATLAS_KM` (into
+    OUT/feasibility-real)."""
+    from tethersim.experiments.feasibility import FeasibilitySpec, run_feasibility
+    from tethersim.experiments.real_tethers import REAL_MODEL, STRETCHED_LENGTHS, real_lines
+
+    spec = FeasibilitySpec(real_lines(sat, STRETCHED_LENGTHS), ATLAS_KM, periods=periods,
+                           model=REAL_MODEL, method="implicit", rtol=ATLAS_RTOL)
+    return run_feasibility(spec, page.out / "feasibility-real", workers=workers,
+                           log=lambda *a: None, progress=progress)
 
 
 def _note() -> str:

@@ -9,8 +9,8 @@ table that sets each surviving statement of the thesis (docs/sources.md, "The th
 beside what this project computes; whether the design works in a real orbit
 (balloon lost and re-entry of the free orbit, settling, trim across the solar cycle:
 docs/feasibility.md); the same satellite on real (Dyneema) lines: trim, its move with
-the air, decay, the tensions of a run into doubled air and the catch at the end of
-a deployment (docs/real-tethers.md);
+the air, decay, the tensions of a run into doubled air, the catch at the end of
+a deployment and the feasibility atlas (docs/real-tethers.md);
 and whether the balloon makes the satellite resist rolling (the 3-D models:
 linear roll and yaw modes against the boom alone, two disturbed runs;
 docs/roll.md).
@@ -257,7 +257,8 @@ def build_report(out, grid: int = 41, periods: float = 50.0, workers=None,
              ("feasibility in a real orbit", lambda: section_feasibility(page, periods, workers,
                                                                           progress=progress))]
     if real:
-        steps.append(("real tethers", lambda: section_real(page, periods)))
+        steps.append(("real tethers", lambda: section_real(page, periods, workers=workers,
+                                                           progress=progress)))
     if roll:
         steps.append(("roll and yaw (3-D)", lambda: section_roll(page, periods)))
     maps = []

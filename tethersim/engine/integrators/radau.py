@@ -30,6 +30,7 @@ from tethersim.engine.integrators.radau_step import (
     MAX_FACTOR,
     MIN_FACTOR,
     NEWTON_MAXITER,
+    NEWTON_TOL,
     C,
     E,
     _dense,
@@ -101,7 +102,7 @@ def _radau_loop(model, air, t0, t_end, y, h, p, pw, ev, rtol, atol, locate, out_
         counters[0] += 1
     if not math.isfinite(h):
         return t, h, i_out, STATUS_NONFINITE, -1
-    newton_tol = max(10 * EPS / rtol, min(0.03, rtol ** 0.5))
+    newton_tol = max(10 * EPS / rtol, NEWTON_TOL)
     h_abs = h
     lu_h = -1.0  # the step the LU factors are for (-1: none)
     steps = 0

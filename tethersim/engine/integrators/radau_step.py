@@ -57,6 +57,13 @@ P = np.array([[13 / 3 + 7 * S6 / 3, -23 / 3 - 22 * S6 / 3, 10 / 3 + 5 * S6],
 ORDER = 5
 ERROR_ESTIMATOR_ORDER = 3
 NEWTON_MAXITER = 6
+# Newton stops when its remaining error is estimated below NEWTON_TOL of the error
+# scale (Hairer & Wanner IV.8, kappa; RADAU5's fnewt is at most 0.03).  scipy's
+# min(0.03, rtol**0.5) asks 1e-3 to 1e-4 of it at rtol 1e-6 to 1e-8: below the
+# rounding of a real line's force (EA/l0 x ulp(λ) ~ 1e-11 N), which the stages of a
+# long step pick up, so Newton stalled and the steps shrank to a tenth of a second
+# (docs/tethers.md, "The implicit scheme's tolerances")
+NEWTON_TOL = 0.03
 MIN_FACTOR = 0.2
 MAX_FACTOR = 10.0
 
