@@ -88,6 +88,24 @@ def test_atlas_runs_resumes_and_writes_the_csv(tmp_path, capsys):
     assert "holds a feasibility atlas of other settings" in err and "\n" not in err
 
 
+def test_rows_do_not_depend_on_the_threads_that_run_a_points_tasks(tmp_path):
+    """run_feasibility puts every point's runs (verdict runs at two tolerances, the solar
+    cases' free orbits: point_tasks) in one pool; one thread or two, the rows are the
+    same bits and the store holds them in point order."""
+    import json
+
+    import tethersim as ts
+    from tethersim.experiments.feasibility import FeasibilitySpec, run_feasibility
+    spec = FeasibilitySpec(ts.load_preset("satI"), (200.0, 300.0), periods=2.0,
+                           max_lifetime_h=3.0)
+    rows = {w: run_feasibility(spec, tmp_path / f"w{w}", workers=w, log=lambda *a: None,
+                               progress=False) for w in (1, 2)}
+    assert json.dumps(rows[1], sort_keys=True) == json.dumps(rows[2], sort_keys=True)
+    stored = [json.loads(line)["altitude_km"]
+              for line in (tmp_path / "w2" / "points.jsonl").read_text().splitlines()]
+    assert stored == [200.0, 300.0]
+
+
 def _number(text: str):
     if text in ("true", "false"):
         return text == "true"

@@ -31,7 +31,9 @@ Why not the sweep store: a point here is up to eighteen runs of four kinds (free
 released, nominal, scaled; two tolerances), not one run of one kind, and its row
 mixes their results.  A small resumable store of its own (one JSON line per finished point, a lock as
 the sweep stores take, the spec beside it) keeps finished points across an
-interruption; points run on threads (the compiled loops release the GIL).
+interruption; every point's runs (its verdict runs at the two tolerances, its solar
+cases' free orbits: point_tasks) go to one pool of threads (the compiled loops release
+the GIL), so a long point's runs spread over the threads too.
 """
 from __future__ import annotations
 
@@ -40,6 +42,7 @@ import math
 import os
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass
+from functools import partial
 from pathlib import Path
 
 from tethersim.analysis.feasibility import (
@@ -283,10 +286,20 @@ def _hours(t_s: float, cap_s: float) -> float:
     return min(t_s, cap_s) / 3600
 
 
-def run_point(spec: FeasibilitySpec, h_km: float, a3: float) -> dict:
-    """Every run of one point and its row (keys name their units)."""
-    main = _decide(spec, h_km, a3, spec.rtol)
-    check = _decide(spec, h_km, a3, spec.check_rtol)
+def point_tasks(spec: FeasibilitySpec, h_km: float, a3: float) -> dict:
+    """The independent runs of one point, {name: callable}: the verdict runs at the two
+    tolerances and each solar case's free orbit; :func:`point_row` joins their results.
+    run_feasibility runs every point's tasks in one pool, so a point's runs spread over
+    the threads as the points do."""
+    return {"main": partial(_decide, spec, h_km, a3, spec.rtol),
+            "check": partial(_decide, spec, h_km, a3, spec.check_rtol),
+            **{c: partial(free_ends, spec, spec.free(h_km, a3, c), spec.rtol)
+               for c in spec.solar}}
+
+
+def point_row(spec: FeasibilitySpec, h_km: float, a3: float, done: dict) -> dict:
+    """The row of one point (keys name their units) from its tasks' results ``done``."""
+    main, check = done["main"], done["check"]
     ends, nominal, cap = main["ends"], main["nominal"], spec.max_lifetime_h * 3600
     horizon = ends["life"] if math.isfinite(ends["life"]) else cap
     row = {"altitude_km": h_km, "A3_m2": a3,
@@ -301,7 +314,7 @@ def run_point(spec: FeasibilitySpec, h_km: float, a3: float) -> dict:
         row[f"scale_{c}"] = k
         row[f"theta_ss_{c}_rad"] = _theta_ss(main["trims"][c])
         row[f"class_{c}"] = main["trims"][c].class_name
-        e = free_ends(spec, spec.free(h_km, a3, c), spec.rtol)
+        e = done[c]
         row[f"balloon_lost_{c}_h"] = e["lost"] / 3600
         row[f"reentry_{c}_h"] = _hours(e["reentry"], cap)
         row[f"reentry_{c}_capped"] = e["reentry"] == math.inf
@@ -361,7 +374,12 @@ def run_feasibility(spec: FeasibilitySpec, out, workers: int | None = None,
                    desc="feasibility", unit="point", disable=progress is False,
                    delay=0.0 if progress else 1.0, leave=False)
         with ThreadPoolExecutor(max_workers=workers or os.cpu_count() or 1) as pool, bar:
-            for row in pool.map(lambda p: run_point(spec, *p), todo):
+            # every point's runs in one queue, a point's in order: the threads stay busy
+            # to the end, and the points finish (and are stored) about in order
+            futures = [{k: pool.submit(task) for k, task in point_tasks(spec, *p).items()}
+                       for p in todo]
+            for p, fs in zip(todo, futures):
+                row = point_row(spec, *p, {k: f.result() for k, f in fs.items()})
                 bar.update(1)
                 store.put(row)
                 done[_key(row)] = row
