@@ -211,12 +211,14 @@ FIGURES = [
 ]
 QUANTITIES.update(SPREAD)
 _S = (H, _T, "| 1 | ") + (" | ",) * ROW.index("settling_h")
-FIGURES += [Figure(D, _S, "deploy_1_settling_lo", slow=True),
-            Figure(D, (*_S, "–"), "deploy_1_settling_hi", slow=True),
-            Figure(D, (H, "0.1 m/s arrival's excursion goes from "), "deploy_spread_lo", slow=True),
-            Figure(D, (H, "0.1 m/s arrival's excursion goes from ", " to "), "deploy_spread_hi", slow=True),
-            Figure(D, (H, "at 1 m/s from "), "deploy_1_settling_lo", slow=True),
-            Figure(D, (H, "at 1 m/s from ", " to "), "deploy_1_settling_hi", slow=True)]
+# each end of a spread moves with the arithmetic as the excursions do (another CPU's last
+# bits): held to the same 30 %
+_E = "0.1 m/s arrival's excursion goes from "
+FIGURES += [Figure(D, at, key, slow=True, rtol=0.3) for at, key in (
+    (_S, "deploy_1_settling_lo"), ((*_S, "–"), "deploy_1_settling_hi"),
+    ((H, _E), "deploy_spread_lo"), ((H, _E, " to "), "deploy_spread_hi"),
+    ((H, "at 1 m/s from "), "deploy_1_settling_lo"),
+    ((H, "at 1 m/s from ", " to "), "deploy_1_settling_hi"))]
 for _v in SPEEDS:
     for _j, _key in enumerate(ROW):
         if _key in ("excursion", "settling_h") and _v == SPEEDS[-1]:

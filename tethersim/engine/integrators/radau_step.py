@@ -62,7 +62,7 @@ NEWTON_MAXITER = 6
 # min(0.03, rtol**0.5) asks 1e-3 to 1e-4 of it at rtol 1e-6 to 1e-8: below the
 # rounding of a real line's force (EA/l0 x ulp(λ) ~ 1e-11 N), which the stages of a
 # long step pick up, so Newton stalled and the steps shrank to a tenth of a second
-# (docs/tethers.md, "The implicit scheme's tolerances")
+# (docs/tethers.md, "The implicit scheme's Newton tolerance")
 NEWTON_TOL = 0.03
 MIN_FACTOR = 0.2
 MAX_FACTOR = 10.0
