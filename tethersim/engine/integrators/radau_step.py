@@ -18,7 +18,9 @@ Sec. IV.8): the stage system is solved in the eigenbasis of the Butcher matrix
 (one real and one complex n x n system), the error is estimated by the embedded
 third-order formula filtered through the real matrix, the step size follows the
 predictive (Gustafsson) controller, the Jacobian is refreshed only when Newton
-converges slowly, and the dense output is the collocation cubic.  Ported to a
+converges slowly, and the dense output is the collocation cubic.  One departure:
+Newton stops at NEWTON_TOL (0.03) of the error scale at every rtol, where scipy asks
+min(0.03, √rtol) (below).  Ported to a
 compiled loop: the complex system is factored in complex arithmetic (as scipy and
 RADAU5 do; its real 2n x 2n form costs ~1.7x more per solve for n = 6), and the LU
 factors are kept across the Newton iterations and steps, as scipy keeps them.
