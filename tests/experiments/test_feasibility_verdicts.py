@@ -94,7 +94,7 @@ def test_verdicts_that_differ_between_tolerances_are_sensitive():
     assert SENSITIVE in VERDICTS and UNDECIDED in VERDICTS
 
 
-def test_run_point_reports_a_flip_between_tolerances_as_sensitive(monkeypatch):
+def test_a_point_row_reports_a_flip_between_tolerances_as_sensitive(monkeypatch):
     from tethersim.experiments import feasibility as fe
     from tethersim.model.presets import load_preset
     from tethersim.output.plots.feasibility import _marker
@@ -113,7 +113,9 @@ def test_run_point_reports_a_flip_between_tolerances_as_sensitive(monkeypatch):
 
     monkeypatch.setattr(fe, "_decide", fake)
     monkeypatch.setattr(fe, "free_ends", lambda *a: {"lost": math.nan, "reentry": math.inf})
-    row = fe.run_point(spec, 300.0, spec.satellite.A3)
+    a3 = spec.satellite.A3
+    row = fe.point_row(spec, 300.0, a3,
+                       {k: task() for k, task in fe.point_tasks(spec, 300.0, a3).items()})
     assert seen == [spec.rtol, spec.rtol / fe.CHECK_FACTOR]
     assert row["verdict"] == SENSITIVE
     assert (row["verdict_rtol"], row["verdict_check_rtol"]) == (UNSTABLE, TRIM_LOST)
@@ -181,7 +183,7 @@ def test_the_feasibility_cap_counts_runs_per_point(monkeypatch):
         FeasibilitySpec(sat, (200.0, 210.0), areas=(10.0, 12.0))
 
 
-def test_a_point_stopped_by_ctrl_c_is_not_recorded(monkeypatch):
+def test_a_point_stopped_by_ctrl_c_is_not_recorded(monkeypatch, tmp_path):
     from dataclasses import replace
 
     from tethersim.experiments import feasibility as fe
@@ -193,4 +195,6 @@ def test_a_point_stopped_by_ctrl_c_is_not_recorded(monkeypatch):
     monkeypatch.setattr(fe, "simulate",
                         lambda *a, **k: replace(real(*a, **k), status="interrupted"))
     with pytest.raises(KeyboardInterrupt):
-        fe.run_point(spec, 200.0, spec.satellite.A3)
+        fe.run_feasibility(spec, tmp_path, workers=2, log=lambda *a: None, progress=False)
+    points = tmp_path / fe.POINTS_FILE
+    assert not points.exists() or points.read_text() == ""

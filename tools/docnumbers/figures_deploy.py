@@ -52,7 +52,7 @@ def bridle():
 
 def _summary(dep) -> dict:
     keep = ("first_catch", "catch_speed", "catch_duration", "first_peak", "spin", "peak",
-            "safety_factor", "catches", "excursion", "turned_over", "inverted", "clearance")
+            "safety_factor", "push", "catches", "excursion", "turned_over", "inverted", "clearance")
     return {k: getattr(dep, k) for k in keep}
 
 
@@ -210,6 +210,17 @@ FIGURES = [
     Figure(D, (H, "softens the catch by "), "deploy_closed_form_pc", slow=True),
 ]
 QUANTITIES.update(SPREAD)
+_PUSHED = lambda: max(SPEEDS, key=lambda v: arrived(v)["push"])  # noqa: E731
+QUANTITIES.update({"deploy_push": lambda: arrived(_PUSHED())["push"],
+                   "deploy_push_speed": _PUSHED,
+                   "deploy_push_pc": lambda: 100 * arrived(_PUSHED())["push"]
+                   / arrived(_PUSHED())["peak"]})
+FIGURES += [Figure("docs/real-tethers.md", ("## What this does not cover", "it reaches "),
+                   "deploy_push", slow=True),
+            Figure("docs/real-tethers.md", ("## What this does not cover", "N (the "),
+                   "deploy_push_speed", slow=True),
+            Figure("docs/real-tethers.md", ("## What this does not cover", "arrival), "),
+                   "deploy_push_pc", slow=True)]
 _S = (H, _T, "| 1 | ") + (" | ",) * ROW.index("settling_h")
 # each end of a spread moves with the arithmetic as the excursions do (another CPU's last
 # bits): held to the same 30 %
