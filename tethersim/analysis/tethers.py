@@ -159,6 +159,15 @@ def loads_summary(res: SimResult) -> dict:
     return d
 
 
+def line_vectors(sat, y) -> tuple:
+    """Each line's vector [m] from its end to the balloon, (n, 2) for tether 1 (the
+    tip-mass at +b along the boom, (sin θ, cos θ)) and tether 2 (the bus at −a), from
+    planar states ``y`` (δx, δy, θ, ...; Eqs 3.10-3.11)."""
+    s, c = np.sin(y[:, 2]), np.cos(y[:, 2])
+    return tuple(np.stack([y[:, 0] - arm * s, y[:, 1] - arm * c], axis=1)
+                 for arm in (sat.b, -sat.a))
+
+
 def line_push(res: SimResult) -> float:
     """The largest force [N] with which a taut line pushes the balloon in a planar run,
     0 if none does.
@@ -183,8 +192,8 @@ def line_push(res: SimResult) -> float:
     sat, y = res.satellite, res.model_states
     s, c, w = np.sin(y[:, 2]), np.cos(y[:, 2]), y[:, 5]
     push = 0.0
-    for arm, l0, E, damp in ((sat.b, sat.l10, sat.E1, sat.c1), (-sat.a, sat.l20, sat.E2, sat.c2)):
-        d = np.stack([y[:, 0] - arm * s, y[:, 1] - arm * c], axis=1)
+    for arm, d, l0, E, damp in zip((sat.b, -sat.a), line_vectors(sat, y), (sat.l10, sat.l20),
+                                   (sat.E1, sat.E2), (sat.c1, sat.c2)):
         lam = np.linalg.norm(d, axis=1)
         rate = (d[:, 0] * (y[:, 3] - arm * c * w) + d[:, 1] * (y[:, 4] + arm * s * w)) / lam
         force = E * (lam / l0 - 1) + damp * rate

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from tethersim.analysis.tethers import line_push
+from tethersim.analysis.tethers import line_push, line_vectors
 from tethersim.engine.result import SimResult
 from tethersim.engine.simulate import simulate
 from tethersim.engine.start import equilibrium_satellite, upright_or_refused
@@ -296,10 +296,8 @@ def pull_along_trim(result: SimResult, start: Satellite) -> np.ndarray:
     y = result.model_states
     tension = result.tether_tensions()
     u = np.array(start.initial[:2]) / math.hypot(*start.initial[:2])
-    s, c = np.sin(y[:, 2]), np.cos(y[:, 2])
     pull = np.zeros(len(y))
-    for j, (px, py) in enumerate(((start.b * s, start.b * c), (-start.a * s, -start.a * c))):
-        d = np.stack([y[:, 0] - px, y[:, 1] - py], axis=1)
+    for j, d in enumerate(line_vectors(start, y)):
         pull += tension[:, j] * ((d / np.linalg.norm(d, axis=1)[:, None]) @ u)
     return pull
 
