@@ -11,7 +11,7 @@ import concurrent.futures as cf
 import math
 import os
 import time
-from contextlib import contextmanager, nullcontext
+from contextlib import contextmanager, nullcontext, suppress
 
 from tqdm.auto import tqdm
 
@@ -65,7 +65,8 @@ def executor(workers: int | None = None, scheduler: str | None = None, dask_work
             yield client.get_executor(pure=False), 4, dask_workers or 2
         finally:
             if cluster is not None:
-                client.run(_quiet_heartbeat_race)
+                with suppress(Exception):  # a log filter: a worker already gone needs none
+                    client.run(_quiet_heartbeat_race)
             client.close()
             if cluster is not None:
                 cluster.close()
