@@ -97,7 +97,7 @@ def heyoka_integrator(sat, tol: float, batch: int | None = None, model: str = "d
     if batch is None:
         def flip(j):
             def cb(ta, d_sgn):
-                ta.pars[j] = 1.0 if d_sgn == hy.event_direction.positive else 0.0
+                ta.pars[j] = 1.0 if int(d_sgn) > 0 else 0.0
                 return True
             return cb
         events = [hy.t_event(g[j], callback=flip(j)) for j in range(2)]
@@ -105,7 +105,7 @@ def heyoka_integrator(sat, tol: float, batch: int | None = None, model: str = "d
 
     def flip_lane(j):
         def cb(ta, d_sgn, lane):
-            ta.pars[j, lane] = 1.0 if d_sgn == hy.event_direction.positive else 0.0
+            ta.pars[j, lane] = 1.0 if int(d_sgn) > 0 else 0.0
             return True
         return cb
     events = [hy.t_event_batch(g[j], callback=flip_lane(j)) for j in range(2)]
