@@ -8,16 +8,16 @@ for nominal air and flying at ×0.5 density: the step in drag sets the lines bou
 (their axial mode near 77 rad/s) and the pitch moving to its new trim.
 
 tethersim: ``simulate(method="implicit")`` (Radau IIA) at several rtol, atol 1e-10 (a
-real line's floor, docs/tethers.md).  C: the DOP853 port of the same generated model
-(bench/cref.py, printed from generated/objective_damper.py by bench/pyc.py; switches
-located) at several rtol, on the same output grid; heyoka.py's Taylor integrator when it
-is installed.  The reference is C DOP853 at its tightest rtol (heyoka at tol 1e-12 agrees
-with it to ~5e-12; C at 1e-12 takes 14 s an orbit).  Error of a run: its final state
-against the reference, max_i |Δy_i| / max(1, |y_i|) (bench/peers.py).  The ratio is the
-CPU time of C's cheapest run at least as accurate as tethersim's at rtol 1e-8 (the
-tolerance of docs/real-tethers.md) over tethersim's time there (C's step is bound by
-stability on the lines' axial mode, not by its error control: a looser rtol is no
-cheaper).  And tethersim's time over the
+real line's floor, docs/tethers.md), and once below it (atol 1e-12, :data:`TS_RUNS`). C:
+the DOP853 port of the same generated model (bench/cref.py, printed from
+generated/objective_damper.py by bench/pyc.py; switches located) at several rtol, on the
+same output grid; heyoka.py's Taylor integrator when it is installed. The reference is C
+DOP853 at its tightest rtol (heyoka at tol 1e-12 agrees with it to ~5e-12; C at 1e-12
+takes 14 s an orbit). Error of a run: its final state against the reference, max_i
+|Δy_i| / max(1, |y_i|) (bench/peers.py). The ratio is the CPU time of C's cheapest run
+at least as accurate as tethersim's at rtol 1e-8 (the tolerance of docs/real-tethers.md)
+over tethersim's time there (C's step is bound by stability on the lines' axial mode,
+not by its error control: a looser rtol is no cheaper). And tethersim's time over the
 thesis-tether run of the same length (``simulate(satI)``, defaults).
 
 Measured on 1 orbit (AMD EPYC, loaded): C DOP853 takes ~80,000 steps an orbit at rtol
