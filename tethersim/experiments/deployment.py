@@ -256,9 +256,8 @@ def deploy(start: Satellite, periods: float = 1.0, sample: float = SAMPLE,
                              atol=RUN_TOLERANCES["atol"],
                              steps=samples(periods, start.period, sample)))
     if res.status not in ("ok", "tether-broke"):
-        nan = math.nan
-        return Deployment(res, res.status, nan, nan, nan, nan, nan, nan, nan, nan, 0, nan, False,
-                          False, nan)
+        return Deployment(result=res, **(dict.fromkeys(RECORD, math.nan) | {
+            "status": res.status, "catches": 0, "turned_over": False, "inverted": False}))
     y = res.model_states
     tension = res.tether_tensions()
     pull = tension.max(axis=1)

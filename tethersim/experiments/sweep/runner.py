@@ -78,24 +78,23 @@ def executor(workers: int | None = None, scheduler: str | None = None, dask_work
             yield ex, 1, n
 
 
-class _HeartbeatRace:
-    """Drops a worker's "Failed to communicate with scheduler during heartbeat" record.
+def _not_heartbeat_race(record) -> bool:
+    """A logging filter: drops a worker's "Failed to communicate with scheduler during
+    heartbeat" record.
 
     Closing a local cluster races a worker's periodic heartbeat against the scheduler
     closing its comms (dask/distributed#7105, open): the worker logs the closed stream as
     an ERROR with two tracebacks after every result is in.  Installed only as the
     cluster closes, so a heartbeat failure during a sweep is still printed.
     """
-
-    def filter(self, record) -> bool:
-        return "during heartbeat" not in record.getMessage()
+    return "during heartbeat" not in record.getMessage()
 
 
 def _quiet_heartbeat_race() -> None:
     """Run on each worker of a closing local cluster (Client.run)."""
     import logging
 
-    logging.getLogger("distributed.worker").addFilter(_HeartbeatRace())
+    logging.getLogger("distributed.worker").addFilter(_not_heartbeat_race)
 
 
 def block_size(periods: float, points: int, workers: int, minimum: int = 1,
