@@ -165,6 +165,7 @@ def _heyoka(rep, q, log, sat, ref, target, ts_t, periods) -> None:
     from tethersim.model.inputs import initial_model_state
     y0 = initial_model_state(sat, MODEL)
     grid = np.linspace(0.0, periods * sat.period, int(SAMPLES * periods) + 1)
+    taut = _taut(sat, y0, MODEL)
     err, times = {}, {}
     for tol in HY_TOLS:
         ta = heyoka_integrator(sat, tol, model=MODEL)[0]
@@ -172,7 +173,7 @@ def _heyoka(rep, q, log, sat, ref, target, ts_t, periods) -> None:
         for _ in range(q.get("stiff_heyoka_repeats", 1)):
             ta.time = 0.0
             ta.state[:] = y0
-            ta.pars[:] = _taut(sat, y0, MODEL)
+            ta.pars[:] = taut
             t0 = cpu_clock()
             out = ta.propagate_grid(grid)
             best = min(best, cpu_clock() - t0)
