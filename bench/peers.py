@@ -73,6 +73,26 @@ def symbolic(model: str = "derived"):
     return qdd, gaps, tau, P
 
 
+def from_sympy(expr, smap):
+    """``heyoka.from_sympy`` of ``expr``, with sympy's Max (the Kelvin-Voigt clamp,
+    derive/forces.py ``damper_pull``), which it does not take, as heyoka's relu:
+    max(a, b) = b + relu(a − b)."""
+    import heyoka as hy
+    import sympy as sp
+
+    maxes = sorted(expr.atoms(sp.Max), key=sp.default_sort_key)
+    if not maxes:
+        return hy.from_sympy(expr, s_dict=smap)
+    marks = sp.symbols(f"max0:{len(maxes)}")
+    outer = hy.from_sympy(expr.xreplace(dict(zip(maxes, marks))),
+                          s_dict={**smap, **{m: hy.expression(m.name) for m in marks}})
+    values = {}
+    for m, e in zip(marks, maxes):
+        a, b = (from_sympy(arg, smap) for arg in e.args)  # two arguments: damper, −spring
+        values[m.name] = b + hy.relu(a - b)
+    return hy.subs(outer, values)
+
+
 def heyoka_integrator(sat, tol: float, batch: int | None = None, model: str = "derived"):
     """heyoka's integrator of ``sat`` (E1, E2 as parameters 2, 3 for batches) at ``tol``."""
     import heyoka as hy
@@ -90,8 +110,8 @@ def heyoka_integrator(sat, tol: float, batch: int | None = None, model: str = "d
     smap.update({tau[0]: hy.par[0], tau[1]: hy.par[1]})
     if batch:
         smap.update({P["E1"]: hy.par[2], P["E2"]: hy.par[3]})
-    rhs = [hy.from_sympy(e.subs(num), s_dict=smap) for e in qdd]
-    g = [hy.from_sympy(e.subs(num), s_dict=smap) for e in gaps]
+    rhs = [from_sympy(e.subs(num), smap) for e in qdd]
+    g = [from_sympy(e.subs(num), smap) for e in gaps]
     eqs = [(xs[i], xs[i + 3]) for i in range(3)] + [(xs[i + 3], rhs[i]) for i in range(3)]
     y0 = initial_model_state(sat, model)
     if batch is None:

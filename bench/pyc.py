@@ -76,7 +76,7 @@ def _powers(expr: str) -> str:
 
 def expression(expr: str) -> str:
     """One Python expression of a generated kernel as C."""
-    expr = expr.replace("math.", "")
+    expr = re.sub(r"\bmax\(", "fmax(", expr.replace("math.", ""))  # the line's clamp
     if re.search(r"[^\w\s+\-*/().,<>=\[\]]", expr) or re.search(r"\b(and|or|not|if)\b", expr):
         raise ValueError(f"cannot print {expr!r} as C")
     return _INT.sub(r"\1.0", _powers(expr))

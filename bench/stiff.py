@@ -12,17 +12,19 @@ real line's floor, docs/tethers.md), and once below it (atol 1e-12, :data:`TS_RU
 the DOP853 port of the same generated model (bench/cref.py, printed from
 generated/objective_damper.py by bench/pyc.py; switches located) at several rtol, on the
 same output grid; heyoka.py's Taylor integrator when it is installed. The reference is C
-DOP853 at its tightest rtol (heyoka at tol 1e-12 agrees with it to ~5e-12; C at 1e-12
-takes 14 s an orbit). Error of a run: its final state against the reference, max_i
-|Δy_i| / max(1, |y_i|) (bench/peers.py). The ratio is the CPU time of C's cheapest run
-at least as accurate as tethersim's at rtol 1e-8 (the tolerance of docs/real-tethers.md)
-over tethersim's time there (C's step is bound by stability on the lines' axial mode,
-not by its error control: a looser rtol is no cheaper). And tethersim's time over the
-thesis-tether run of the same length (``simulate(satI)``, defaults).
+DOP853 at its tightest rtol (C at rtol 1e-8 agrees with it to ~6e-12, Radau at atol
+1e-12 to ~1e-11; heyoka at tol 1e-12 only to ~1e-10, its Taylor series of the clamp's
+relu blind to the kink inside a step; C at 1e-12 takes 14 s an orbit). Error of a run:
+its final state against the reference, max_i |Δy_i| / max(1, |y_i|) (bench/peers.py).
+The ratio is the CPU time of C's cheapest run at least as accurate as tethersim's at
+rtol 1e-8 (the tolerance of docs/real-tethers.md) over tethersim's time there (C's step
+is bound by stability on the lines' axial mode, not by its error control: a looser rtol
+is no cheaper). And tethersim's time over the thesis-tether run of the same length
+(``simulate(satI)``, defaults).
 
 Measured on 1 orbit (AMD EPYC, loaded): C DOP853 takes ~80,000 steps an orbit at rtol
-1e-6 to 1e-8; Radau ~27,000 steps in the first 0.1 orbit, while the lines bounce after
-the step in drag, then ~1,500 an orbit: the ratio grows with the run's length.
+1e-6 to 1e-8; Radau ~26,000 steps in the first 0.1 orbit, while the lines bounce after
+the step in drag, then ~1,400 an orbit: the ratio grows with the run's length.
 """
 from __future__ import annotations
 
@@ -113,9 +115,8 @@ def bench_stiff(rep, q, log, periods: float | None = None) -> None:
     fns.update({f"c {r:g}": c_run(r) for r in C_RTOLS})
     fns["thesis"] = thesis_run
     times = {k: min(v) for k, v in interleave(fns, repeats, warmup=0).items()}
-    # the reference: C DOP853 at its tightest rtol (heyoka's tightest agrees with it to
-    # ~5e-12 below; Radau at the default atol of a real line, 1e-10, comes no closer than
-    # ~5e-10 over 50 orbits, at atol 1e-12 to ~6e-12)
+    # the reference: C DOP853 at its tightest rtol (module docstring; Radau at the default
+    # atol of a real line, 1e-10, comes no closer than ~5e-10 over 50 orbits)
     tight = f"c {C_RTOLS[-1]:g}"
     ref = last[tight][0]
     err = {k: _error(y, ref) for k, (y, _) in last.items()}

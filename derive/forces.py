@@ -120,8 +120,20 @@ def damper_families(kin: Kinematics) -> tuple:
     return tuple(fams)
 
 
+def damper_pull(force, spring):
+    """A Kelvin-Voigt damper's force along taut tether j, max(c_j λ̇_j, −spring): clamped so
+    that spring plus damper never push (a line goes slack rather than push, the rule of
+    tether codes such as GTOSS). The clamp is a kink, not a switch: the line's force
+    reaches zero continuously, and the damper still only takes energy out, −D λ̇ <= 0
+    (when it holds, λ̇ < 0 and the stretch is positive), so the Jacobi integral's budget
+    keeps the damper's power as it is.
+    """
+    return sp.Max(force, -spring)
+
+
 def objective_damper_families(kin: Kinematics) -> tuple:
-    """Kelvin-Voigt damper: c_j λ̇_j τ_j on the balloon, acting along the tether.
+    """Kelvin-Voigt damper: c_j λ̇_j τ_j on the balloon, acting along the tether, clamped
+    at the spring's pull (:func:`damper_pull`).
 
     λ̇_j = −τ_j·(ṙ3 − ṙ_end) is the rate of stretch, the same in every frame,
     so a rigid rotation of the formation (λ̇ = 0) is not resisted.
@@ -130,7 +142,8 @@ def objective_damper_families(kin: Kinematics) -> tuple:
     for j, (c, end) in enumerate(((P["c1"], 0), (P["c2"], 1))):
         tau = _tether_unit(kin, j)
         rate = sp.expand(-tau.dot(relative_velocity(kin, end)))
-        F = c * rate * tau
+        spring = (P["E1"], P["E2"])[j] * (TETHER_LENGTHS[j] / TETHER_REST[j] - 1)
+        F = damper_pull(c * rate, spring) * tau
         Q = generalized_forces(kin, [(2, F), (end, -F)])
         fams.append(ForceFamily(f"damper{j + 1}", Q, j + 1, "variant (issue 5)",
                                 f"damping of tether {j + 1} along its stretch rate"))

@@ -50,6 +50,12 @@ class NumbaPrinter(PythonCodePrinter):
     def _print_cos(self, expr):
         return f"sincos({self._print(expr.args[0])})[1]"
 
+    def _print_Heaviside(self, expr):
+        # the derivative of a clamp, Max(a, b) (derive/forces.py damper_pull): sympy's
+        # H(0) = 1/2 splits the kink's derivative between the two sides
+        x = self._print(expr.args[0])
+        return f"(1.0 if {x} > 0.0 else 0.5 if {x} == 0.0 else 0.0)"
+
     def _print_InverseSqrtMinusOne(self, expr):
         return f"math.expm1(-0.5*math.log1p({self._print(expr.args[0])}))"
 

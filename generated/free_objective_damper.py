@@ -172,102 +172,51 @@ def rhs(t, y, p, dydt):
         t1_0 = 1/l10
         t1_1 = E1*delta_x
         t1_2 = 1/lambda1
-        t1_3 = E1*b
-        t1_4 = lambda1**(-2)
-        t1_5 = c1*t1_4
-        t1_6 = delta_y_dot*t1_5
-        t1_7 = delta_x*delta_y
-        t1_8 = delta_x**2
-        t1_9 = delta_x_dot*t1_5
-        t1_10 = b*sin_theta
-        t1_11 = t1_5*theta_dot
-        t1_12 = t1_10*t1_11
-        t1_13 = b**2
-        t1_14 = t1_13*t1_6
-        t1_15 = cos_theta*sin_theta
-        t1_16 = sin_theta**2
-        t1_17 = t1_13*t1_16
-        t1_18 = t1_13*t1_15
-        t1_19 = delta_x*t1_11
-        t1_20 = E1*delta_y*t1_0
-        t1_21 = t1_7*t1_9
-        t1_22 = delta_y**2
-        t1_23 = t1_22*t1_6
-        t1_24 = t1_18*t1_9
-        t1_25 = cos_theta**2
-        t1_26 = t1_14*t1_25
-        t1_27 = t1_13*t1_25
+        t1_3 = b*sin_theta
+        t1_4 = E1*t1_2
+        t1_5 = E1*t1_0
+        t1_6 = c1*t1_2
+        t1_7 = b*cos_theta
+        t1_8 = t1_6*t1_7
+        t1_9 = (
+                max(E1 - lambda1*t1_5, b*c1*delta_y*sin_theta*t1_2*theta_dot + c1*delta_x*
+                delta_x_dot*t1_2 + c1*delta_y*delta_y_dot*t1_2 - delta_x*t1_8*theta_dot - delta_x_dot*
+                t1_3*t1_6 - delta_y_dot*t1_8))
+        t1_10 = t1_2*t1_9
+        t1_11 = delta_y*t1_5
+        t1_12 = delta_y*t1_10
         Q_delta_x += (
-                E1*b*sin_theta*t1_0 + E1*delta_x*t1_2 + b*c1*cos_theta*delta_x*delta_y_dot*t1_4 +
-                b*c1*cos_theta*t1_4*t1_8*theta_dot + 2*b*c1*delta_x*delta_x_dot*sin_theta*t1_4 +
-                b*c1*delta_y*delta_y_dot*sin_theta*t1_4 + c1*delta_y*t1_13*t1_16*t1_4*theta_dot -
-                sin_theta*t1_2*t1_3 - t1_0*t1_1 - t1_12*t1_7 - t1_14*t1_15 - t1_17*t1_9 - t1_18*t1_19
-                - t1_6*t1_7 - t1_8*t1_9)
-        Q_delta_y += (
-                E1*b*cos_theta*t1_0 + E1*delta_y*t1_2 + b*c1*cos_theta*delta_x*delta_x_dot*t1_4 +
-                b*c1*cos_theta*delta_x*delta_y*t1_4*theta_dot + 2*b*c1*cos_theta*delta_y*
-                delta_y_dot*t1_4 + b*c1*delta_x_dot*delta_y*sin_theta*t1_4 + c1*cos_theta*delta_y*
-                sin_theta*t1_13*t1_4*theta_dot - cos_theta*t1_2*t1_3 - t1_12*t1_22 - t1_19*t1_27 -
-                t1_20 - t1_21 - t1_23 - t1_24 - t1_26)
+                E1*b*sin_theta*t1_0 + E1*delta_x*t1_2 + b*sin_theta*t1_2*t1_9 - delta_x*t1_10 -
+                t1_0*t1_1 - t1_3*t1_4)
+        Q_delta_y += E1*b*cos_theta*t1_0 + E1*delta_y*t1_2 + b*cos_theta*t1_2*t1_9 - t1_11 - t1_12 - t1_4*t1_7
         Q_theta += (
-                E1*b*cos_theta*delta_x*t1_0 + E1*b*delta_y*sin_theta*t1_2 + b*c1*cos_theta*
-                delta_x*delta_y*delta_y_dot*t1_4 + b*c1*cos_theta*delta_x_dot*t1_4*t1_8 - b*
-                cos_theta*t1_1*t1_2 + 2*c1*cos_theta*delta_x*delta_y*sin_theta*t1_13*t1_4*theta_dot
-                + c1*cos_theta*delta_y*delta_y_dot*sin_theta*t1_13*t1_4 + c1*delta_x_dot*delta_y*
-                t1_13*t1_16*t1_4 - delta_x*t1_24 - delta_x*t1_26 - t1_10*t1_20 - t1_10*t1_21 - t1_10*
-                t1_23 - t1_11*t1_17*t1_22 - t1_11*t1_27*t1_8)
+                E1*b*cos_theta*delta_x*t1_0 + E1*b*delta_y*sin_theta*t1_2 + b*cos_theta*delta_x*
+                t1_2*t1_9 - t1_1*t1_2*t1_7 - t1_11*t1_3 - t1_12*t1_3)
         Q_r += 0
         Q_nu += 0
     lambda2 = math.sqrt((-a*cos_theta - delta_y)**2 + (-a*sin_theta - delta_x)**2)
     if lambda2 > l20:  # tether 2 taut: spring2, damper2
         t2_0 = 1/l20
-        t2_1 = E2*delta_x*t2_0
-        t2_2 = 1/lambda2
-        t2_3 = E2*a
-        t2_4 = lambda2**(-2)
-        t2_5 = c2*t2_4
-        t2_6 = delta_y_dot*t2_5
-        t2_7 = delta_x*delta_y
-        t2_8 = t2_6*t2_7
-        t2_9 = delta_x**2
-        t2_10 = delta_x_dot*t2_5
-        t2_11 = t2_10*t2_9
-        t2_12 = a*cos_theta
+        t2_1 = E2*delta_x
+        t2_2 = t2_0*t2_1
+        t2_3 = 1/lambda2
+        t2_4 = E2*t2_0
+        t2_5 = a*sin_theta
+        t2_6 = c2*t2_3
+        t2_7 = delta_x_dot*t2_6
+        t2_8 = delta_y*t2_3
+        t2_9 = c2*t2_8
+        t2_10 = a*cos_theta
+        t2_11 = t2_10*t2_6
+        t2_12 = (
+                t2_3*max(E2 - lambda2*t2_4, delta_x*t2_11*theta_dot + delta_x*t2_7 + delta_y_dot*t2_11
+                + delta_y_dot*t2_9 + t2_5*t2_7 - t2_5*t2_9*theta_dot))
         t2_13 = delta_x*t2_12
-        t2_14 = a*sin_theta
-        t2_15 = delta_y*t2_14
-        t2_16 = t2_5*theta_dot
-        t2_17 = t2_16*t2_9
-        t2_18 = a**2
-        t2_19 = t2_18*t2_6
-        t2_20 = cos_theta*sin_theta
-        t2_21 = sin_theta**2
-        t2_22 = t2_18*t2_21
-        t2_23 = t2_18*t2_20
-        t2_24 = delta_x*t2_16
-        t2_25 = E2*delta_y
-        t2_26 = delta_y**2
-        t2_27 = t2_10*t2_23
-        t2_28 = cos_theta**2
-        t2_29 = t2_19*t2_28
-        t2_30 = t2_18*t2_28
-        Q_delta_x += (
-                E2*a*sin_theta*t2_2 + E2*delta_x*t2_2 + a*c2*delta_x*delta_y*sin_theta*t2_4*
-                theta_dot + c2*delta_y*t2_18*t2_21*t2_4*theta_dot - 2*delta_x*t2_10*t2_14 -
-                sin_theta*t2_0*t2_3 - t2_1 - t2_10*t2_22 - t2_11 - t2_12*t2_17 - t2_13*t2_6 - t2_15*
-                t2_6 - t2_19*t2_20 - t2_23*t2_24 - t2_8)
-        Q_delta_y += (
-                E2*a*cos_theta*t2_2 + E2*delta_y*t2_2 + a*c2*sin_theta*t2_26*t2_4*theta_dot + c2*
-                cos_theta*delta_y*sin_theta*t2_18*t2_4*theta_dot - cos_theta*t2_0*t2_3 - 2*delta_y*
-                t2_12*t2_6 - t2_0*t2_25 - t2_10*t2_13 - t2_10*t2_15 - t2_10*t2_7 - t2_12*t2_16*t2_7 -
-                t2_24*t2_30 - t2_26*t2_6 - t2_27 - t2_29)
-        Q_theta += (
-                E2*a*cos_theta*delta_x*t2_2 + E2*a*delta_y*sin_theta*t2_0 + a*c2*delta_x*
-                delta_x_dot*delta_y*sin_theta*t2_4 + a*c2*delta_y_dot*sin_theta*t2_26*t2_4 + 2*c2*
-                cos_theta*delta_x*delta_y*sin_theta*t2_18*t2_4*theta_dot + c2*cos_theta*delta_y*
-                delta_y_dot*sin_theta*t2_18*t2_4 + c2*delta_x_dot*delta_y*t2_18*t2_21*t2_4 - delta_x*
-                t2_27 - delta_x*t2_29 - t2_1*t2_12 - t2_11*t2_12 - t2_12*t2_8 - t2_14*t2_2*t2_25 -
-                t2_16*t2_22*t2_26 - t2_17*t2_30)
+        t2_14 = delta_y*t2_4
+        t2_15 = delta_y*t2_12
+        Q_delta_x += E2*a*sin_theta*t2_3 + E2*delta_x*t2_3 - t2_12*t2_5 - t2_13 - t2_2 - t2_4*t2_5
+        Q_delta_y += E2*a*cos_theta*t2_3 + E2*delta_y*t2_3 - t2_10*t2_12 - t2_10*t2_4 - t2_14 - t2_15
+        Q_theta += -E2*t2_5*t2_8 + t2_1*t2_10*t2_3 - t2_10*t2_13 - t2_10*t2_2 + t2_14*t2_5 + t2_15*t2_5
         Q_r += 0
         Q_nu += 0
     # M q'' = Q - f (Lagrange, Eq 3.26 with r, nu as coordinates)
@@ -576,90 +525,40 @@ def family_forces(y, p, out):
         out[4, 4] = 0
     # damper1: damping of tether 1 along its stretch rate (variant (issue 5))
     if lambda1 > l10:
-        f5_0 = lambda1**(-2)
+        f5_0 = 1/lambda1
         f5_1 = c1*f5_0
-        f5_2 = delta_y_dot*f5_1
-        f5_3 = delta_x*delta_y
-        f5_4 = delta_x**2
-        f5_5 = delta_x_dot*f5_1
-        f5_6 = f5_1*theta_dot
-        f5_7 = b*sin_theta
-        f5_8 = f5_6*f5_7
-        f5_9 = b**2
-        f5_10 = f5_2*f5_9
-        f5_11 = cos_theta*sin_theta
-        f5_12 = sin_theta**2
-        f5_13 = f5_12*f5_9
-        f5_14 = f5_11*f5_9
-        f5_15 = delta_x*f5_6
-        f5_16 = f5_3*f5_5
-        f5_17 = delta_y**2
-        f5_18 = f5_17*f5_2
-        f5_19 = f5_14*f5_5
-        f5_20 = cos_theta**2
-        f5_21 = f5_10*f5_20
-        f5_22 = f5_20*f5_9
-        out[5, 0] = (
-                b*c1*cos_theta*delta_x*delta_y_dot*f5_0 + b*c1*cos_theta*f5_0*f5_4*theta_dot + 2*
-                b*c1*delta_x*delta_x_dot*f5_0*sin_theta + b*c1*delta_y*delta_y_dot*f5_0*sin_theta +
-                c1*delta_y*f5_0*f5_12*f5_9*theta_dot - f5_10*f5_11 - f5_13*f5_5 - f5_14*f5_15 - f5_2*
-                f5_3 - f5_3*f5_8 - f5_4*f5_5)
-        out[5, 1] = (
-                b*c1*cos_theta*delta_x*delta_x_dot*f5_0 + b*c1*cos_theta*delta_x*delta_y*f5_0*
-                theta_dot + 2*b*c1*cos_theta*delta_y*delta_y_dot*f5_0 + b*c1*delta_x_dot*delta_y*
-                f5_0*sin_theta + c1*cos_theta*delta_y*f5_0*f5_9*sin_theta*theta_dot - f5_15*f5_22 -
-                f5_16 - f5_17*f5_8 - f5_18 - f5_19 - f5_21)
-        out[5, 2] = (
-                b*c1*cos_theta*delta_x*delta_y*delta_y_dot*f5_0 + b*c1*cos_theta*delta_x_dot*f5_0*
-                f5_4 + 2*c1*cos_theta*delta_x*delta_y*f5_0*f5_9*sin_theta*theta_dot + c1*cos_theta*
-                delta_y*delta_y_dot*f5_0*f5_9*sin_theta + c1*delta_x_dot*delta_y*f5_0*f5_12*f5_9 -
-                delta_x*f5_19 - delta_x*f5_21 - f5_13*f5_17*f5_6 - f5_16*f5_7 - f5_18*f5_7 - f5_22*
-                f5_4*f5_6)
+        f5_2 = b*cos_theta
+        f5_3 = b*sin_theta
+        f5_4 = (
+                f5_0*max(E1 - E1*lambda1/l10, b*c1*delta_y*f5_0*sin_theta*theta_dot + c1*delta_x*
+                delta_x_dot*f5_0 + c1*delta_y*delta_y_dot*f5_0 - delta_x*f5_1*f5_2*theta_dot -
+                delta_x_dot*f5_1*f5_3 - delta_y_dot*f5_1*f5_2))
+        f5_5 = delta_x*f5_4
+        f5_6 = b*f5_4
+        f5_7 = delta_y*f5_4
+        out[5, 0] = -f5_5 + f5_6*sin_theta
+        out[5, 1] = cos_theta*f5_6 - f5_7
+        out[5, 2] = f5_2*f5_5 - f5_3*f5_7
         out[5, 3] = 0
         out[5, 4] = 0
     # damper2: damping of tether 2 along its stretch rate (variant (issue 5))
     if lambda2 > l20:
-        f6_0 = lambda2**(-2)
+        f6_0 = 1/lambda2
         f6_1 = c2*f6_0
-        f6_2 = delta_y_dot*f6_1
-        f6_3 = delta_x*delta_y
-        f6_4 = f6_2*f6_3
-        f6_5 = delta_x**2
-        f6_6 = delta_x_dot*f6_1
-        f6_7 = f6_5*f6_6
-        f6_8 = a*cos_theta
+        f6_2 = delta_x_dot*f6_1
+        f6_3 = delta_y_dot*f6_1
+        f6_4 = a*cos_theta
+        f6_5 = a*sin_theta
+        f6_6 = f6_1*theta_dot
+        f6_7 = (
+                max(E2 - E2*lambda2/l20, delta_x*f6_2 + delta_x*f6_4*f6_6 + delta_y*f6_3 - delta_y*
+                f6_5*f6_6 + f6_2*f6_5 + f6_3*f6_4))
+        f6_8 = f6_0*f6_7
         f6_9 = delta_x*f6_8
-        f6_10 = a*sin_theta
-        f6_11 = delta_y*f6_2
-        f6_12 = f6_10*f6_6
-        f6_13 = f6_1*theta_dot
-        f6_14 = f6_13*f6_5
-        f6_15 = a**2
-        f6_16 = f6_15*f6_2
-        f6_17 = cos_theta*sin_theta
-        f6_18 = sin_theta**2
-        f6_19 = f6_15*f6_18
-        f6_20 = f6_15*f6_17
-        f6_21 = delta_x*f6_13
-        f6_22 = delta_y**2
-        f6_23 = f6_20*f6_6
-        f6_24 = cos_theta**2
-        f6_25 = f6_16*f6_24
-        f6_26 = f6_15*f6_24
-        out[6, 0] = (
-                a*c2*delta_x*delta_y*f6_0*sin_theta*theta_dot + c2*delta_y*f6_0*f6_15*f6_18*
-                theta_dot - 2*delta_x*f6_12 - f6_10*f6_11 - f6_14*f6_8 - f6_16*f6_17 - f6_19*f6_6 -
-                f6_2*f6_9 - f6_20*f6_21 - f6_4 - f6_7)
-        out[6, 1] = (
-                a*c2*f6_0*f6_22*sin_theta*theta_dot + c2*cos_theta*delta_y*f6_0*f6_15*sin_theta*
-                theta_dot - delta_y*f6_12 - 2*f6_11*f6_8 - f6_13*f6_3*f6_8 - f6_2*f6_22 - f6_21*f6_26
-                - f6_23 - f6_25 - f6_3*f6_6 - f6_6*f6_9)
-        out[6, 2] = (
-                a*c2*delta_x*delta_x_dot*delta_y*f6_0*sin_theta + a*c2*delta_y_dot*f6_0*f6_22*
-                sin_theta + 2*c2*cos_theta*delta_x*delta_y*f6_0*f6_15*sin_theta*theta_dot + c2*
-                cos_theta*delta_y*delta_y_dot*f6_0*f6_15*sin_theta + c2*delta_x_dot*delta_y*f6_0*
-                f6_15*f6_18 - delta_x*f6_23 - delta_x*f6_25 - f6_13*f6_19*f6_22 - f6_14*f6_26 - f6_4*
-                f6_8 - f6_7*f6_8)
+        f6_10 = a*f6_8
+        out[6, 0] = -f6_10*sin_theta - f6_9
+        out[6, 1] = -cos_theta*f6_10 - delta_y*f6_8
+        out[6, 2] = a*delta_y*f6_0*f6_7*sin_theta - f6_4*f6_9
         out[6, 3] = 0
         out[6, 4] = 0
 

@@ -115,44 +115,46 @@ def rhs(t, y, p, dydt):
             cos_theta*d15*d16*rho2 - A2*d11*d12*d16*d3*rho2)
     lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
     if lambda1 > l10:  # tether 1 taut: spring1, damper1
-        t1_0 = 1/lambda1
-        t1_1 = b*sin_theta
-        t1_2 = t1_0*(-delta_x + t1_1)
+        t1_0 = b*sin_theta
+        t1_1 = -delta_x + t1_0
+        t1_2 = 1/lambda1
         t1_3 = -1 + lambda1/l10
         t1_4 = E1*t1_3
         t1_5 = t1_2*t1_4
-        t1_6 = b*cos_theta
-        t1_7 = (
-                b*delta_y*sin_theta*t1_0*theta_dot + delta_x*delta_x_dot*t1_0 - delta_x*t1_0*t1_6*
-                theta_dot - delta_x_dot*t1_0*t1_1 + delta_y*delta_y_dot*t1_0 - delta_y_dot*t1_0*t1_6)
-        t1_8 = c1*t1_7
+        t1_6 = t1_1*t1_5
+        t1_7 = b*cos_theta
+        t1_8 = (
+                max(-t1_4, c1*(b*delta_y*sin_theta*t1_2*theta_dot + delta_x*delta_x_dot*t1_2 -
+                delta_x*t1_2*t1_7*theta_dot - delta_x_dot*t1_0*t1_2 + delta_y*delta_y_dot*t1_2 -
+                delta_y_dot*t1_2*t1_7)))
         t1_9 = t1_2*t1_8
-        t1_10 = -delta_y + t1_6
-        t1_11 = t1_0*t1_10
-        Q_delta_x += t1_5 + t1_9
-        Q_delta_y += t1_11*t1_4 + t1_11*t1_8
-        Q_theta += E1*b*sin_theta*t1_0*t1_10*t1_3 + b*c1*sin_theta*t1_0*t1_10*t1_7 - t1_5*t1_6 - t1_6*t1_9
+        t1_10 = t1_1*t1_9
+        t1_11 = -delta_y + t1_7
+        Q_delta_x += t1_10 + t1_6
+        Q_delta_y += t1_11*t1_5 + t1_11*t1_9
+        Q_theta += E1*b*sin_theta*t1_11*t1_2*t1_3 + b*sin_theta*t1_11*t1_2*t1_8 - t1_10*t1_7 - t1_6*t1_7
     lambda2 = math.sqrt((-a*cos_theta - delta_y)**2 + (-a*sin_theta - delta_x)**2)
     if lambda2 > l20:  # tether 2 taut: spring2, damper2
-        t2_0 = 1/lambda2
-        t2_1 = a*sin_theta
-        t2_2 = t2_0*(-delta_x - t2_1)
+        t2_0 = a*sin_theta
+        t2_1 = -delta_x - t2_0
+        t2_2 = 1/lambda2
         t2_3 = E2*(-1 + lambda2/l20)
         t2_4 = t2_2*t2_3
-        t2_5 = delta_x_dot*t2_0
-        t2_6 = delta_y_dot*t2_0
-        t2_7 = a*cos_theta
-        t2_8 = t2_0*theta_dot
-        t2_9 = (
-                c2*(delta_x*t2_5 + delta_x*t2_7*t2_8 - delta_y*t2_1*t2_8 + delta_y*t2_6 + t2_1*t2_5 +
-                t2_6*t2_7))
-        t2_10 = t2_2*t2_9
-        t2_11 = t2_0*(-delta_y - t2_7)
-        t2_12 = t2_11*t2_3
-        t2_13 = t2_11*t2_9
-        Q_delta_x += t2_10 + t2_4
-        Q_delta_y += t2_12 + t2_13
-        Q_theta += -t2_1*t2_12 - t2_1*t2_13 + t2_10*t2_7 + t2_4*t2_7
+        t2_5 = t2_1*t2_4
+        t2_6 = delta_x_dot*t2_2
+        t2_7 = delta_y_dot*t2_2
+        t2_8 = a*cos_theta
+        t2_9 = t2_2*theta_dot
+        t2_10 = (
+                t2_2*max(-t2_3, c2*(delta_x*t2_6 + delta_x*t2_8*t2_9 - delta_y*t2_0*t2_9 + delta_y*
+                t2_7 + t2_0*t2_6 + t2_7*t2_8)))
+        t2_11 = t2_1*t2_10
+        t2_12 = -delta_y - t2_8
+        t2_13 = t2_12*t2_4
+        t2_14 = t2_10*t2_12
+        Q_delta_x += t2_11 + t2_5
+        Q_delta_y += t2_13 + t2_14
+        Q_theta += -t2_0*t2_13 - t2_0*t2_14 + t2_11*t2_8 + t2_5*t2_8
     # accelerations from M q'' + f(q, q') = Q (Lagrange, 3.26-3.30)
     dydt[0] = delta_x_dot
     dydt[1] = delta_y_dot
@@ -244,45 +246,46 @@ def rhs_lanes(t, y, p, dydt, s):
                 cos_theta*d15*d16*rho2 - A2*d11*d12*d16*d3*rho2)
         lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
         if lambda1 > l10:  # tether 1 taut: spring1, damper1
-            t1_0 = 1/lambda1
-            t1_1 = b*sin_theta
-            t1_2 = t1_0*(-delta_x + t1_1)
+            t1_0 = b*sin_theta
+            t1_1 = -delta_x + t1_0
+            t1_2 = 1/lambda1
             t1_3 = -1 + lambda1/l10
             t1_4 = E1*t1_3
             t1_5 = t1_2*t1_4
-            t1_6 = b*cos_theta
-            t1_7 = (
-                    b*delta_y*sin_theta*t1_0*theta_dot + delta_x*delta_x_dot*t1_0 - delta_x*t1_0*
-                    t1_6*theta_dot - delta_x_dot*t1_0*t1_1 + delta_y*delta_y_dot*t1_0 - delta_y_dot*
-                    t1_0*t1_6)
-            t1_8 = c1*t1_7
+            t1_6 = t1_1*t1_5
+            t1_7 = b*cos_theta
+            t1_8 = (
+                    max(-t1_4, c1*(b*delta_y*sin_theta*t1_2*theta_dot + delta_x*delta_x_dot*t1_2 -
+                    delta_x*t1_2*t1_7*theta_dot - delta_x_dot*t1_0*t1_2 + delta_y*delta_y_dot*t1_2 -
+                    delta_y_dot*t1_2*t1_7)))
             t1_9 = t1_2*t1_8
-            t1_10 = -delta_y + t1_6
-            t1_11 = t1_0*t1_10
-            Q_delta_x += t1_5 + t1_9
-            Q_delta_y += t1_11*t1_4 + t1_11*t1_8
-            Q_theta += E1*b*sin_theta*t1_0*t1_10*t1_3 + b*c1*sin_theta*t1_0*t1_10*t1_7 - t1_5*t1_6 - t1_6*t1_9
+            t1_10 = t1_1*t1_9
+            t1_11 = -delta_y + t1_7
+            Q_delta_x += t1_10 + t1_6
+            Q_delta_y += t1_11*t1_5 + t1_11*t1_9
+            Q_theta += E1*b*sin_theta*t1_11*t1_2*t1_3 + b*sin_theta*t1_11*t1_2*t1_8 - t1_10*t1_7 - t1_6*t1_7
         lambda2 = math.sqrt((-a*cos_theta - delta_y)**2 + (-a*sin_theta - delta_x)**2)
         if lambda2 > l20:  # tether 2 taut: spring2, damper2
-            t2_0 = 1/lambda2
-            t2_1 = a*sin_theta
-            t2_2 = t2_0*(-delta_x - t2_1)
+            t2_0 = a*sin_theta
+            t2_1 = -delta_x - t2_0
+            t2_2 = 1/lambda2
             t2_3 = E2*(-1 + lambda2/l20)
             t2_4 = t2_2*t2_3
-            t2_5 = delta_x_dot*t2_0
-            t2_6 = delta_y_dot*t2_0
-            t2_7 = a*cos_theta
-            t2_8 = t2_0*theta_dot
-            t2_9 = (
-                    c2*(delta_x*t2_5 + delta_x*t2_7*t2_8 - delta_y*t2_1*t2_8 + delta_y*t2_6 + t2_1*
-                    t2_5 + t2_6*t2_7))
-            t2_10 = t2_2*t2_9
-            t2_11 = t2_0*(-delta_y - t2_7)
-            t2_12 = t2_11*t2_3
-            t2_13 = t2_11*t2_9
-            Q_delta_x += t2_10 + t2_4
-            Q_delta_y += t2_12 + t2_13
-            Q_theta += -t2_1*t2_12 - t2_1*t2_13 + t2_10*t2_7 + t2_4*t2_7
+            t2_5 = t2_1*t2_4
+            t2_6 = delta_x_dot*t2_2
+            t2_7 = delta_y_dot*t2_2
+            t2_8 = a*cos_theta
+            t2_9 = t2_2*theta_dot
+            t2_10 = (
+                    t2_2*max(-t2_3, c2*(delta_x*t2_6 + delta_x*t2_8*t2_9 - delta_y*t2_0*t2_9 +
+                    delta_y*t2_7 + t2_0*t2_6 + t2_7*t2_8)))
+            t2_11 = t2_1*t2_10
+            t2_12 = -delta_y - t2_8
+            t2_13 = t2_12*t2_4
+            t2_14 = t2_10*t2_12
+            Q_delta_x += t2_11 + t2_5
+            Q_delta_y += t2_13 + t2_14
+            Q_theta += -t2_0*t2_13 - t2_0*t2_14 + t2_11*t2_8 + t2_5*t2_8
         # accelerations from M q'' + f(q, q') = Q (Lagrange, 3.26-3.30)
         dydt[0*LANES + k] = delta_x_dot
         dydt[1*LANES + k] = delta_y_dot
@@ -421,15 +424,15 @@ def family_forces_lanes(K, y, p, out, s):
             f5_1 = 1/lambda1
             f5_2 = b*cos_theta
             f5_3 = (
-                    b*delta_y*f5_1*sin_theta*theta_dot + delta_x*delta_x_dot*f5_1 - delta_x*f5_1*
-                    f5_2*theta_dot - delta_x_dot*f5_0*f5_1 + delta_y*delta_y_dot*f5_1 - delta_y_dot*
-                    f5_1*f5_2)
-            f5_4 = c1*f5_1*f5_3
+                    max(-E1*(-1 + lambda1/l10), c1*(b*delta_y*f5_1*sin_theta*theta_dot + delta_x*
+                    delta_x_dot*f5_1 - delta_x*f5_1*f5_2*theta_dot - delta_x_dot*f5_0*f5_1 + delta_y*
+                    delta_y_dot*f5_1 - delta_y_dot*f5_1*f5_2)))
+            f5_4 = f5_1*f5_3
             f5_5 = f5_4*(-delta_x + f5_0)
             f5_6 = -delta_y + f5_2
             out[15*LANES + k] = f5_5
             out[16*LANES + k] = f5_4*f5_6
-            out[17*LANES + k] = b*c1*f5_1*f5_3*f5_6*sin_theta - f5_2*f5_5
+            out[17*LANES + k] = b*f5_1*f5_3*f5_6*sin_theta - f5_2*f5_5
         # damper2: damping of tether 2 along its stretch rate (variant (issue 5))
         if lambda2 > l20:
             f6_0 = a*sin_theta
@@ -439,8 +442,8 @@ def family_forces_lanes(K, y, p, out, s):
             f6_4 = a*cos_theta
             f6_5 = f6_1*theta_dot
             f6_6 = (
-                    c2*f6_1*(delta_x*f6_2 + delta_x*f6_4*f6_5 - delta_y*f6_0*f6_5 + delta_y*f6_3 +
-                    f6_0*f6_2 + f6_3*f6_4))
+                    f6_1*max(-E2*(-1 + lambda2/l20), c2*(delta_x*f6_2 + delta_x*f6_4*f6_5 - delta_y*
+                    f6_0*f6_5 + delta_y*f6_3 + f6_0*f6_2 + f6_3*f6_4)))
             f6_7 = f6_6*(-delta_x - f6_0)
             f6_8 = f6_6*(-delta_y - f6_4)
             out[18*LANES + k] = f6_7
@@ -534,14 +537,15 @@ def family_forces(y, p, out):
         f5_1 = 1/lambda1
         f5_2 = b*cos_theta
         f5_3 = (
-                b*delta_y*f5_1*sin_theta*theta_dot + delta_x*delta_x_dot*f5_1 - delta_x*f5_1*f5_2*
-                theta_dot - delta_x_dot*f5_0*f5_1 + delta_y*delta_y_dot*f5_1 - delta_y_dot*f5_1*f5_2)
-        f5_4 = c1*f5_1*f5_3
+                max(-E1*(-1 + lambda1/l10), c1*(b*delta_y*f5_1*sin_theta*theta_dot + delta_x*
+                delta_x_dot*f5_1 - delta_x*f5_1*f5_2*theta_dot - delta_x_dot*f5_0*f5_1 + delta_y*
+                delta_y_dot*f5_1 - delta_y_dot*f5_1*f5_2)))
+        f5_4 = f5_1*f5_3
         f5_5 = f5_4*(-delta_x + f5_0)
         f5_6 = -delta_y + f5_2
         out[5, 0] = f5_5
         out[5, 1] = f5_4*f5_6
-        out[5, 2] = b*c1*f5_1*f5_3*f5_6*sin_theta - f5_2*f5_5
+        out[5, 2] = b*f5_1*f5_3*f5_6*sin_theta - f5_2*f5_5
     # damper2: damping of tether 2 along its stretch rate (variant (issue 5))
     if lambda2 > l20:
         f6_0 = a*sin_theta
@@ -551,8 +555,8 @@ def family_forces(y, p, out):
         f6_4 = a*cos_theta
         f6_5 = f6_1*theta_dot
         f6_6 = (
-                c2*f6_1*(delta_x*f6_2 + delta_x*f6_4*f6_5 - delta_y*f6_0*f6_5 + delta_y*f6_3 + f6_0*
-                f6_2 + f6_3*f6_4))
+                f6_1*max(-E2*(-1 + lambda2/l20), c2*(delta_x*f6_2 + delta_x*f6_4*f6_5 - delta_y*f6_0*
+                f6_5 + delta_y*f6_3 + f6_0*f6_2 + f6_3*f6_4)))
         f6_7 = f6_6*(-delta_x - f6_0)
         f6_8 = f6_6*(-delta_y - f6_4)
         out[6, 0] = f6_7
@@ -733,240 +737,260 @@ def jacobian(t, y, p, J):
             jd55)
     lambda1 = math.sqrt((b*cos_theta - delta_y)**2 + (b*sin_theta - delta_x)**2)
     if lambda1 > l10:
-        jt1_0 = 1/l10
-        jt1_1 = jt1_0*lambda1 - 1
-        jt1_2 = E1*jt1_1
-        jt1_3 = b*cos_theta
-        jt1_4 = -delta_y + jt1_3
-        jt1_5 = jt1_4**2
-        jt1_6 = b*sin_theta
-        jt1_7 = -delta_x + jt1_6
+        jt1_0 = b*sin_theta
+        jt1_1 = -delta_x + jt1_0
+        jt1_2 = jt1_1**2
+        jt1_3 = 1/l10
+        jt1_4 = jt1_3*lambda1 - 1
+        jt1_5 = E1*jt1_4
+        jt1_6 = b*cos_theta
+        jt1_7 = -delta_y + jt1_6
         jt1_8 = jt1_7**2
-        jt1_9 = jt1_5 + jt1_8
-        jt1_10 = jt1_9**(-3/2)
-        jt1_11 = jt1_10*jt1_8
-        jt1_12 = jt1_11*jt1_2
-        jt1_13 = 1/math.sqrt(jt1_9)
-        jt1_14 = delta_y_dot*jt1_13
-        jt1_15 = delta_x_dot*jt1_13
-        jt1_16 = delta_x*jt1_13
-        jt1_17 = jt1_16*jt1_3
-        jt1_18 = (
-                b*delta_y*jt1_13*sin_theta*theta_dot + delta_x*delta_x_dot*jt1_13 + delta_y*
-                delta_y_dot*jt1_13 - jt1_14*jt1_3 - jt1_15*jt1_6 - jt1_17*theta_dot)
-        jt1_19 = c1*jt1_18
-        jt1_20 = jt1_11*jt1_19
-        jt1_21 = jt1_13*jt1_3
-        jt1_22 = jt1_3*jt1_7
-        jt1_23 = jt1_10*jt1_22
-        jt1_24 = jt1_10*jt1_7
-        jt1_25 = delta_x_dot*jt1_6
-        jt1_26 = (
-                b*delta_y*jt1_10*jt1_7*sin_theta*theta_dot + delta_x*delta_x_dot*jt1_10*jt1_7 -
-                delta_x*jt1_23*theta_dot + delta_x_dot*jt1_13 + delta_y*delta_y_dot*jt1_10*jt1_7 -
-                delta_y_dot*jt1_23 - jt1_21*theta_dot - jt1_24*jt1_25)
-        jt1_27 = c1*jt1_13
-        jt1_28 = jt1_27*jt1_7
-        jt1_29 = -jt1_7
-        jt1_30 = 1/jt1_9
-        jt1_31 = E1*jt1_0*jt1_30
-        jt1_32 = jt1_31*jt1_7
-        jt1_33 = jt1_13*jt1_2
-        jt1_34 = jt1_13*jt1_19
-        jt1_35 = -jt1_33 - jt1_34
-        jt1_36 = jt1_13*jt1_6
-        jt1_37 = delta_x*delta_x_dot
-        jt1_38 = jt1_10*jt1_4
-        jt1_39 = delta_y*delta_y_dot
-        jt1_40 = delta_y_dot*jt1_3
-        jt1_41 = jt1_4*jt1_6
-        jt1_42 = jt1_10*jt1_41
-        jt1_43 = jt1_3*theta_dot
-        jt1_44 = delta_x*jt1_43
-        jt1_45 = (
-                -delta_x_dot*jt1_42 + delta_y*jt1_42*theta_dot + jt1_14 + jt1_36*theta_dot + jt1_37*
-                jt1_38 + jt1_38*jt1_39 - jt1_38*jt1_40 - jt1_38*jt1_44)
-        jt1_46 = -jt1_4
-        jt1_47 = jt1_24*jt1_4
-        jt1_48 = jt1_19*jt1_47 + jt1_2*jt1_47
+        jt1_9 = jt1_2 + jt1_8
+        jt1_10 = 1/math.sqrt(jt1_9)
+        jt1_11 = delta_y_dot*jt1_10
+        jt1_12 = delta_x_dot*jt1_10
+        jt1_13 = delta_x*jt1_10
+        jt1_14 = jt1_13*jt1_6
+        jt1_15 = (
+                c1*(b*delta_y*jt1_10*sin_theta*theta_dot + delta_x*delta_x_dot*jt1_10 + delta_y*
+                delta_y_dot*jt1_10 - jt1_0*jt1_12 - jt1_11*jt1_6 - jt1_14*theta_dot))
+        jt1_16 = max(jt1_15, -jt1_5)
+        jt1_17 = jt1_9**(-3/2)
+        jt1_18 = jt1_16*jt1_17
+        jt1_19 = jt1_18*jt1_2
+        jt1_20 = E1*jt1_3
+        jt1_21 = -jt1_1*jt1_20
+        jt1_22 = jt1_15 + jt1_5
+        jt1_23 = jt1_10*(1.0 if -jt1_22 > 0.0 else 0.5 if -jt1_22 == 0.0 else 0.0)
+        jt1_24 = (1.0 if jt1_22 > 0.0 else 0.5 if jt1_22 == 0.0 else 0.0)
+        jt1_25 = jt1_10*jt1_6
+        jt1_26 = jt1_1*jt1_6
+        jt1_27 = jt1_17*jt1_26
+        jt1_28 = jt1_1*jt1_17
+        jt1_29 = delta_x_dot*jt1_0
+        jt1_30 = (
+                c1*jt1_24*(b*delta_y*jt1_1*jt1_17*sin_theta*theta_dot + delta_x*delta_x_dot*jt1_1*
+                jt1_17 - delta_x*jt1_27*theta_dot + delta_x_dot*jt1_10 + delta_y*delta_y_dot*jt1_1*
+                jt1_17 - delta_y_dot*jt1_27 - jt1_25*theta_dot - jt1_28*jt1_29) - jt1_21*jt1_23)
+        jt1_31 = jt1_1*jt1_10
+        jt1_32 = jt1_30*jt1_31
+        jt1_33 = jt1_17*jt1_5
+        jt1_34 = jt1_2*jt1_33
+        jt1_35 = 1/jt1_9
+        jt1_36 = jt1_1*jt1_35
+        jt1_37 = jt1_10*jt1_16
+        jt1_38 = jt1_10*jt1_5
+        jt1_39 = -jt1_37 - jt1_38
+        jt1_40 = -jt1_7
+        jt1_41 = jt1_20*jt1_40
+        jt1_42 = jt1_0*jt1_10
+        jt1_43 = delta_x*delta_x_dot
+        jt1_44 = jt1_17*jt1_7
+        jt1_45 = delta_y*delta_y_dot
+        jt1_46 = delta_y_dot*jt1_6
+        jt1_47 = jt1_0*jt1_7
+        jt1_48 = jt1_17*jt1_47
         jt1_49 = jt1_6*theta_dot
-        jt1_50 = -b*jt1_4*sin_theta + jt1_22
-        jt1_51 = -jt1_50
-        jt1_52 = jt1_10*jt1_51
-        jt1_53 = (
-                delta_y*jt1_13*jt1_43 + delta_y*jt1_49*jt1_52 + jt1_14*jt1_6 - jt1_15*jt1_3 + jt1_16*
-                jt1_49 - jt1_25*jt1_52 + jt1_37*jt1_52 + jt1_39*jt1_52 - jt1_40*jt1_52 - jt1_44*jt1_52)
-        jt1_54 = jt1_24*jt1_51
-        jt1_55 = jt1_3*jt1_33 + jt1_3*jt1_34
-        jt1_56 = delta_x*jt1_13 - jt1_36
-        jt1_57 = delta_y*jt1_13 - jt1_21
-        jt1_58 = b*delta_y*jt1_13*sin_theta - jt1_17
-        jt1_59 = jt1_27*jt1_4
-        jt1_60 = jt1_31*jt1_4
-        jt1_61 = jt1_10*jt1_5
-        jt1_62 = jt1_33*jt1_6
-        jt1_63 = jt1_38*jt1_51
-        jt1_64 = jt1_34*jt1_6
-        jt1_65 = jt1_26*jt1_27
-        jt1_66 = jt1_29*jt1_31
-        jt1_67 = jt1_24*jt1_41
-        jt1_68 = jt1_22*jt1_38
-        jt1_69 = cos_theta**2
-        jt1_70 = b**2
-        jt1_71 = jt1_33*jt1_70
-        jt1_72 = sin_theta**2
-        jt1_73 = jt1_22*jt1_52
-        jt1_74 = jt1_34*jt1_70
-        dQ0_0 += jt1_12 + jt1_20 + jt1_26*jt1_28 + jt1_29*jt1_32 + jt1_35
-        dQ0_1 += jt1_28*jt1_45 + jt1_32*jt1_46 + jt1_48
-        dQ0_2 += jt1_19*jt1_54 + jt1_2*jt1_54 + jt1_28*jt1_53 + jt1_32*jt1_50 + jt1_55
-        dQ0_3 += jt1_28*jt1_56
-        dQ0_4 += jt1_28*jt1_57
-        dQ0_5 += jt1_28*jt1_58
-        dQ1_0 += jt1_26*jt1_59 + jt1_29*jt1_60 + jt1_48
-        dQ1_1 += jt1_19*jt1_61 + jt1_2*jt1_61 + jt1_35 + jt1_45*jt1_59 + jt1_46*jt1_60
-        dQ1_2 += jt1_19*jt1_63 + jt1_2*jt1_63 + jt1_50*jt1_60 + jt1_53*jt1_59 - jt1_62 - jt1_64
-        dQ1_3 += jt1_56*jt1_59
-        dQ1_4 += jt1_57*jt1_59
-        dQ1_5 += jt1_58*jt1_59
+        jt1_50 = delta_x*jt1_49
+        jt1_51 = (
+                c1*jt1_24*(-delta_x_dot*jt1_48 + delta_y*jt1_48*theta_dot + jt1_11 + jt1_42*theta_dot +
+                jt1_43*jt1_44 + jt1_44*jt1_45 - jt1_44*jt1_46 - jt1_44*jt1_50) - jt1_23*jt1_41)
+        jt1_52 = jt1_31*jt1_51
+        jt1_53 = jt1_1*jt1_18
+        jt1_54 = jt1_28*jt1_5
+        jt1_55 = jt1_53*jt1_7 + jt1_54*jt1_7
+        jt1_56 = -b*jt1_7*sin_theta + jt1_26
+        jt1_57 = jt1_20*jt1_56
+        jt1_58 = jt1_0*theta_dot
+        jt1_59 = -jt1_56
+        jt1_60 = jt1_17*jt1_59
+        jt1_61 = (
+                c1*jt1_24*(delta_y*jt1_10*jt1_49 + delta_y*jt1_58*jt1_60 + jt1_0*jt1_11 - jt1_12*
+                jt1_6 + jt1_13*jt1_58 - jt1_29*jt1_60 + jt1_43*jt1_60 + jt1_45*jt1_60 - jt1_46*jt1_60 -
+                jt1_50*jt1_60) - jt1_23*jt1_57)
+        jt1_62 = jt1_31*jt1_61
+        jt1_63 = jt1_37*jt1_6 + jt1_38*jt1_6
+        jt1_64 = delta_x*jt1_10 - jt1_42
+        jt1_65 = c1*jt1_24
+        jt1_66 = jt1_31*jt1_65
+        jt1_67 = jt1_64*jt1_66
+        jt1_68 = delta_y*jt1_10 - jt1_25
+        jt1_69 = jt1_66*jt1_68
+        jt1_70 = b*delta_y*jt1_10*sin_theta - jt1_14
+        jt1_71 = jt1_66*jt1_70
+        jt1_72 = jt1_10*jt1_7
+        jt1_73 = jt1_35*jt1_7
+        jt1_74 = jt1_0*jt1_38
+        jt1_75 = jt1_59*jt1_7
+        jt1_76 = jt1_0*jt1_37
+        jt1_77 = jt1_65*jt1_72
+        jt1_78 = jt1_21*jt1_35
+        jt1_79 = jt1_26*jt1_33
+        jt1_80 = jt1_18*jt1_26
+        jt1_81 = cos_theta**2
+        jt1_82 = b**2
+        jt1_83 = jt1_38*jt1_82
+        jt1_84 = sin_theta**2
+        jt1_85 = jt1_37*jt1_82
+        dQ0_0 += jt1_19 + jt1_21*jt1_36 + jt1_32 + jt1_34 + jt1_39
+        dQ0_1 += jt1_36*jt1_41 + jt1_52 + jt1_55
+        dQ0_2 += jt1_36*jt1_57 + jt1_53*jt1_59 + jt1_54*jt1_59 + jt1_62 + jt1_63
+        dQ0_3 += jt1_67
+        dQ0_4 += jt1_69
+        dQ0_5 += jt1_71
+        dQ1_0 += jt1_21*jt1_73 + jt1_30*jt1_72 + jt1_55
+        dQ1_1 += jt1_18*jt1_8 + jt1_33*jt1_8 + jt1_39 + jt1_41*jt1_73 + jt1_51*jt1_72
+        dQ1_2 += jt1_18*jt1_75 + jt1_33*jt1_75 + jt1_57*jt1_73 + jt1_61*jt1_72 - jt1_74 - jt1_76
+        dQ1_3 += jt1_64*jt1_77
+        dQ1_4 += jt1_68*jt1_77
+        dQ1_5 += jt1_70*jt1_77
         dQ2_0 += (
-                -jt1_12*jt1_3 + jt1_19*jt1_67 + jt1_2*jt1_67 - jt1_20*jt1_3 - jt1_22*jt1_65 - jt1_22*
-                jt1_66 + jt1_41*jt1_65 + jt1_41*jt1_66 + jt1_55)
+                jt1_10*jt1_30*jt1_47 - jt1_19*jt1_6 - jt1_26*jt1_78 - jt1_32*jt1_6 - jt1_34*jt1_6 +
+                jt1_47*jt1_53 + jt1_47*jt1_54 + jt1_47*jt1_78 + jt1_63)
         dQ2_1 += (
-                E1*b*jt1_0*jt1_30*jt1_4*jt1_46*sin_theta + E1*b*jt1_1*jt1_10*jt1_5*sin_theta + b*
-                c1*jt1_10*jt1_18*jt1_5*sin_theta + b*c1*jt1_13*jt1_4*jt1_45*sin_theta - jt1_19*
-                jt1_68 - jt1_2*jt1_68 - jt1_22*jt1_27*jt1_45 - jt1_22*jt1_31*jt1_46 - jt1_62 - jt1_64)
+                E1*b*jt1_17*jt1_4*jt1_8*sin_theta + E1*b*jt1_3*jt1_35*jt1_40*jt1_7*sin_theta + b*
+                jt1_10*jt1_51*jt1_7*sin_theta + b*jt1_16*jt1_17*jt1_8*sin_theta - jt1_26*jt1_35*
+                jt1_41 - jt1_52*jt1_6 - jt1_7*jt1_79 - jt1_7*jt1_80 - jt1_74 - jt1_76)
         dQ2_2 += (
-                E1*b*cos_theta*jt1_1*jt1_13*jt1_4 + E1*b*jt1_0*jt1_30*jt1_4*jt1_50*sin_theta + E1*
-                b*jt1_1*jt1_10*jt1_4*jt1_51*sin_theta + E1*b*jt1_1*jt1_13*jt1_7*sin_theta + b*c1*
-                cos_theta*jt1_13*jt1_18*jt1_4 + b*c1*jt1_10*jt1_18*jt1_4*jt1_51*sin_theta + b*c1*
-                jt1_13*jt1_18*jt1_7*sin_theta + b*c1*jt1_13*jt1_4*jt1_53*sin_theta - jt1_19*jt1_73 -
-                jt1_2*jt1_73 - jt1_22*jt1_27*jt1_53 - jt1_22*jt1_31*jt1_50 - jt1_69*jt1_71 - jt1_69*
-                jt1_74 - jt1_71*jt1_72 - jt1_72*jt1_74)
-        dQ2_3 += b*c1*jt1_13*jt1_4*jt1_56*sin_theta - jt1_22*jt1_27*jt1_56
-        dQ2_4 += b*c1*jt1_13*jt1_4*jt1_57*sin_theta - jt1_22*jt1_27*jt1_57
-        dQ2_5 += b*c1*jt1_13*jt1_4*jt1_58*sin_theta - jt1_22*jt1_27*jt1_58
+                E1*b*cos_theta*jt1_10*jt1_4*jt1_7 + E1*b*jt1_1*jt1_10*jt1_4*sin_theta + E1*b*
+                jt1_17*jt1_4*jt1_59*jt1_7*sin_theta + E1*b*jt1_3*jt1_35*jt1_56*jt1_7*sin_theta + b*
+                cos_theta*jt1_10*jt1_16*jt1_7 + b*jt1_1*jt1_10*jt1_16*sin_theta + b*jt1_10*jt1_61*
+                jt1_7*sin_theta + b*jt1_16*jt1_17*jt1_59*jt1_7*sin_theta - jt1_26*jt1_35*jt1_57 -
+                jt1_59*jt1_79 - jt1_59*jt1_80 - jt1_6*jt1_62 - jt1_81*jt1_83 - jt1_81*jt1_85 - jt1_83*
+                jt1_84 - jt1_84*jt1_85)
+        dQ2_3 += b*c1*jt1_10*jt1_24*jt1_64*jt1_7*sin_theta - jt1_6*jt1_67
+        dQ2_4 += b*c1*jt1_10*jt1_24*jt1_68*jt1_7*sin_theta - jt1_6*jt1_69
+        dQ2_5 += b*c1*jt1_10*jt1_24*jt1_7*jt1_70*sin_theta - jt1_6*jt1_71
     lambda2 = math.sqrt((-a*cos_theta - delta_y)**2 + (-a*sin_theta - delta_x)**2)
     if lambda2 > l20:
-        jt2_0 = 1/l20
-        jt2_1 = jt2_0*lambda2 - 1
-        jt2_2 = E2*jt2_1
-        jt2_3 = a*cos_theta
-        jt2_4 = delta_y + jt2_3
-        jt2_5 = -jt2_4
-        jt2_6 = jt2_5**2
-        jt2_7 = a*sin_theta
-        jt2_8 = delta_x + jt2_7
+        jt2_0 = a*sin_theta
+        jt2_1 = delta_x + jt2_0
+        jt2_2 = -jt2_1
+        jt2_3 = jt2_2**2
+        jt2_4 = 1/l20
+        jt2_5 = jt2_4*lambda2 - 1
+        jt2_6 = E2*jt2_5
+        jt2_7 = a*cos_theta
+        jt2_8 = delta_y + jt2_7
         jt2_9 = -jt2_8
         jt2_10 = jt2_9**2
-        jt2_11 = jt2_10 + jt2_6
-        jt2_12 = jt2_11**(-3/2)
-        jt2_13 = jt2_10*jt2_12
-        jt2_14 = 1/math.sqrt(jt2_11)
-        jt2_15 = delta_x_dot*jt2_14
-        jt2_16 = delta_y_dot*jt2_14
-        jt2_17 = delta_x*jt2_14
-        jt2_18 = jt2_17*jt2_3
-        jt2_19 = delta_y*jt2_14
-        jt2_20 = jt2_19*jt2_7
-        jt2_21 = (
-                delta_x*jt2_15 + delta_y*jt2_16 + jt2_15*jt2_7 + jt2_16*jt2_3 + jt2_18*theta_dot -
-                jt2_20*theta_dot)
-        jt2_22 = c2*jt2_21
-        jt2_23 = jt2_14*jt2_3
-        jt2_24 = jt2_12*jt2_9
-        jt2_25 = delta_x*delta_x_dot
-        jt2_26 = delta_y*delta_y_dot
-        jt2_27 = jt2_3*jt2_9
-        jt2_28 = jt2_12*jt2_27
-        jt2_29 = delta_x_dot*jt2_7
-        jt2_30 = jt2_7*theta_dot
-        jt2_31 = delta_y*jt2_30
-        jt2_32 = (
-                delta_x*jt2_28*theta_dot + delta_y_dot*jt2_28 + jt2_15 + jt2_23*theta_dot + jt2_24*
-                jt2_25 + jt2_24*jt2_26 + jt2_24*jt2_29 - jt2_24*jt2_31)
-        jt2_33 = c2*jt2_14
-        jt2_34 = jt2_33*jt2_9
-        jt2_35 = 1/jt2_11
-        jt2_36 = E2*jt2_0*jt2_35
-        jt2_37 = jt2_36*jt2_9
-        jt2_38 = jt2_14*jt2_2
-        jt2_39 = jt2_14*jt2_22
-        jt2_40 = -jt2_38 - jt2_39
-        jt2_41 = jt2_14*jt2_7
-        jt2_42 = jt2_12*jt2_5
-        jt2_43 = delta_y_dot*jt2_3
-        jt2_44 = jt2_5*jt2_7
-        jt2_45 = jt2_12*jt2_44
-        jt2_46 = jt2_3*theta_dot
-        jt2_47 = delta_x*jt2_46
-        jt2_48 = (
-                delta_x_dot*jt2_45 - delta_y*jt2_45*theta_dot + jt2_16 + jt2_25*jt2_42 + jt2_26*jt2_42 -
-                jt2_41*theta_dot + jt2_42*jt2_43 + jt2_42*jt2_47)
-        jt2_49 = jt2_24*jt2_5
-        jt2_50 = jt2_2*jt2_49 + jt2_22*jt2_49
-        jt2_51 = jt2_3*jt2_38
-        jt2_52 = jt2_27 - jt2_44
-        jt2_53 = -jt2_52
-        jt2_54 = jt2_24*jt2_52
-        jt2_55 = jt2_3*jt2_39
-        jt2_56 = jt2_12*jt2_52
-        jt2_57 = (
-                jt2_15*jt2_3 - jt2_16*jt2_7 - jt2_17*jt2_30 - jt2_19*jt2_46 + jt2_25*jt2_56 + jt2_26*
-                jt2_56 + jt2_29*jt2_56 - jt2_31*jt2_56 + jt2_43*jt2_56 + jt2_47*jt2_56)
-        jt2_58 = jt2_17 + jt2_41
-        jt2_59 = jt2_19 + jt2_23
-        jt2_60 = jt2_18 - jt2_20
-        jt2_61 = jt2_33*jt2_5
-        jt2_62 = jt2_36*jt2_5
-        jt2_63 = jt2_12*jt2_6
-        jt2_64 = jt2_2*jt2_63
-        jt2_65 = jt2_22*jt2_63
-        jt2_66 = jt2_42*jt2_52
-        jt2_67 = jt2_38*jt2_7
-        jt2_68 = jt2_39*jt2_7
-        jt2_69 = jt2_67 + jt2_68
-        jt2_70 = jt2_24*jt2_44
-        jt2_71 = jt2_33*jt2_48
-        jt2_72 = jt2_36*jt2_4
-        jt2_73 = jt2_27*jt2_42
-        jt2_74 = cos_theta**2
-        jt2_75 = a**2
-        jt2_76 = jt2_38*jt2_75
-        jt2_77 = sin_theta**2
-        jt2_78 = jt2_44*jt2_56
-        jt2_79 = jt2_39*jt2_75
-        jt2_80 = jt2_33*jt2_58
-        jt2_81 = jt2_33*jt2_59
-        jt2_82 = jt2_33*jt2_60
-        dQ0_0 += jt2_13*jt2_2 + jt2_13*jt2_22 + jt2_32*jt2_34 + jt2_37*jt2_8 + jt2_40
-        dQ0_1 += jt2_34*jt2_48 + jt2_37*jt2_4 + jt2_50
-        dQ0_2 += jt2_2*jt2_54 + jt2_22*jt2_54 + jt2_34*jt2_57 + jt2_37*jt2_53 - jt2_51 - jt2_55
-        dQ0_3 += jt2_34*jt2_58
-        dQ0_4 += jt2_34*jt2_59
-        dQ0_5 += jt2_34*jt2_60
-        dQ1_0 += jt2_32*jt2_61 + jt2_50 + jt2_62*jt2_8
-        dQ1_1 += jt2_4*jt2_62 + jt2_40 + jt2_48*jt2_61 + jt2_64 + jt2_65
-        dQ1_2 += jt2_2*jt2_66 + jt2_22*jt2_66 + jt2_53*jt2_62 + jt2_57*jt2_61 + jt2_69
-        dQ1_3 += jt2_58*jt2_61
-        dQ1_4 += jt2_59*jt2_61
-        dQ1_5 += jt2_60*jt2_61
+        jt2_11 = jt2_10 + jt2_3
+        jt2_12 = 1/math.sqrt(jt2_11)
+        jt2_13 = delta_x_dot*jt2_12
+        jt2_14 = delta_y_dot*jt2_12
+        jt2_15 = delta_x*jt2_12
+        jt2_16 = jt2_15*jt2_7
+        jt2_17 = delta_y*jt2_12
+        jt2_18 = jt2_0*jt2_17
+        jt2_19 = (
+                c2*(delta_x*jt2_13 + delta_y*jt2_14 + jt2_0*jt2_13 + jt2_14*jt2_7 + jt2_16*theta_dot -
+                jt2_18*theta_dot))
+        jt2_20 = max(jt2_19, -jt2_6)
+        jt2_21 = jt2_11**(-3/2)
+        jt2_22 = jt2_20*jt2_21
+        jt2_23 = E2*jt2_4
+        jt2_24 = jt2_1*jt2_23
+        jt2_25 = jt2_19 + jt2_6
+        jt2_26 = jt2_12*(1.0 if -jt2_25 > 0.0 else 0.5 if -jt2_25 == 0.0 else 0.0)
+        jt2_27 = (1.0 if jt2_25 > 0.0 else 0.5 if jt2_25 == 0.0 else 0.0)
+        jt2_28 = jt2_12*jt2_7
+        jt2_29 = jt2_2*jt2_21
+        jt2_30 = delta_x*delta_x_dot
+        jt2_31 = delta_y*delta_y_dot
+        jt2_32 = jt2_2*jt2_7
+        jt2_33 = jt2_21*jt2_32
+        jt2_34 = delta_x_dot*jt2_0
+        jt2_35 = jt2_0*theta_dot
+        jt2_36 = delta_y*jt2_35
+        jt2_37 = (
+                c2*jt2_27*(delta_x*jt2_33*theta_dot + delta_y_dot*jt2_33 + jt2_13 + jt2_28*theta_dot +
+                jt2_29*jt2_30 + jt2_29*jt2_31 + jt2_29*jt2_34 - jt2_29*jt2_36) - jt2_24*jt2_26)
+        jt2_38 = jt2_12*jt2_2
+        jt2_39 = jt2_21*jt2_6
+        jt2_40 = 1/jt2_11
+        jt2_41 = jt2_2*jt2_40
+        jt2_42 = jt2_12*jt2_20
+        jt2_43 = jt2_12*jt2_6
+        jt2_44 = -jt2_42 - jt2_43
+        jt2_45 = jt2_23*jt2_8
+        jt2_46 = jt2_0*jt2_12
+        jt2_47 = jt2_21*jt2_9
+        jt2_48 = delta_y_dot*jt2_7
+        jt2_49 = jt2_0*jt2_9
+        jt2_50 = jt2_21*jt2_49
+        jt2_51 = jt2_7*theta_dot
+        jt2_52 = delta_x*jt2_51
+        jt2_53 = (
+                c2*jt2_27*(delta_x_dot*jt2_50 - delta_y*jt2_50*theta_dot + jt2_14 + jt2_30*jt2_47 +
+                jt2_31*jt2_47 - jt2_46*theta_dot + jt2_47*jt2_48 + jt2_47*jt2_52) - jt2_26*jt2_45)
+        jt2_54 = jt2_38*jt2_53
+        jt2_55 = jt2_2*jt2_22
+        jt2_56 = jt2_29*jt2_6
+        jt2_57 = jt2_55*jt2_9 + jt2_56*jt2_9
+        jt2_58 = jt2_43*jt2_7
+        jt2_59 = jt2_32 - jt2_49
+        jt2_60 = -jt2_59
+        jt2_61 = jt2_23*jt2_60
+        jt2_62 = jt2_42*jt2_7
+        jt2_63 = jt2_21*jt2_59
+        jt2_64 = (
+                c2*jt2_27*(-jt2_0*jt2_14 + jt2_13*jt2_7 - jt2_15*jt2_35 - jt2_17*jt2_51 + jt2_30*
+                jt2_63 + jt2_31*jt2_63 + jt2_34*jt2_63 - jt2_36*jt2_63 + jt2_48*jt2_63 + jt2_52*jt2_63)
+                - jt2_26*jt2_61)
+        jt2_65 = jt2_15 + jt2_46
+        jt2_66 = c2*jt2_27
+        jt2_67 = jt2_38*jt2_66
+        jt2_68 = jt2_65*jt2_67
+        jt2_69 = jt2_17 + jt2_28
+        jt2_70 = jt2_67*jt2_69
+        jt2_71 = jt2_16 - jt2_18
+        jt2_72 = jt2_67*jt2_71
+        jt2_73 = jt2_12*jt2_9
+        jt2_74 = jt2_40*jt2_9
+        jt2_75 = jt2_10*jt2_22
+        jt2_76 = jt2_10*jt2_39
+        jt2_77 = jt2_59*jt2_9
+        jt2_78 = jt2_0*jt2_42
+        jt2_79 = jt2_0*jt2_43 + jt2_78
+        jt2_80 = jt2_66*jt2_73
+        jt2_81 = jt2_12*jt2_49
+        jt2_82 = jt2_40*jt2_45
+        jt2_83 = cos_theta**2
+        jt2_84 = a**2
+        jt2_85 = jt2_43*jt2_84
+        jt2_86 = sin_theta**2
+        jt2_87 = jt2_49*jt2_59
+        jt2_88 = jt2_42*jt2_84
+        jt2_89 = jt2_66*jt2_81
+        dQ0_0 += jt2_22*jt2_3 + jt2_24*jt2_41 + jt2_3*jt2_39 + jt2_37*jt2_38 + jt2_44
+        dQ0_1 += jt2_41*jt2_45 + jt2_54 + jt2_57
+        dQ0_2 += jt2_38*jt2_64 + jt2_41*jt2_61 + jt2_55*jt2_59 + jt2_56*jt2_59 - jt2_58 - jt2_62
+        dQ0_3 += jt2_68
+        dQ0_4 += jt2_70
+        dQ0_5 += jt2_72
+        dQ1_0 += jt2_24*jt2_74 + jt2_37*jt2_73 + jt2_57
+        dQ1_1 += jt2_44 + jt2_45*jt2_74 + jt2_53*jt2_73 + jt2_75 + jt2_76
+        dQ1_2 += jt2_22*jt2_77 + jt2_39*jt2_77 + jt2_61*jt2_74 + jt2_64*jt2_73 + jt2_79
+        dQ1_3 += jt2_65*jt2_80
+        dQ1_4 += jt2_69*jt2_80
+        dQ1_5 += jt2_71*jt2_80
         dQ2_0 += (
-                E2*a*cos_theta*jt2_0*jt2_35*jt2_8*jt2_9 + E2*a*cos_theta*jt2_1*jt2_10*jt2_12 + a*
-                c2*cos_theta*jt2_10*jt2_12*jt2_21 + a*c2*cos_theta*jt2_14*jt2_32*jt2_9 - jt2_2*
-                jt2_70 - jt2_22*jt2_70 - jt2_32*jt2_33*jt2_44 - jt2_36*jt2_44*jt2_8 - jt2_51 - jt2_55)
+                E2*a*cos_theta*jt2_1*jt2_2*jt2_4*jt2_40 + E2*a*cos_theta*jt2_21*jt2_3*jt2_5 + a*
+                cos_theta*jt2_12*jt2_2*jt2_37 + a*cos_theta*jt2_20*jt2_21*jt2_3 - jt2_24*jt2_40*
+                jt2_49 - jt2_37*jt2_81 - jt2_49*jt2_55 - jt2_49*jt2_56 - jt2_58 - jt2_62)
         dQ2_1 += (
-                jt2_2*jt2_73 + jt2_22*jt2_73 + jt2_27*jt2_71 + jt2_27*jt2_72 - jt2_44*jt2_71 - jt2_44*
-                jt2_72 - jt2_64*jt2_7 - jt2_65*jt2_7 + jt2_69)
+                -jt2_0*jt2_75 - jt2_0*jt2_76 + jt2_22*jt2_32*jt2_9 + jt2_32*jt2_39*jt2_9 + jt2_32*
+                jt2_82 - jt2_49*jt2_82 - jt2_53*jt2_81 + jt2_54*jt2_7 + jt2_79)
         dQ2_2 += (
-                E2*a*cos_theta*jt2_0*jt2_35*jt2_53*jt2_9 + E2*a*cos_theta*jt2_1*jt2_12*jt2_52*
-                jt2_9 + a*c2*cos_theta*jt2_12*jt2_21*jt2_52*jt2_9 + a*c2*cos_theta*jt2_14*jt2_57*
-                jt2_9 - jt2_2*jt2_78 - jt2_22*jt2_78 - jt2_33*jt2_44*jt2_57 - jt2_36*jt2_44*jt2_53 -
-                jt2_5*jt2_51 - jt2_5*jt2_55 - jt2_67*jt2_9 - jt2_68*jt2_9 - jt2_74*jt2_76 - jt2_74*
-                jt2_79 - jt2_76*jt2_77 - jt2_77*jt2_79)
-        dQ2_3 += jt2_27*jt2_80 - jt2_44*jt2_80
-        dQ2_4 += jt2_27*jt2_81 - jt2_44*jt2_81
-        dQ2_5 += jt2_27*jt2_82 - jt2_44*jt2_82
+                E2*a*cos_theta*jt2_2*jt2_21*jt2_5*jt2_59 + E2*a*cos_theta*jt2_2*jt2_4*jt2_40*
+                jt2_60 + a*cos_theta*jt2_12*jt2_2*jt2_64 + a*cos_theta*jt2_2*jt2_20*jt2_21*jt2_59 -
+                jt2_0*jt2_38*jt2_6 - jt2_2*jt2_78 - jt2_22*jt2_87 - jt2_39*jt2_87 - jt2_40*jt2_49*
+                jt2_61 - jt2_58*jt2_9 - jt2_62*jt2_9 - jt2_64*jt2_81 - jt2_83*jt2_85 - jt2_83*jt2_88 -
+                jt2_85*jt2_86 - jt2_86*jt2_88)
+        dQ2_3 += -jt2_65*jt2_89 + jt2_68*jt2_7
+        dQ2_4 += -jt2_69*jt2_89 + jt2_7*jt2_70
+        dQ2_5 += jt2_7*jt2_72 - jt2_71*jt2_89
     J[:, :] = 0.0
     J[0, 3] = 1.0
     J[1, 4] = 1.0

@@ -239,170 +239,52 @@ def rhs(t, y, p, dydt):
         t1_1 = E1*delta_x
         t1_2 = t1_0*t1_1
         t1_3 = 1/lambda1
-        t1_4 = E1*b
-        t1_5 = cos_phi*t1_4
-        t1_6 = lambda1**(-2)
-        t1_7 = c1*t1_6
-        t1_8 = delta_y_dot*t1_7
-        t1_9 = delta_x*delta_y
-        t1_10 = t1_8*t1_9
-        t1_11 = delta_z_dot*t1_7
-        t1_12 = delta_z*t1_11
-        t1_13 = delta_x*t1_12
-        t1_14 = delta_x**2
-        t1_15 = delta_x_dot*t1_7
-        t1_16 = t1_14*t1_15
-        t1_17 = b*cos_phi
-        t1_18 = sin_theta*t1_17
-        t1_19 = t1_7*theta_dot
-        t1_20 = t1_18*t1_19
-        t1_21 = phi_dot*t1_7
-        t1_22 = b*sin_phi
-        t1_23 = cos_theta*t1_22
-        t1_24 = t1_21*t1_23
-        t1_25 = sin_theta*t1_22
-        t1_26 = t1_21*t1_25
-        t1_27 = b**2
-        t1_28 = cos_phi*sin_phi*t1_27
-        t1_29 = delta_x*t1_21
-        t1_30 = t1_11*t1_28
-        t1_31 = cos_phi**2
-        t1_32 = t1_27*t1_31
-        t1_33 = t1_32*t1_8
-        t1_34 = cos_theta*sin_theta
-        t1_35 = sin_theta*t1_21
-        t1_36 = delta_z*t1_32
-        t1_37 = sin_theta**2
-        t1_38 = t1_32*t1_37
-        t1_39 = b**3
-        t1_40 = t1_32*t1_34
-        t1_41 = delta_x*t1_19
-        t1_42 = sin_theta**3
-        t1_43 = sin_phi*t1_31*t1_39
-        t1_44 = t1_21*t1_43
-        t1_45 = cos_theta**2
-        t1_46 = t1_35*t1_43
-        t1_47 = E1*delta_y*t1_0
-        t1_48 = t1_15*t1_9
-        t1_49 = delta_y*t1_12
-        t1_50 = delta_y**2
-        t1_51 = t1_50*t1_8
-        t1_52 = cos_theta*t1_21
-        t1_53 = t1_33*t1_45
-        t1_54 = t1_32*t1_45
-        t1_55 = cos_theta**3
-        t1_56 = E1*delta_z
-        t1_57 = delta_x*t1_15
-        t1_58 = delta_y*t1_8
-        t1_59 = delta_z**2
-        t1_60 = sin_phi**2
-        t1_61 = t1_11*t1_60
-        t1_62 = cos_theta*t1_8
-        t1_63 = sin_theta*t1_15
-        t1_64 = 2*delta_z
-        t1_65 = t1_21*t1_28
-        t1_66 = cos_theta*t1_41
-        t1_67 = cos_phi*t1_39
-        t1_68 = t1_21*t1_60
-        t1_69 = t1_67*t1_68
-        t1_70 = E1*t1_28
-        t1_71 = t1_3*t1_70
-        t1_72 = b**4
-        t1_73 = t1_31*t1_68*t1_72
-        t1_74 = t1_61*t1_67
-        t1_75 = t1_43*t1_55
-        t1_76 = 2*t1_69
-        t1_77 = t1_27*t1_68
-        t1_78 = t1_44*t1_64
-        t1_79 = cos_theta*t1_28
-        t1_80 = cos_theta*t1_29
+        t1_4 = E1*t1_3
+        t1_5 = b*cos_phi
+        t1_6 = sin_theta*t1_5
+        t1_7 = E1*t1_0
+        t1_8 = c1*t1_3
+        t1_9 = b*sin_phi
+        t1_10 = cos_theta*t1_5
+        t1_11 = phi_dot*t1_8
+        t1_12 = b**2
+        t1_13 = cos_theta**2
+        t1_14 = cos_phi*sin_phi*t1_12
+        t1_15 = t1_11*t1_14
+        t1_16 = sin_theta**2
+        t1_17 = (
+                max(E1 - lambda1*t1_7, b*c1*cos_phi*delta_y*sin_theta*t1_3*theta_dot + b*c1*
+                cos_theta*delta_y*phi_dot*sin_phi*t1_3 + b*c1*delta_x*phi_dot*sin_phi*sin_theta*
+                t1_3 + c1*cos_phi*phi_dot*sin_phi*t1_12*t1_3 + c1*delta_x*delta_x_dot*t1_3 + c1*
+                delta_y*delta_y_dot*t1_3 + c1*delta_z*delta_z_dot*t1_3 - delta_x*t1_10*t1_8*theta_dot
+                - delta_x_dot*t1_6*t1_8 - delta_y_dot*t1_10*t1_8 - delta_z*t1_11*t1_5 - delta_z_dot*
+                t1_8*t1_9 - t1_13*t1_15 - t1_15*t1_16))
+        t1_18 = t1_17*t1_3
+        t1_19 = delta_x*t1_18
+        t1_20 = delta_y*t1_7
+        t1_21 = delta_y*t1_18
+        t1_22 = cos_theta*t1_9
+        t1_23 = sin_theta*t1_9
+        t1_24 = t1_14*t1_4
         Q_delta_x += (
-                E1*b*cos_phi*sin_theta*t1_0 + E1*delta_x*t1_3 + b*c1*cos_phi*cos_theta*delta_x*
-                delta_y_dot*t1_6 + b*c1*cos_phi*cos_theta*t1_14*t1_6*theta_dot + 2*b*c1*cos_phi*
-                delta_x*delta_x_dot*sin_theta*t1_6 + b*c1*cos_phi*delta_x*delta_z*phi_dot*t1_6 + b*
-                c1*cos_phi*delta_y*delta_y_dot*sin_theta*t1_6 + b*c1*cos_phi*delta_z*delta_z_dot*
-                sin_theta*t1_6 + b*c1*delta_x*delta_z_dot*sin_phi*t1_6 + c1*cos_phi*cos_theta*
-                delta_y*phi_dot*sin_phi*sin_theta*t1_27*t1_6 + 2*c1*cos_phi*delta_x*phi_dot*
-                sin_phi*t1_27*t1_37*t1_6 + c1*cos_phi*delta_x*phi_dot*sin_phi*t1_27*t1_45*t1_6 +
-                c1*delta_y*t1_27*t1_31*t1_37*t1_6*theta_dot + c1*phi_dot*sin_phi*sin_theta*t1_31*
-                t1_39*t1_6 - sin_theta*t1_3*t1_5 - sin_theta*t1_30 - t1_10 - t1_13 - t1_14*t1_26 -
-                t1_15*t1_38 - t1_16 - t1_2 - t1_20*t1_9 - t1_24*t1_9 - t1_28*t1_29 - t1_33*t1_34 -
-                t1_35*t1_36 - t1_40*t1_41 - t1_42*t1_44 - t1_45*t1_46)
+                E1*b*cos_phi*sin_theta*t1_0 + E1*delta_x*t1_3 + b*cos_phi*sin_theta*t1_17*t1_3 -
+                t1_19 - t1_2 - t1_4*t1_6)
         Q_delta_y += (
-                E1*b*cos_phi*cos_theta*t1_0 + E1*delta_y*t1_3 + b*c1*cos_phi*cos_theta*delta_x*
-                delta_x_dot*t1_6 + b*c1*cos_phi*cos_theta*delta_x*delta_y*t1_6*theta_dot + 2*b*c1*
-                cos_phi*cos_theta*delta_y*delta_y_dot*t1_6 + b*c1*cos_phi*cos_theta*delta_z*
-                delta_z_dot*t1_6 + b*c1*cos_phi*delta_x_dot*delta_y*sin_theta*t1_6 + b*c1*cos_phi*
-                delta_y*delta_z*phi_dot*t1_6 + b*c1*delta_y*delta_z_dot*sin_phi*t1_6 + c1*cos_phi*
-                cos_theta*delta_x*phi_dot*sin_phi*sin_theta*t1_27*t1_6 + c1*cos_phi*delta_y*phi_dot*
-                sin_phi*t1_27*t1_37*t1_6 + 2*c1*cos_phi*delta_y*phi_dot*sin_phi*t1_27*t1_45*t1_6 +
-                c1*cos_theta*delta_y*sin_theta*t1_27*t1_31*t1_6*theta_dot + c1*cos_theta*phi_dot*
-                sin_phi*t1_31*t1_39*t1_6 - cos_theta*t1_3*t1_5 - cos_theta*t1_30 - cos_theta*t1_37*
-                t1_44 - delta_y*t1_21*t1_28 - t1_15*t1_40 - t1_20*t1_50 - t1_24*t1_50 - t1_26*t1_9 -
-                t1_36*t1_52 - t1_41*t1_54 - t1_44*t1_55 - t1_47 - t1_48 - t1_49 - t1_51 - t1_53)
+                E1*b*cos_phi*cos_theta*t1_0 + E1*delta_y*t1_3 + b*cos_phi*cos_theta*t1_17*t1_3 -
+                t1_10*t1_4 - t1_20 - t1_21)
         Q_delta_z += (
-                E1*b*sin_phi*t1_0 + E1*delta_z*t1_3 + b*c1*cos_phi*cos_theta*delta_x*delta_z*t1_6*
-                theta_dot + b*c1*cos_phi*cos_theta*delta_y_dot*delta_z*t1_6 + b*c1*cos_phi*
-                delta_x_dot*delta_z*sin_theta*t1_6 + b*c1*cos_phi*phi_dot*t1_59*t1_6 + b*c1*
-                delta_x*delta_x_dot*sin_phi*t1_6 + b*c1*delta_y*delta_y_dot*sin_phi*t1_6 + 2*b*c1*
-                delta_z*delta_z_dot*sin_phi*t1_6 + c1*cos_phi*delta_y*sin_phi*sin_theta*t1_27*t1_6*
-                theta_dot + c1*cos_phi*delta_z*phi_dot*sin_phi*t1_27*t1_37*t1_6 + c1*cos_phi*
-                delta_z*phi_dot*sin_phi*t1_27*t1_45*t1_6 + c1*cos_phi*phi_dot*t1_39*t1_6*t1_60 +
-                c1*cos_theta*delta_y*phi_dot*t1_27*t1_6*t1_60 + c1*delta_x*phi_dot*sin_theta*t1_27*
-                t1_6*t1_60 - delta_y*delta_z*t1_20 - delta_y*delta_z*t1_22*t1_52 - delta_z*t1_25*
-                t1_29 - delta_z*t1_57 - delta_z*t1_58 - sin_phi*t1_3*t1_4 - t1_0*t1_56 - t1_11*t1_59 -
-                t1_27*t1_61 - t1_28*t1_62 - t1_28*t1_63 - t1_28*t1_66 - t1_37*t1_69 - t1_45*t1_69 -
-                t1_64*t1_65)
+                E1*b*sin_phi*t1_0 + E1*delta_z*t1_3 + b*sin_phi*t1_17*t1_3 - delta_z*t1_18 -
+                delta_z*t1_7 - t1_4*t1_9)
         Q_phi += (
                 E1*b*cos_phi*delta_z*t1_0 + E1*b*cos_theta*delta_y*sin_phi*t1_3 + E1*b*delta_x*
-                sin_phi*sin_theta*t1_3 + E1*cos_phi*sin_phi*t1_0*t1_27*t1_37 + E1*cos_phi*sin_phi*
-                t1_0*t1_27*t1_45 + E1*cos_phi*sin_phi*t1_27*t1_3 + b*c1*cos_phi*delta_x*
-                delta_x_dot*delta_z*t1_6 + b*c1*cos_phi*delta_y*delta_y_dot*delta_z*t1_6 + b*c1*
-                cos_phi*delta_z_dot*t1_59*t1_6 + c1*cos_phi*cos_theta*delta_x*delta_y_dot*sin_phi*
-                sin_theta*t1_27*t1_6 + c1*cos_phi*cos_theta*delta_x_dot*delta_y*sin_phi*sin_theta*
-                t1_27*t1_6 + 2*c1*cos_phi*cos_theta*delta_y*delta_z*phi_dot*sin_phi*t1_27*t1_6 + 2*
-                c1*cos_phi*cos_theta*delta_y*phi_dot*t1_37*t1_39*t1_6*t1_60 + c1*cos_phi*cos_theta*
-                sin_phi*sin_theta*t1_14*t1_27*t1_6*theta_dot + 2*c1*cos_phi*delta_x*delta_x_dot*
-                sin_phi*t1_27*t1_37*t1_6 + c1*cos_phi*delta_x*delta_x_dot*sin_phi*t1_27*t1_45*t1_6
-                + c1*cos_phi*delta_x*delta_y*sin_phi*t1_27*t1_45*t1_6*theta_dot + 2*c1*cos_phi*
-                delta_x*delta_z*phi_dot*sin_phi*sin_theta*t1_27*t1_6 + 2*c1*cos_phi*delta_x*
-                phi_dot*sin_theta*t1_39*t1_45*t1_6*t1_60 + 2*c1*cos_phi*delta_x*phi_dot*t1_39*
-                t1_42*t1_6*t1_60 + c1*cos_phi*delta_y*delta_y_dot*sin_phi*t1_27*t1_37*t1_6 + 2*c1*
-                cos_phi*delta_y*delta_y_dot*sin_phi*t1_27*t1_45*t1_6 + 2*c1*cos_phi*delta_y*
-                phi_dot*t1_39*t1_55*t1_6*t1_60 + c1*cos_phi*delta_z*delta_z_dot*sin_phi*t1_27*
-                t1_37*t1_6 + c1*cos_phi*delta_z*delta_z_dot*sin_phi*t1_27*t1_45*t1_6 + c1*cos_phi*
-                delta_z_dot*t1_39*t1_6*t1_60 + c1*cos_theta*delta_x*sin_phi*t1_31*t1_39*t1_6*
-                theta_dot + c1*cos_theta*delta_y*delta_z_dot*t1_27*t1_6*t1_60 + c1*cos_theta*
-                delta_y_dot*sin_phi*t1_31*t1_39*t1_6 + c1*delta_x*delta_z_dot*sin_theta*t1_27*t1_6*
-                t1_60 + c1*delta_x_dot*sin_phi*sin_theta*t1_31*t1_39*t1_6 + c1*delta_y*delta_z*
-                sin_theta*t1_27*t1_31*t1_6*theta_dot + c1*delta_y*sin_phi*sin_theta*t1_31*t1_39*
-                t1_45*t1_6*theta_dot + c1*delta_y*sin_phi*t1_31*t1_39*t1_42*t1_6*theta_dot + 2*c1*
-                delta_z*phi_dot*sin_phi*t1_31*t1_39*t1_6 + 2*c1*phi_dot*t1_31*t1_37*t1_6*t1_60*
-                t1_72 + 2*c1*phi_dot*t1_31*t1_45*t1_6*t1_60*t1_72 - cos_theta**4*t1_73 - cos_theta*
-                delta_y*t1_76 - cos_theta*delta_z*t1_33 - delta_x*sin_theta*t1_76 - delta_y*sin_theta*
-                t1_19*t1_43 - sin_theta**4*t1_73 - t1_0*t1_70 - t1_10*t1_25 - 2*t1_12*t1_28 - t1_13*
-                t1_25 - t1_14*t1_37*t1_77 - t1_15*t1_42*t1_43 - t1_16*t1_25 - t1_17*t1_3*t1_56 -
-                t1_19*t1_28*t1_34*t1_50 - t1_19*t1_28*t1_37*t1_9 - t1_2*t1_25 - t1_21*t1_32*t1_59 -
-                t1_23*t1_47 - t1_23*t1_48 - t1_23*t1_49 - t1_23*t1_51 - t1_28*t1_57 - t1_28*t1_58 - 2*
-                t1_34*t1_77*t1_9 - t1_36*t1_63 - t1_36*t1_66 - t1_37*t1_43*t1_62 - t1_37*t1_43*t1_66
-                - 2*t1_37*t1_45*t1_73 - t1_37*t1_71 - t1_37*t1_74 - t1_37*t1_78 - t1_41*t1_75 - t1_43*
-                t1_45*t1_63 - t1_45*t1_50*t1_77 - t1_45*t1_71 - t1_45*t1_74 - t1_45*t1_78 - t1_73 -
-                t1_75*t1_8)
+                sin_phi*sin_theta*t1_3 + E1*cos_phi*sin_phi*t1_0*t1_12*t1_13 + E1*cos_phi*sin_phi*
+                t1_0*t1_12*t1_16 + E1*cos_phi*sin_phi*t1_12*t1_3 + b*cos_phi*delta_z*t1_17*t1_3 +
+                cos_phi*sin_phi*t1_12*t1_13*t1_17*t1_3 + cos_phi*sin_phi*t1_12*t1_16*t1_17*t1_3 -
+                delta_z*t1_4*t1_5 - t1_13*t1_24 - t1_14*t1_18 - t1_14*t1_7 - t1_16*t1_24 - t1_19*t1_23
+                - t1_2*t1_23 - t1_20*t1_22 - t1_21*t1_22)
         Q_theta += (
-                E1*b*cos_phi*cos_theta*delta_x*t1_0 + E1*b*cos_phi*delta_y*sin_theta*t1_3 + b*c1*
-                cos_phi*cos_theta*delta_x*delta_y*delta_y_dot*t1_6 + b*c1*cos_phi*cos_theta*delta_x*
-                delta_z*delta_z_dot*t1_6 + b*c1*cos_phi*cos_theta*delta_x_dot*t1_14*t1_6 + c1*
-                cos_phi*cos_theta*phi_dot*sin_phi*sin_theta*t1_14*t1_27*t1_6 + c1*cos_phi*delta_x*
-                delta_y*phi_dot*sin_phi*t1_27*t1_45*t1_6 + c1*cos_phi*delta_y*delta_z_dot*sin_phi*
-                sin_theta*t1_27*t1_6 + 2*c1*cos_theta*delta_x*delta_y*sin_theta*t1_27*t1_31*t1_6*
-                theta_dot + c1*cos_theta*delta_x*phi_dot*sin_phi*t1_31*t1_39*t1_6 + c1*cos_theta*
-                delta_y*delta_y_dot*sin_theta*t1_27*t1_31*t1_6 + c1*delta_x_dot*delta_y*t1_27*t1_31*
-                t1_37*t1_6 + c1*delta_y*delta_z*phi_dot*sin_theta*t1_27*t1_31*t1_6 + c1*delta_y*
-                phi_dot*sin_phi*sin_theta*t1_31*t1_39*t1_45*t1_6 + c1*delta_y*phi_dot*sin_phi*
-                t1_31*t1_39*t1_42*t1_6 - cos_theta*t1_1*t1_17*t1_3 - delta_x*t1_11*t1_79 - delta_x*
-                t1_53 - delta_y*t1_46 - t1_14*t1_19*t1_54 - t1_18*t1_47 - t1_18*t1_48 - t1_18*t1_49 -
-                t1_18*t1_51 - t1_19*t1_38*t1_50 - t1_29*t1_75 - t1_35*t1_50*t1_79 - t1_36*t1_80 -
-                t1_37*t1_43*t1_80 - t1_37*t1_65*t1_9 - t1_40*t1_57)
+                E1*b*cos_phi*cos_theta*delta_x*t1_0 + E1*b*cos_phi*delta_y*sin_theta*t1_3 + b*
+                cos_phi*cos_theta*delta_x*t1_17*t1_3 - t1_1*t1_10*t1_3 - t1_20*t1_6 - t1_21*t1_6)
         Q_psi += 0
         Q_r += 0
         Q_nu += 0
@@ -414,178 +296,46 @@ def rhs(t, y, p, dydt):
         t2_1 = E2*delta_x
         t2_2 = t2_0*t2_1
         t2_3 = 1/lambda2
-        t2_4 = E2*a
-        t2_5 = cos_phi*t2_4
-        t2_6 = lambda2**(-2)
-        t2_7 = c2*t2_6
-        t2_8 = delta_y_dot*t2_7
-        t2_9 = delta_x*delta_y
-        t2_10 = t2_8*t2_9
-        t2_11 = delta_z_dot*t2_7
-        t2_12 = delta_z*t2_11
-        t2_13 = delta_x*t2_12
-        t2_14 = delta_x**2
-        t2_15 = delta_x_dot*t2_7
-        t2_16 = t2_14*t2_15
-        t2_17 = a*sin_phi
-        t2_18 = delta_x*t2_11
-        t2_19 = a*cos_phi
-        t2_20 = cos_theta*t2_19
-        t2_21 = t2_20*t2_8
-        t2_22 = phi_dot*t2_7
-        t2_23 = delta_x*t2_22
-        t2_24 = delta_z*t2_19
-        t2_25 = delta_y*t2_8
-        t2_26 = sin_theta*t2_19
-        t2_27 = delta_x*t2_15
-        t2_28 = t2_7*theta_dot
-        t2_29 = t2_14*t2_28
-        t2_30 = a**2
-        t2_31 = cos_phi*sin_phi*t2_30
-        t2_32 = t2_23*t2_31
-        t2_33 = t2_11*t2_31
-        t2_34 = cos_phi**2
-        t2_35 = t2_30*t2_34
-        t2_36 = t2_35*t2_8
-        t2_37 = cos_theta*sin_theta
-        t2_38 = delta_z*t2_22
-        t2_39 = t2_35*t2_38
-        t2_40 = a**3
-        t2_41 = sin_phi*t2_34*t2_40
-        t2_42 = t2_22*t2_41
-        t2_43 = sin_theta*t2_42
-        t2_44 = sin_theta**2
-        t2_45 = t2_35*t2_44
-        t2_46 = delta_x*t2_28
-        t2_47 = t2_35*t2_37
-        t2_48 = cos_theta**2
-        t2_49 = sin_theta**3
-        t2_50 = E2*delta_y
-        t2_51 = t2_0*t2_50
-        t2_52 = t2_15*t2_9
-        t2_53 = delta_y*t2_12
-        t2_54 = delta_y**2
-        t2_55 = t2_54*t2_8
-        t2_56 = t2_15*t2_26
-        t2_57 = delta_y*t2_22
-        t2_58 = t2_28*t2_9
-        t2_59 = t2_15*t2_35
-        t2_60 = cos_theta*t2_42
-        t2_61 = t2_36*t2_48
-        t2_62 = t2_35*t2_48
-        t2_63 = cos_theta**3
-        t2_64 = E2*delta_z
-        t2_65 = t2_0*t2_64
-        t2_66 = delta_z*t2_27
-        t2_67 = delta_z*t2_25
-        t2_68 = delta_z**2
-        t2_69 = t2_11*t2_68
-        t2_70 = 2*t2_12
-        t2_71 = t2_22*t2_68
-        t2_72 = sin_phi**2
-        t2_73 = t2_11*t2_72
-        t2_74 = t2_30*t2_73
-        t2_75 = cos_theta*t2_8
-        t2_76 = sin_theta*t2_15
-        t2_77 = cos_phi*t2_40
-        t2_78 = t2_22*t2_72
-        t2_79 = t2_77*t2_78
-        t2_80 = 2*t2_31*t2_38
-        t2_81 = cos_theta*t2_46
-        t2_82 = cos_theta*t2_17
-        t2_83 = sin_theta*t2_17
-        t2_84 = E2*t2_31
-        t2_85 = t2_3*t2_84
-        t2_86 = t2_3*t2_50
-        t2_87 = t2_0*t2_84
-        t2_88 = t2_27*t2_31
-        t2_89 = t2_25*t2_31
-        t2_90 = t2_73*t2_77
-        t2_91 = cos_theta*delta_y
-        t2_92 = delta_x*sin_theta
-        t2_93 = t2_31*t2_37
-        t2_94 = cos_theta*delta_z
-        t2_95 = delta_z*sin_theta
-        t2_96 = t2_41*t2_75
-        t2_97 = t2_41*t2_76
-        t2_98 = 2*delta_z*t2_42
-        t2_99 = t2_12*t2_31
-        t2_100 = delta_y*t2_28
-        t2_101 = sin_theta*t2_100*t2_41
-        t2_102 = a**4*t2_34*t2_78
-        t2_103 = t2_41*t2_63
-        t2_104 = t2_41*t2_49
-        t2_105 = t2_35*t2_94
-        t2_106 = 2*t2_79
-        t2_107 = t2_41*t2_81
-        t2_108 = t2_31*t2_58
-        t2_109 = t2_54*t2_93
-        t2_110 = t2_30*t2_78
-        t2_111 = 2*t2_102
-        t2_112 = t2_111*t2_48
-        Q_delta_x += (
-                E2*a*cos_phi*sin_theta*t2_3 + E2*delta_x*t2_3 + a*c2*cos_phi*delta_x*delta_y*
-                sin_theta*t2_6*theta_dot + a*c2*cos_theta*delta_x*delta_y*phi_dot*sin_phi*t2_6 + a*
-                c2*phi_dot*sin_phi*sin_theta*t2_14*t2_6 + c2*cos_phi*cos_theta*delta_y*phi_dot*
-                sin_phi*sin_theta*t2_30*t2_6 + 2*c2*cos_phi*delta_x*phi_dot*sin_phi*t2_30*t2_44*
-                t2_6 + c2*cos_phi*delta_x*phi_dot*sin_phi*t2_30*t2_48*t2_6 + c2*delta_y*t2_30*
-                t2_34*t2_44*t2_6*theta_dot + c2*phi_dot*sin_phi*sin_theta*t2_34*t2_40*t2_48*t2_6 +
-                c2*phi_dot*sin_phi*t2_34*t2_40*t2_49*t2_6 - delta_x*t2_21 - sin_theta*t2_0*t2_5 -
-                sin_theta*t2_33 - sin_theta*t2_39 - t2_10 - t2_12*t2_26 - t2_13 - t2_15*t2_45 - t2_16 -
-                t2_17*t2_18 - t2_2 - t2_20*t2_29 - t2_23*t2_24 - t2_25*t2_26 - 2*t2_26*t2_27 - t2_32 -
-                t2_36*t2_37 - t2_43 - t2_46*t2_47)
-        Q_delta_y += (
-                E2*a*cos_phi*cos_theta*t2_3 + E2*delta_y*t2_3 + a*c2*cos_phi*sin_theta*t2_54*t2_6*
-                theta_dot + a*c2*cos_theta*phi_dot*sin_phi*t2_54*t2_6 + a*c2*delta_x*delta_y*
-                phi_dot*sin_phi*sin_theta*t2_6 + c2*cos_phi*cos_theta*delta_x*phi_dot*sin_phi*
-                sin_theta*t2_30*t2_6 + c2*cos_phi*delta_y*phi_dot*sin_phi*t2_30*t2_44*t2_6 + 2*c2*
-                cos_phi*delta_y*phi_dot*sin_phi*t2_30*t2_48*t2_6 + c2*cos_theta*delta_y*sin_theta*
-                t2_30*t2_34*t2_6*theta_dot + c2*cos_theta*phi_dot*sin_phi*t2_34*t2_40*t2_44*t2_6 +
-                c2*phi_dot*sin_phi*t2_34*t2_40*t2_6*t2_63 - cos_theta*t2_0*t2_5 - cos_theta*t2_33 -
-                cos_theta*t2_39 - delta_y*t2_11*t2_17 - delta_y*t2_56 - t2_12*t2_20 - 2*t2_20*t2_25 -
-                t2_20*t2_27 - t2_20*t2_58 - t2_24*t2_57 - t2_31*t2_57 - t2_37*t2_59 - t2_46*t2_62 -
-                t2_51 - t2_52 - t2_53 - t2_55 - t2_60 - t2_61)
-        Q_delta_z += (
-                E2*a*sin_phi*t2_3 + E2*delta_z*t2_3 + a*c2*cos_phi*delta_y*delta_z*sin_theta*t2_6*
-                theta_dot + a*c2*cos_theta*delta_y*delta_z*phi_dot*sin_phi*t2_6 + a*c2*delta_x*
-                delta_z*phi_dot*sin_phi*sin_theta*t2_6 + c2*cos_phi*delta_y*sin_phi*sin_theta*t2_30*
-                t2_6*theta_dot + c2*cos_phi*delta_z*phi_dot*sin_phi*t2_30*t2_44*t2_6 + c2*cos_phi*
-                delta_z*phi_dot*sin_phi*t2_30*t2_48*t2_6 + c2*cos_phi*phi_dot*t2_40*t2_44*t2_6*
-                t2_72 + c2*cos_phi*phi_dot*t2_40*t2_48*t2_6*t2_72 + c2*cos_theta*delta_y*phi_dot*
-                t2_30*t2_6*t2_72 + c2*delta_x*phi_dot*sin_theta*t2_30*t2_6*t2_72 - delta_z*t2_20*
-                t2_46 - delta_z*t2_21 - delta_z*t2_56 - sin_phi*t2_0*t2_4 - t2_17*t2_25 - t2_17*t2_27 -
-                t2_17*t2_70 - t2_19*t2_71 - t2_31*t2_75 - t2_31*t2_76 - t2_31*t2_81 - t2_65 - t2_66 -
-                t2_67 - t2_69 - t2_74 - t2_79 - t2_80)
+        t2_4 = E2*t2_0
+        t2_5 = a*cos_phi
+        t2_6 = sin_theta*t2_5
+        t2_7 = c2*t2_3
+        t2_8 = delta_x_dot*t2_7
+        t2_9 = delta_y_dot*t2_7
+        t2_10 = delta_z_dot*t2_7
+        t2_11 = a*sin_phi
+        t2_12 = cos_theta*t2_5
+        t2_13 = phi_dot*t2_7
+        t2_14 = t2_7*theta_dot
+        t2_15 = a**2*cos_phi*sin_phi
+        t2_16 = t2_13*t2_15
+        t2_17 = cos_theta*t2_11
+        t2_18 = sin_theta*t2_11
+        t2_19 = cos_theta**2
+        t2_20 = sin_theta**2
+        t2_21 = (
+                t2_3*max(E2 - lambda2*t2_4, delta_x*t2_12*t2_14 - delta_x*t2_13*t2_18 + delta_x*t2_8 -
+                delta_y*t2_13*t2_17 - delta_y*t2_14*t2_6 + delta_y*t2_9 + delta_z*t2_10 + delta_z*
+                t2_13*t2_5 + t2_10*t2_11 + t2_12*t2_9 - t2_16*t2_19 - t2_16*t2_20 + t2_16 + t2_6*t2_8))
+        t2_22 = delta_x*t2_21
+        t2_23 = delta_y*t2_4
+        t2_24 = delta_y*t2_21
+        t2_25 = delta_z*t2_4
+        t2_26 = delta_z*t2_21
+        t2_27 = E2*t2_3
+        t2_28 = t2_15*t2_27
+        t2_29 = delta_y*t2_27
+        t2_30 = t2_1*t2_3
+        t2_31 = t2_15*t2_4
+        t2_32 = t2_15*t2_21
+        Q_delta_x += E2*a*cos_phi*sin_theta*t2_3 + E2*delta_x*t2_3 - t2_2 - t2_21*t2_6 - t2_22 - t2_4*t2_6
+        Q_delta_y += E2*a*cos_phi*cos_theta*t2_3 + E2*delta_y*t2_3 - t2_12*t2_21 - t2_12*t2_4 - t2_23 - t2_24
+        Q_delta_z += E2*a*sin_phi*t2_3 + E2*delta_z*t2_3 - t2_11*t2_21 - t2_11*t2_4 - t2_25 - t2_26
         Q_phi += (
-                -cos_theta**4*t2_102 - delta_x*t2_106*t2_49 + delta_x*t2_8*t2_93 - delta_y*t2_106*
-                t2_63 + delta_y*t2_15*t2_93 - sin_theta**4*t2_102 - t2_1*t2_3*t2_83 + t2_10*t2_83 -
-                t2_100*t2_104 + t2_100*t2_35*t2_95 - t2_101*t2_48 + t2_101 - t2_102 + t2_103*t2_46 +
-                t2_103*t2_8 + t2_104*t2_15 - t2_105*t2_46 + t2_106*t2_91 + t2_106*t2_92 + t2_107*t2_44
-                - t2_107 - t2_108*t2_44 + t2_108*t2_48 - t2_109*t2_28 - t2_110*t2_14*t2_44 - 2*t2_110*
-                t2_37*t2_9 - t2_110*t2_48*t2_54 + t2_111*t2_44 - t2_112*t2_44 + t2_112 + t2_13*t2_83 +
-                t2_16*t2_83 + t2_19*t2_3*t2_64 - t2_19*t2_65 - t2_19*t2_66 - t2_19*t2_67 - t2_19*t2_69
-                + t2_2*t2_83 + t2_29*t2_93 - t2_31*t2_70 + 2*t2_32*t2_95 - t2_35*t2_71 - t2_36*t2_94 -
-                2*t2_44*t2_79*t2_91 - t2_44*t2_85 + t2_44*t2_87 + 2*t2_44*t2_88 + t2_44*t2_89 +
-                t2_44*t2_90 + t2_44*t2_96 + t2_44*t2_98 + t2_44*t2_99 - 2*t2_48*t2_79*t2_92 - t2_48*
-                t2_85 + t2_48*t2_87 + t2_48*t2_88 + 2*t2_48*t2_89 + t2_48*t2_90 + t2_48*t2_97 + t2_48*
-                t2_98 + t2_48*t2_99 + t2_51*t2_82 + t2_52*t2_82 + t2_53*t2_82 + t2_55*t2_82 - t2_59*
-                t2_95 + t2_74*t2_91 + t2_74*t2_92 + t2_80*t2_91 - t2_82*t2_86 + t2_85 - t2_87 - t2_88 -
-                t2_89 - t2_90 - t2_96 - t2_97 - t2_98)
-        Q_theta += (
-                E2*a*cos_phi*cos_theta*delta_x*t2_3 + E2*a*cos_phi*delta_y*sin_theta*t2_0 + a*c2*
-                cos_phi*delta_x*delta_x_dot*delta_y*sin_theta*t2_6 + a*c2*cos_phi*delta_y*delta_z*
-                delta_z_dot*sin_theta*t2_6 + a*c2*cos_phi*delta_y_dot*sin_theta*t2_54*t2_6 + c2*
-                cos_phi*cos_theta*phi_dot*sin_phi*sin_theta*t2_14*t2_30*t2_6 + c2*cos_phi*delta_x*
-                delta_y*phi_dot*sin_phi*t2_30*t2_48*t2_6 + c2*cos_phi*delta_y*delta_z_dot*sin_phi*
-                sin_theta*t2_30*t2_6 + 2*c2*cos_theta*delta_x*delta_y*sin_theta*t2_30*t2_34*t2_6*
-                theta_dot + c2*cos_theta*delta_x*phi_dot*sin_phi*t2_34*t2_40*t2_44*t2_6 + c2*
-                cos_theta*delta_y*delta_y_dot*sin_theta*t2_30*t2_34*t2_6 + c2*delta_x*phi_dot*
-                sin_phi*t2_34*t2_40*t2_6*t2_63 + c2*delta_x_dot*delta_y*t2_30*t2_34*t2_44*t2_6 +
-                c2*delta_y*delta_z*phi_dot*sin_theta*t2_30*t2_34*t2_6 + c2*delta_y*phi_dot*sin_phi*
-                sin_theta*t2_34*t2_40*t2_6 - cos_theta*t2_18*t2_31 - delta_x*t2_60 - delta_x*t2_61 -
-                delta_y*t2_42*t2_49 - delta_y*t2_43*t2_48 - t2_10*t2_20 - t2_105*t2_23 - t2_109*t2_22
-                - t2_13*t2_20 - t2_16*t2_20 - t2_2*t2_20 - t2_22*t2_31*t2_44*t2_9 - t2_26*t2_86 -
-                t2_27*t2_47 - t2_28*t2_45*t2_54 - t2_29*t2_62)
+                delta_z*t2_27*t2_5 + t2_17*t2_23 + t2_17*t2_24 - t2_17*t2_29 + t2_18*t2_2 + t2_18*
+                t2_22 - t2_18*t2_30 - t2_19*t2_28 + t2_19*t2_31 + t2_19*t2_32 - t2_20*t2_28 + t2_20*
+                t2_31 + t2_20*t2_32 - t2_25*t2_5 - t2_26*t2_5 + t2_28 - t2_31 - t2_32)
+        Q_theta += -t2_12*t2_2 - t2_12*t2_22 + t2_12*t2_30 + t2_23*t2_6 + t2_24*t2_6 - t2_29*t2_6
         Q_psi += 0
         Q_r += 0
         Q_nu += 0
@@ -1505,319 +1255,74 @@ def family_forces(y, p, out):
         out[4, 7] = 0
     # damper1: damping of tether 1 along its stretch rate (variant (issue 5))
     if lambda1 > l10:
-        f5_0 = lambda1**(-2)
+        f5_0 = 1/lambda1
         f5_1 = c1*f5_0
-        f5_2 = delta_y_dot*f5_1
-        f5_3 = delta_x*delta_y
-        f5_4 = f5_2*f5_3
-        f5_5 = delta_z_dot*f5_1
-        f5_6 = delta_z*f5_5
-        f5_7 = delta_x*f5_6
-        f5_8 = delta_x**2
-        f5_9 = delta_x_dot*f5_1
-        f5_10 = f5_8*f5_9
-        f5_11 = f5_1*theta_dot
-        f5_12 = b*cos_phi
-        f5_13 = f5_12*sin_theta
-        f5_14 = f5_11*f5_13
-        f5_15 = b*sin_phi
-        f5_16 = f5_1*phi_dot
-        f5_17 = cos_theta*f5_16
-        f5_18 = f5_15*f5_17
-        f5_19 = f5_16*sin_theta
-        f5_20 = f5_15*f5_19
-        f5_21 = delta_x*f5_16
-        f5_22 = b**2
-        f5_23 = cos_phi*f5_22*sin_phi
-        f5_24 = f5_23*f5_5
-        f5_25 = cos_phi**2
-        f5_26 = f5_22*f5_25
-        f5_27 = f5_2*f5_26
-        f5_28 = cos_theta*sin_theta
-        f5_29 = delta_z*f5_26
-        f5_30 = sin_theta**2
-        f5_31 = f5_26*f5_30
-        f5_32 = b**3
-        f5_33 = f5_26*f5_28
-        f5_34 = delta_x*f5_11
-        f5_35 = sin_theta**3
-        f5_36 = f5_25*f5_32*sin_phi
-        f5_37 = f5_16*f5_36
-        f5_38 = cos_theta**2
-        f5_39 = f5_19*f5_36
-        f5_40 = f5_3*f5_9
-        f5_41 = delta_y*f5_6
-        f5_42 = delta_y**2
-        f5_43 = f5_2*f5_42
-        f5_44 = cos_theta*f5_24
-        f5_45 = delta_y*f5_16
-        f5_46 = f5_27*f5_38
-        f5_47 = f5_26*f5_38
-        f5_48 = cos_theta**3
-        f5_49 = delta_x*f5_9
-        f5_50 = delta_y*f5_2
-        f5_51 = delta_z**2
-        f5_52 = delta_y*f5_11*sin_theta
-        f5_53 = cos_theta*f5_15
-        f5_54 = f5_15*sin_theta
-        f5_55 = sin_phi**2
-        f5_56 = f5_5*f5_55
-        f5_57 = cos_theta*f5_2
-        f5_58 = f5_9*sin_theta
-        f5_59 = 2*delta_z
-        f5_60 = f5_16*f5_23
-        f5_61 = cos_theta*f5_34
-        f5_62 = cos_phi*f5_32
-        f5_63 = f5_16*f5_55
-        f5_64 = f5_62*f5_63
-        f5_65 = b**4
-        f5_66 = f5_25*f5_63*f5_65
-        f5_67 = f5_56*f5_62
-        f5_68 = f5_36*f5_48
-        f5_69 = 2*f5_64
-        f5_70 = f5_22*f5_63
-        f5_71 = f5_37*f5_59
-        f5_72 = cos_theta*f5_21
-        out[5, 0] = (
-                b*c1*cos_phi*cos_theta*delta_x*delta_y_dot*f5_0 + b*c1*cos_phi*cos_theta*f5_0*
-                f5_8*theta_dot + 2*b*c1*cos_phi*delta_x*delta_x_dot*f5_0*sin_theta + b*c1*cos_phi*
-                delta_x*delta_z*f5_0*phi_dot + b*c1*cos_phi*delta_y*delta_y_dot*f5_0*sin_theta + b*
-                c1*cos_phi*delta_z*delta_z_dot*f5_0*sin_theta + b*c1*delta_x*delta_z_dot*f5_0*
-                sin_phi + c1*cos_phi*cos_theta*delta_y*f5_0*f5_22*phi_dot*sin_phi*sin_theta + 2*c1*
-                cos_phi*delta_x*f5_0*f5_22*f5_30*phi_dot*sin_phi + c1*cos_phi*delta_x*f5_0*f5_22*
-                f5_38*phi_dot*sin_phi + c1*delta_y*f5_0*f5_22*f5_25*f5_30*theta_dot + c1*f5_0*
-                f5_25*f5_32*phi_dot*sin_phi*sin_theta - f5_10 - f5_14*f5_3 - f5_18*f5_3 - f5_19*f5_29
-                - f5_20*f5_8 - f5_21*f5_23 - f5_24*sin_theta - f5_27*f5_28 - f5_31*f5_9 - f5_33*f5_34 -
-                f5_35*f5_37 - f5_38*f5_39 - f5_4 - f5_7)
-        out[5, 1] = (
-                b*c1*cos_phi*cos_theta*delta_x*delta_x_dot*f5_0 + b*c1*cos_phi*cos_theta*delta_x*
-                delta_y*f5_0*theta_dot + 2*b*c1*cos_phi*cos_theta*delta_y*delta_y_dot*f5_0 + b*c1*
-                cos_phi*cos_theta*delta_z*delta_z_dot*f5_0 + b*c1*cos_phi*delta_x_dot*delta_y*f5_0*
-                sin_theta + b*c1*cos_phi*delta_y*delta_z*f5_0*phi_dot + b*c1*delta_y*delta_z_dot*
-                f5_0*sin_phi + c1*cos_phi*cos_theta*delta_x*f5_0*f5_22*phi_dot*sin_phi*sin_theta +
-                c1*cos_phi*delta_y*f5_0*f5_22*f5_30*phi_dot*sin_phi + 2*c1*cos_phi*delta_y*f5_0*
-                f5_22*f5_38*phi_dot*sin_phi + c1*cos_theta*delta_y*f5_0*f5_22*f5_25*sin_theta*
-                theta_dot + c1*cos_theta*f5_0*f5_25*f5_32*phi_dot*sin_phi - cos_theta*f5_30*f5_37 -
-                f5_14*f5_42 - f5_17*f5_29 - f5_18*f5_42 - f5_20*f5_3 - f5_23*f5_45 - f5_33*f5_9 -
-                f5_34*f5_47 - f5_37*f5_48 - f5_40 - f5_41 - f5_43 - f5_44 - f5_46)
-        out[5, 2] = (
-                b*c1*cos_phi*cos_theta*delta_x*delta_z*f5_0*theta_dot + b*c1*cos_phi*cos_theta*
-                delta_y_dot*delta_z*f5_0 + b*c1*cos_phi*delta_x_dot*delta_z*f5_0*sin_theta + b*c1*
-                cos_phi*f5_0*f5_51*phi_dot + b*c1*delta_x*delta_x_dot*f5_0*sin_phi + b*c1*delta_y*
-                delta_y_dot*f5_0*sin_phi + 2*b*c1*delta_z*delta_z_dot*f5_0*sin_phi + c1*cos_phi*
-                delta_y*f5_0*f5_22*sin_phi*sin_theta*theta_dot + c1*cos_phi*delta_z*f5_0*f5_22*
-                f5_30*phi_dot*sin_phi + c1*cos_phi*delta_z*f5_0*f5_22*f5_38*phi_dot*sin_phi + c1*
-                cos_phi*f5_0*f5_32*f5_55*phi_dot + c1*cos_theta*delta_y*f5_0*f5_22*f5_55*phi_dot +
-                c1*delta_x*f5_0*f5_22*f5_55*phi_dot*sin_theta - delta_z*f5_12*f5_52 - delta_z*f5_21*
-                f5_54 - delta_z*f5_45*f5_53 - delta_z*f5_49 - delta_z*f5_50 - f5_22*f5_56 - f5_23*f5_57
-                - f5_23*f5_58 - f5_23*f5_61 - f5_30*f5_64 - f5_38*f5_64 - f5_5*f5_51 - f5_59*f5_60)
+        f5_2 = b*sin_phi
+        f5_3 = b*cos_phi
+        f5_4 = cos_theta*f5_3
+        f5_5 = f5_3*sin_theta
+        f5_6 = f5_1*phi_dot
+        f5_7 = b**2
+        f5_8 = cos_theta**2
+        f5_9 = cos_phi*f5_7*sin_phi
+        f5_10 = f5_6*f5_9
+        f5_11 = sin_theta**2
+        f5_12 = (
+                f5_0*max(E1 - E1*lambda1/l10, b*c1*cos_phi*delta_y*f5_0*sin_theta*theta_dot + b*c1*
+                cos_theta*delta_y*f5_0*phi_dot*sin_phi + b*c1*delta_x*f5_0*phi_dot*sin_phi*
+                sin_theta + c1*cos_phi*f5_0*f5_7*phi_dot*sin_phi + c1*delta_x*delta_x_dot*f5_0 + c1*
+                delta_y*delta_y_dot*f5_0 + c1*delta_z*delta_z_dot*f5_0 - delta_x*f5_1*f5_4*theta_dot
+                - delta_x_dot*f5_1*f5_5 - delta_y_dot*f5_1*f5_4 - delta_z*f5_3*f5_6 - delta_z_dot*
+                f5_1*f5_2 - f5_10*f5_11 - f5_10*f5_8))
+        f5_13 = delta_x*f5_12
+        f5_14 = f5_12*f5_3
+        f5_15 = delta_y*f5_12
+        f5_16 = delta_z*f5_12
+        f5_17 = f5_12*f5_9
+        out[5, 0] = -f5_13 + f5_14*sin_theta
+        out[5, 1] = cos_theta*f5_14 - f5_15
+        out[5, 2] = f5_12*f5_2 - f5_16
         out[5, 3] = (
-                b*c1*cos_phi*delta_x*delta_x_dot*delta_z*f5_0 + b*c1*cos_phi*delta_y*delta_y_dot*
-                delta_z*f5_0 + b*c1*cos_phi*delta_z_dot*f5_0*f5_51 + c1*cos_phi*cos_theta*delta_x*
-                delta_y_dot*f5_0*f5_22*sin_phi*sin_theta + c1*cos_phi*cos_theta*delta_x_dot*delta_y*
-                f5_0*f5_22*sin_phi*sin_theta + 2*c1*cos_phi*cos_theta*delta_y*delta_z*f5_0*f5_22*
-                phi_dot*sin_phi + 2*c1*cos_phi*cos_theta*delta_y*f5_0*f5_30*f5_32*f5_55*phi_dot +
-                c1*cos_phi*cos_theta*f5_0*f5_22*f5_8*sin_phi*sin_theta*theta_dot + 2*c1*cos_phi*
-                delta_x*delta_x_dot*f5_0*f5_22*f5_30*sin_phi + c1*cos_phi*delta_x*delta_x_dot*f5_0*
-                f5_22*f5_38*sin_phi + c1*cos_phi*delta_x*delta_y*f5_0*f5_22*f5_38*sin_phi*theta_dot
-                + 2*c1*cos_phi*delta_x*delta_z*f5_0*f5_22*phi_dot*sin_phi*sin_theta + 2*c1*
-                cos_phi*delta_x*f5_0*f5_32*f5_35*f5_55*phi_dot + 2*c1*cos_phi*delta_x*f5_0*f5_32*
-                f5_38*f5_55*phi_dot*sin_theta + c1*cos_phi*delta_y*delta_y_dot*f5_0*f5_22*f5_30*
-                sin_phi + 2*c1*cos_phi*delta_y*delta_y_dot*f5_0*f5_22*f5_38*sin_phi + 2*c1*cos_phi*
-                delta_y*f5_0*f5_32*f5_48*f5_55*phi_dot + c1*cos_phi*delta_z*delta_z_dot*f5_0*f5_22*
-                f5_30*sin_phi + c1*cos_phi*delta_z*delta_z_dot*f5_0*f5_22*f5_38*sin_phi + c1*
-                cos_phi*delta_z_dot*f5_0*f5_32*f5_55 + c1*cos_theta*delta_x*f5_0*f5_25*f5_32*
-                sin_phi*theta_dot + c1*cos_theta*delta_y*delta_z_dot*f5_0*f5_22*f5_55 + c1*cos_theta*
-                delta_y_dot*f5_0*f5_25*f5_32*sin_phi + c1*delta_x*delta_z_dot*f5_0*f5_22*f5_55*
-                sin_theta + c1*delta_x_dot*f5_0*f5_25*f5_32*sin_phi*sin_theta + c1*delta_y*delta_z*
-                f5_0*f5_22*f5_25*sin_theta*theta_dot + c1*delta_y*f5_0*f5_25*f5_32*f5_35*sin_phi*
-                theta_dot + c1*delta_y*f5_0*f5_25*f5_32*f5_38*sin_phi*sin_theta*theta_dot + 2*c1*
-                delta_z*f5_0*f5_25*f5_32*phi_dot*sin_phi + 2*c1*f5_0*f5_25*f5_30*f5_55*f5_65*
-                phi_dot + 2*c1*f5_0*f5_25*f5_38*f5_55*f5_65*phi_dot - cos_theta**4*f5_66 - cos_theta*
-                delta_y*f5_69 - cos_theta*delta_z*f5_27 - delta_x*f5_69*sin_theta - f5_10*f5_54 -
-                f5_11*f5_23*f5_28*f5_42 - f5_11*f5_23*f5_3*f5_30 - f5_16*f5_26*f5_51 - f5_2*f5_68 -
-                f5_23*f5_49 - f5_23*f5_50 - 2*f5_23*f5_6 - 2*f5_28*f5_3*f5_70 - f5_29*f5_58 - f5_29*
-                f5_61 - f5_30*f5_36*f5_57 - f5_30*f5_36*f5_61 - 2*f5_30*f5_38*f5_66 - f5_30*f5_67 -
-                f5_30*f5_70*f5_8 - f5_30*f5_71 - f5_34*f5_68 - f5_35*f5_36*f5_9 - f5_36*f5_38*f5_58 -
-                f5_36*f5_52 - f5_38*f5_42*f5_70 - f5_38*f5_67 - f5_38*f5_71 - f5_4*f5_54 - f5_40*f5_53
-                - f5_41*f5_53 - f5_43*f5_53 - f5_54*f5_7 - f5_66*sin_theta**4 - f5_66)
-        out[5, 4] = (
-                b*c1*cos_phi*cos_theta*delta_x*delta_y*delta_y_dot*f5_0 + b*c1*cos_phi*cos_theta*
-                delta_x*delta_z*delta_z_dot*f5_0 + b*c1*cos_phi*cos_theta*delta_x_dot*f5_0*f5_8 +
-                c1*cos_phi*cos_theta*f5_0*f5_22*f5_8*phi_dot*sin_phi*sin_theta + c1*cos_phi*
-                delta_x*delta_y*f5_0*f5_22*f5_38*phi_dot*sin_phi + c1*cos_phi*delta_y*delta_z_dot*
-                f5_0*f5_22*sin_phi*sin_theta + 2*c1*cos_theta*delta_x*delta_y*f5_0*f5_22*f5_25*
-                sin_theta*theta_dot + c1*cos_theta*delta_x*f5_0*f5_25*f5_32*phi_dot*sin_phi + c1*
-                cos_theta*delta_y*delta_y_dot*f5_0*f5_22*f5_25*sin_theta + c1*delta_x_dot*delta_y*
-                f5_0*f5_22*f5_25*f5_30 + c1*delta_y*delta_z*f5_0*f5_22*f5_25*phi_dot*sin_theta +
-                c1*delta_y*f5_0*f5_25*f5_32*f5_35*phi_dot*sin_phi + c1*delta_y*f5_0*f5_25*f5_32*
-                f5_38*phi_dot*sin_phi*sin_theta - cos_theta*f5_19*f5_23*f5_42 - delta_x*f5_44 -
-                delta_x*f5_46 - delta_y*f5_39 - f5_11*f5_31*f5_42 - f5_11*f5_47*f5_8 - f5_13*f5_40 -
-                f5_13*f5_41 - f5_13*f5_43 - f5_21*f5_68 - f5_29*f5_72 - f5_3*f5_30*f5_60 - f5_30*
-                f5_36*f5_72 - f5_33*f5_49)
+                -cos_theta*f5_15*f5_2 + f5_11*f5_17 - f5_13*f5_2*sin_theta + f5_16*f5_3 + f5_17*f5_8 -
+                f5_17)
+        out[5, 4] = f5_13*f5_4 - f5_15*f5_5
         out[5, 5] = 0
         out[5, 6] = 0
         out[5, 7] = 0
     # damper2: damping of tether 2 along its stretch rate (variant (issue 5))
     if lambda2 > l20:
-        f6_0 = lambda2**(-2)
+        f6_0 = 1/lambda2
         f6_1 = c2*f6_0
-        f6_2 = delta_y_dot*f6_1
-        f6_3 = delta_x*delta_y
-        f6_4 = f6_2*f6_3
-        f6_5 = delta_z_dot*f6_1
-        f6_6 = delta_z*f6_5
-        f6_7 = delta_x*f6_6
-        f6_8 = delta_x**2
-        f6_9 = delta_x_dot*f6_1
-        f6_10 = f6_8*f6_9
-        f6_11 = a*sin_phi
-        f6_12 = f6_11*f6_5
-        f6_13 = a*cos_phi
-        f6_14 = cos_theta*f6_13
-        f6_15 = f6_14*f6_2
-        f6_16 = f6_1*phi_dot
-        f6_17 = delta_z*f6_16
-        f6_18 = f6_13*f6_17
-        f6_19 = delta_y*f6_2
-        f6_20 = f6_13*sin_theta
-        f6_21 = delta_x*f6_9
-        f6_22 = f6_1*theta_dot
-        f6_23 = f6_22*f6_8
-        f6_24 = f6_16*sin_phi
-        f6_25 = a**2
-        f6_26 = cos_phi*f6_25
-        f6_27 = f6_24*f6_26
-        f6_28 = f6_26*sin_phi
-        f6_29 = f6_28*f6_5
-        f6_30 = cos_phi**2
-        f6_31 = f6_25*f6_30
-        f6_32 = f6_2*f6_31
-        f6_33 = cos_theta*sin_theta
-        f6_34 = f6_16*sin_theta
-        f6_35 = delta_z*f6_31
-        f6_36 = a**3
-        f6_37 = f6_30*f6_36
-        f6_38 = f6_37*sin_phi
-        f6_39 = f6_34*f6_38
-        f6_40 = sin_theta**2
-        f6_41 = f6_31*f6_40
-        f6_42 = f6_31*f6_33
-        f6_43 = delta_x*f6_22
-        f6_44 = cos_theta**2
-        f6_45 = sin_theta**3
-        f6_46 = f6_3*f6_9
-        f6_47 = delta_y*f6_6
-        f6_48 = delta_y**2
-        f6_49 = f6_2*f6_48
-        f6_50 = f6_20*f6_9
-        f6_51 = f6_22*f6_3
-        f6_52 = cos_theta*f6_29
-        f6_53 = delta_y*f6_27
-        f6_54 = cos_theta*f6_17*f6_31
-        f6_55 = f6_24*f6_37
-        f6_56 = cos_theta*f6_55
-        f6_57 = f6_32*f6_44
-        f6_58 = f6_31*f6_44
-        f6_59 = cos_theta**3
-        f6_60 = delta_z*f6_21
-        f6_61 = delta_z*f6_19
-        f6_62 = delta_z**2
-        f6_63 = f6_5*f6_62
-        f6_64 = 2*f6_6
-        f6_65 = f6_16*f6_62
-        f6_66 = sin_phi**2
-        f6_67 = f6_5*f6_66
-        f6_68 = f6_25*f6_67
-        f6_69 = cos_theta*f6_2
-        f6_70 = f6_9*sin_theta
-        f6_71 = cos_phi*f6_36
-        f6_72 = f6_16*f6_66
-        f6_73 = f6_71*f6_72
-        f6_74 = cos_theta*f6_43
-        f6_75 = cos_theta*f6_11
-        f6_76 = f6_11*sin_theta
-        f6_77 = f6_21*f6_28
-        f6_78 = f6_19*f6_28
-        f6_79 = f6_67*f6_71
-        f6_80 = cos_theta*delta_y
-        f6_81 = delta_x*sin_theta
-        f6_82 = f6_28*f6_33
-        f6_83 = cos_theta*delta_z
-        f6_84 = f6_38*f6_69
-        f6_85 = f6_38*f6_70
-        f6_86 = 2*delta_z*f6_55
-        f6_87 = f6_28*f6_6
-        f6_88 = delta_y*f6_22
-        f6_89 = f6_88*sin_theta
-        f6_90 = f6_38*f6_89
-        f6_91 = f6_28*f6_34
-        f6_92 = a**4*f6_30*f6_72
-        f6_93 = f6_38*f6_59
-        f6_94 = f6_38*f6_45
-        f6_95 = 2*f6_73
-        f6_96 = f6_38*f6_74
-        f6_97 = f6_28*f6_51
-        f6_98 = f6_25*f6_72
-        f6_99 = 2*f6_92
-        f6_100 = f6_44*f6_99
-        out[6, 0] = (
-                a*c2*cos_phi*delta_x*delta_y*f6_0*sin_theta*theta_dot + a*c2*cos_theta*delta_x*
-                delta_y*f6_0*phi_dot*sin_phi + a*c2*f6_0*f6_8*phi_dot*sin_phi*sin_theta + c2*
-                cos_phi*cos_theta*delta_y*f6_0*f6_25*phi_dot*sin_phi*sin_theta + 2*c2*cos_phi*
-                delta_x*f6_0*f6_25*f6_40*phi_dot*sin_phi + c2*cos_phi*delta_x*f6_0*f6_25*f6_44*
-                phi_dot*sin_phi + c2*delta_y*f6_0*f6_25*f6_30*f6_40*theta_dot + c2*f6_0*f6_30*
-                f6_36*f6_44*phi_dot*sin_phi*sin_theta + c2*f6_0*f6_30*f6_36*f6_45*phi_dot*sin_phi -
-                delta_x*f6_12 - delta_x*f6_15 - delta_x*f6_18 - delta_x*f6_27 - f6_10 - f6_14*f6_23 -
-                f6_19*f6_20 - 2*f6_20*f6_21 - f6_20*f6_6 - f6_29*sin_theta - f6_32*f6_33 - f6_34*f6_35
-                - f6_39 - f6_4 - f6_41*f6_9 - f6_42*f6_43 - f6_7)
-        out[6, 1] = (
-                a*c2*cos_phi*f6_0*f6_48*sin_theta*theta_dot + a*c2*cos_theta*f6_0*f6_48*phi_dot*
-                sin_phi + a*c2*delta_x*delta_y*f6_0*phi_dot*sin_phi*sin_theta + c2*cos_phi*
-                cos_theta*delta_x*f6_0*f6_25*phi_dot*sin_phi*sin_theta + c2*cos_phi*delta_y*f6_0*
-                f6_25*f6_40*phi_dot*sin_phi + 2*c2*cos_phi*delta_y*f6_0*f6_25*f6_44*phi_dot*
-                sin_phi + c2*cos_theta*delta_y*f6_0*f6_25*f6_30*sin_theta*theta_dot + c2*cos_theta*
-                f6_0*f6_30*f6_36*f6_40*phi_dot*sin_phi + c2*f6_0*f6_30*f6_36*f6_59*phi_dot*sin_phi
-                - delta_y*f6_12 - delta_y*f6_18 - delta_y*f6_50 - 2*f6_14*f6_19 - f6_14*f6_21 - f6_14*
-                f6_51 - f6_14*f6_6 - f6_42*f6_9 - f6_43*f6_58 - f6_46 - f6_47 - f6_49 - f6_52 - f6_53 -
-                f6_54 - f6_56 - f6_57)
-        out[6, 2] = (
-                a*c2*cos_phi*delta_y*delta_z*f6_0*sin_theta*theta_dot + a*c2*cos_theta*delta_y*
-                delta_z*f6_0*phi_dot*sin_phi + a*c2*delta_x*delta_z*f6_0*phi_dot*sin_phi*sin_theta
-                + c2*cos_phi*delta_y*f6_0*f6_25*sin_phi*sin_theta*theta_dot + c2*cos_phi*delta_z*
-                f6_0*f6_25*f6_40*phi_dot*sin_phi + c2*cos_phi*delta_z*f6_0*f6_25*f6_44*phi_dot*
-                sin_phi + c2*cos_phi*f6_0*f6_36*f6_40*f6_66*phi_dot + c2*cos_phi*f6_0*f6_36*f6_44*
-                f6_66*phi_dot + c2*cos_theta*delta_y*f6_0*f6_25*f6_66*phi_dot + c2*delta_x*f6_0*
-                f6_25*f6_66*phi_dot*sin_theta - delta_z*f6_14*f6_43 - delta_z*f6_15 - 2*delta_z*f6_27
-                - delta_z*f6_50 - f6_11*f6_19 - f6_11*f6_21 - f6_11*f6_64 - f6_13*f6_65 - f6_28*f6_69 -
-                f6_28*f6_70 - f6_28*f6_74 - f6_60 - f6_61 - f6_63 - f6_68 - f6_73)
-        out[6, 3] = (
-                -cos_theta**4*f6_92 + 2*delta_x*delta_z*f6_91 + delta_x*f6_2*f6_82 - delta_x*f6_45*
-                f6_95 - delta_y*f6_59*f6_95 + delta_y*f6_82*f6_9 + f6_10*f6_76 - f6_100*f6_40 + f6_100
-                - f6_13*f6_60 - f6_13*f6_61 - f6_13*f6_63 + f6_2*f6_93 - f6_22*f6_48*f6_82 + f6_23*
-                f6_82 - f6_28*f6_64 - 2*f6_3*f6_33*f6_98 - f6_31*f6_65 - f6_32*f6_83 - f6_35*f6_70 -
-                f6_35*f6_74 + f6_35*f6_89 + f6_4*f6_76 - 2*f6_40*f6_73*f6_80 + 2*f6_40*f6_77 + f6_40*
-                f6_78 + f6_40*f6_79 - f6_40*f6_8*f6_98 + f6_40*f6_84 + f6_40*f6_86 + f6_40*f6_87 +
-                f6_40*f6_96 - f6_40*f6_97 + f6_40*f6_99 + f6_43*f6_93 - f6_44*f6_48*f6_98 - 2*f6_44*
-                f6_73*f6_81 + f6_44*f6_77 + 2*f6_44*f6_78 + f6_44*f6_79 + f6_44*f6_85 + f6_44*f6_86 +
-                f6_44*f6_87 - f6_44*f6_90 + f6_44*f6_97 + f6_46*f6_75 + f6_47*f6_75 + f6_49*f6_75 + 2*
-                f6_53*f6_83 + f6_68*f6_80 + f6_68*f6_81 + f6_7*f6_76 - f6_77 - f6_78 - f6_79 + f6_80*
-                f6_95 + f6_81*f6_95 - f6_84 - f6_85 - f6_86 - f6_88*f6_94 + f6_9*f6_94 + f6_90 - f6_92*
-                sin_theta**4 - f6_92 - f6_96)
-        out[6, 4] = (
-                a*c2*cos_phi*delta_x*delta_x_dot*delta_y*f6_0*sin_theta + a*c2*cos_phi*delta_y*
-                delta_z*delta_z_dot*f6_0*sin_theta + a*c2*cos_phi*delta_y_dot*f6_0*f6_48*sin_theta +
-                c2*cos_phi*cos_theta*f6_0*f6_25*f6_8*phi_dot*sin_phi*sin_theta + c2*cos_phi*
-                delta_x*delta_y*f6_0*f6_25*f6_44*phi_dot*sin_phi + c2*cos_phi*delta_y*delta_z_dot*
-                f6_0*f6_25*sin_phi*sin_theta + 2*c2*cos_theta*delta_x*delta_y*f6_0*f6_25*f6_30*
-                sin_theta*theta_dot + c2*cos_theta*delta_x*f6_0*f6_30*f6_36*f6_40*phi_dot*sin_phi +
-                c2*cos_theta*delta_y*delta_y_dot*f6_0*f6_25*f6_30*sin_theta + c2*delta_x*f6_0*
-                f6_30*f6_36*f6_59*phi_dot*sin_phi + c2*delta_x_dot*delta_y*f6_0*f6_25*f6_30*f6_40 +
-                c2*delta_y*delta_z*f6_0*f6_25*f6_30*phi_dot*sin_theta + c2*delta_y*f6_0*f6_30*
-                f6_36*phi_dot*sin_phi*sin_theta - cos_theta*f6_48*f6_91 - delta_x*f6_52 - delta_x*
-                f6_54 - delta_x*f6_56 - delta_x*f6_57 - delta_y*f6_39*f6_44 - delta_y*f6_45*f6_55 -
-                f6_10*f6_14 - f6_14*f6_4 - f6_14*f6_7 - f6_21*f6_42 - f6_22*f6_41*f6_48 - f6_23*f6_58
-                - f6_27*f6_3*f6_40)
+        f6_2 = delta_x_dot*f6_1
+        f6_3 = delta_y_dot*f6_1
+        f6_4 = delta_z_dot*f6_1
+        f6_5 = a*sin_phi
+        f6_6 = a*cos_phi
+        f6_7 = cos_theta*f6_6
+        f6_8 = f6_6*sin_theta
+        f6_9 = f6_1*phi_dot
+        f6_10 = f6_1*theta_dot
+        f6_11 = a**2*cos_phi*sin_phi
+        f6_12 = f6_11*f6_9
+        f6_13 = cos_theta*f6_5
+        f6_14 = f6_5*sin_theta
+        f6_15 = cos_theta**2
+        f6_16 = sin_theta**2
+        f6_17 = (
+                max(E2 - E2*lambda2/l20, delta_x*f6_10*f6_7 - delta_x*f6_14*f6_9 + delta_x*f6_2 -
+                delta_y*f6_10*f6_8 - delta_y*f6_13*f6_9 + delta_y*f6_3 + delta_z*f6_4 + delta_z*f6_6*
+                f6_9 - f6_12*f6_15 - f6_12*f6_16 + f6_12 + f6_2*f6_8 + f6_3*f6_7 + f6_4*f6_5))
+        f6_18 = f6_0*f6_17
+        f6_19 = delta_x*f6_18
+        f6_20 = f6_18*f6_6
+        f6_21 = delta_y*f6_18
+        f6_22 = delta_z*f6_18
+        f6_23 = f6_11*f6_18
+        out[6, 0] = -f6_19 - f6_20*sin_theta
+        out[6, 1] = -cos_theta*f6_20 - f6_21
+        out[6, 2] = -f6_18*f6_5 - f6_22
+        out[6, 3] = f6_13*f6_21 + f6_14*f6_19 + f6_15*f6_23 + f6_16*f6_23 - f6_22*f6_6 - f6_23
+        out[6, 4] = a*cos_phi*delta_y*f6_0*f6_17*sin_theta - f6_19*f6_7
         out[6, 5] = 0
         out[6, 6] = 0
         out[6, 7] = 0

@@ -189,82 +189,84 @@ def rhs(t, y, p, dydt):
             math.sqrt((b*sin_phi - delta_z)**2 + (b*cos_phi*cos_theta - delta_y)**2 + (b*cos_phi*
             sin_theta - delta_x)**2))
     if lambda1 > l10:  # tether 1 taut: spring1, damper1
-        t1_0 = 1/lambda1
-        t1_1 = b*cos_phi
-        t1_2 = sin_theta*t1_1
-        t1_3 = t1_0*(-delta_x + t1_2)
+        t1_0 = b*cos_phi
+        t1_1 = sin_theta*t1_0
+        t1_2 = -delta_x + t1_1
+        t1_3 = 1/lambda1
         t1_4 = -1 + lambda1/l10
         t1_5 = E1*t1_4
         t1_6 = t1_3*t1_5
-        t1_7 = b*sin_phi
-        t1_8 = cos_theta*t1_1
-        t1_9 = phi_dot*t1_0
-        t1_10 = b**2
-        t1_11 = cos_phi*sin_phi*t1_10*t1_9
-        t1_12 = (
-                b*cos_phi*delta_y*sin_theta*t1_0*theta_dot + b*cos_theta*delta_y*phi_dot*sin_phi*
-                t1_0 + b*delta_x*phi_dot*sin_phi*sin_theta*t1_0 + cos_phi*phi_dot*sin_phi*t1_0*t1_10
-                - cos_theta**2*t1_11 + delta_x*delta_x_dot*t1_0 - delta_x*t1_0*t1_8*theta_dot -
-                delta_x_dot*t1_0*t1_2 + delta_y*delta_y_dot*t1_0 - delta_y_dot*t1_0*t1_8 + delta_z*
-                delta_z_dot*t1_0 - delta_z*t1_1*t1_9 - delta_z_dot*t1_0*t1_7 - sin_theta**2*t1_11)
-        t1_13 = c1*t1_12
+        t1_7 = t1_2*t1_6
+        t1_8 = b*sin_phi
+        t1_9 = cos_theta*t1_0
+        t1_10 = phi_dot*t1_3
+        t1_11 = b**2
+        t1_12 = cos_phi*sin_phi*t1_10*t1_11
+        t1_13 = (
+                max(-t1_5, c1*(b*cos_phi*delta_y*sin_theta*t1_3*theta_dot + b*cos_theta*delta_y*
+                phi_dot*sin_phi*t1_3 + b*delta_x*phi_dot*sin_phi*sin_theta*t1_3 + cos_phi*phi_dot*
+                sin_phi*t1_11*t1_3 - cos_theta**2*t1_12 + delta_x*delta_x_dot*t1_3 - delta_x*t1_3*
+                t1_9*theta_dot - delta_x_dot*t1_1*t1_3 + delta_y*delta_y_dot*t1_3 - delta_y_dot*t1_3*
+                t1_9 + delta_z*delta_z_dot*t1_3 - delta_z*t1_0*t1_10 - delta_z_dot*t1_3*t1_8 -
+                sin_theta**2*t1_12)))
         t1_14 = t1_13*t1_3
-        t1_15 = -delta_y + t1_8
-        t1_16 = t1_0*t1_15
-        t1_17 = t1_16*t1_5
-        t1_18 = t1_13*t1_16
-        t1_19 = t1_0*(-delta_z + t1_7)
-        t1_20 = t1_19*t1_5
-        t1_21 = t1_13*t1_19
-        t1_22 = cos_theta*t1_7
-        t1_23 = sin_theta*t1_7
-        Q0 += t1_14 + t1_6
+        t1_15 = t1_14*t1_2
+        t1_16 = -delta_y + t1_9
+        t1_17 = t1_16*t1_6
+        t1_18 = t1_14*t1_16
+        t1_19 = -delta_z + t1_8
+        t1_20 = t1_19*t1_6
+        t1_21 = t1_14*t1_19
+        t1_22 = cos_theta*t1_8
+        t1_23 = sin_theta*t1_8
+        Q0 += t1_15 + t1_7
         Q1 += t1_17 + t1_18
         Q2 += t1_20 + t1_21
-        Q3 += -t1_1*t1_20 - t1_1*t1_21 + t1_14*t1_23 + t1_17*t1_22 + t1_18*t1_22 + t1_23*t1_6
+        Q3 += -t1_0*t1_20 - t1_0*t1_21 + t1_15*t1_23 + t1_17*t1_22 + t1_18*t1_22 + t1_23*t1_7
         Q4 += (
-                E1*b*cos_phi*sin_theta*t1_0*t1_15*t1_4 + b*c1*cos_phi*sin_theta*t1_0*t1_12*t1_15
-                - t1_14*t1_8 - t1_6*t1_8)
+                E1*b*cos_phi*sin_theta*t1_16*t1_3*t1_4 + b*cos_phi*sin_theta*t1_13*t1_16*t1_3 -
+                t1_15*t1_9 - t1_7*t1_9)
     lambda2 = (
             math.sqrt((-a*sin_phi - delta_z)**2 + (-a*cos_phi*cos_theta - delta_y)**2 + (-a*cos_phi*
             sin_theta - delta_x)**2))
     if lambda2 > l20:  # tether 2 taut: spring2, damper2
-        t2_0 = 1/lambda2
-        t2_1 = a*cos_phi
-        t2_2 = sin_theta*t2_1
-        t2_3 = t2_0*(-delta_x - t2_2)
+        t2_0 = a*cos_phi
+        t2_1 = sin_theta*t2_0
+        t2_2 = -delta_x - t2_1
+        t2_3 = 1/lambda2
         t2_4 = -1 + lambda2/l20
         t2_5 = E2*t2_4
         t2_6 = t2_3*t2_5
-        t2_7 = delta_x_dot*t2_0
-        t2_8 = delta_y_dot*t2_0
-        t2_9 = delta_z_dot*t2_0
-        t2_10 = a*sin_phi
-        t2_11 = cos_theta*t2_1
-        t2_12 = phi_dot*t2_0
-        t2_13 = t2_0*theta_dot
-        t2_14 = a**2*cos_phi*sin_phi*t2_12
-        t2_15 = t2_10*t2_12
-        t2_16 = (
-                -cos_theta**2*t2_14 - cos_theta*delta_y*t2_15 - delta_x*sin_theta*t2_15 + delta_x*
-                t2_11*t2_13 + delta_x*t2_7 - delta_y*t2_13*t2_2 + delta_y*t2_8 + delta_z*t2_1*t2_12 +
-                delta_z*t2_9 - sin_theta**2*t2_14 + t2_10*t2_9 + t2_11*t2_8 + t2_14 + t2_2*t2_7)
-        t2_17 = c2*t2_16
+        t2_7 = t2_2*t2_6
+        t2_8 = delta_x_dot*t2_3
+        t2_9 = delta_y_dot*t2_3
+        t2_10 = delta_z_dot*t2_3
+        t2_11 = a*sin_phi
+        t2_12 = cos_theta*t2_0
+        t2_13 = phi_dot*t2_3
+        t2_14 = t2_3*theta_dot
+        t2_15 = a**2*cos_phi*sin_phi*t2_13
+        t2_16 = t2_11*t2_13
+        t2_17 = (
+                max(-t2_5, c2*(-cos_theta**2*t2_15 - cos_theta*delta_y*t2_16 - delta_x*sin_theta*t2_16
+                + delta_x*t2_12*t2_14 + delta_x*t2_8 - delta_y*t2_1*t2_14 + delta_y*t2_9 + delta_z*
+                t2_0*t2_13 + delta_z*t2_10 - sin_theta**2*t2_15 + t2_1*t2_8 + t2_10*t2_11 + t2_12*t2_9
+                + t2_15)))
         t2_18 = t2_17*t2_3
-        t2_19 = t2_0*(-delta_y - t2_11)
-        t2_20 = t2_19*t2_5
-        t2_21 = t2_17*t2_19
-        t2_22 = -delta_z - t2_10
-        t2_23 = t2_0*t2_22
-        t2_24 = cos_theta*t2_10
-        t2_25 = sin_theta*t2_10
-        Q0 += t2_18 + t2_6
-        Q1 += t2_20 + t2_21
-        Q2 += t2_17*t2_23 + t2_23*t2_5
+        t2_19 = t2_18*t2_2
+        t2_20 = -delta_y - t2_12
+        t2_21 = t2_20*t2_6
+        t2_22 = t2_18*t2_20
+        t2_23 = -delta_z - t2_11
+        t2_24 = cos_theta*t2_11
+        t2_25 = sin_theta*t2_11
+        Q0 += t2_19 + t2_7
+        Q1 += t2_21 + t2_22
+        Q2 += t2_18*t2_23 + t2_23*t2_6
         Q3 += (
-                E2*a*cos_phi*t2_0*t2_22*t2_4 + a*c2*cos_phi*t2_0*t2_16*t2_22 - t2_18*t2_25 -
-                t2_20*t2_24 - t2_21*t2_24 - t2_25*t2_6)
-        Q4 += t2_11*t2_18 + t2_11*t2_6 - t2_2*t2_20 - t2_2*t2_21
+                E2*a*cos_phi*t2_23*t2_3*t2_4 + a*cos_phi*t2_17*t2_23*t2_3 - t2_19*t2_25 - t2_21*
+                t2_24 - t2_22*t2_24 - t2_25*t2_7)
+        Q4 += -t2_1*t2_21 - t2_1*t2_22 + t2_12*t2_19 + t2_12*t2_7
     # M q'' + f(q, q') = Q (Lagrange, 3.26-3.31 in 3-D)
     dydt[0] = delta_x_dot
     dydt[1] = delta_y_dot
@@ -743,12 +745,13 @@ def family_forces(y, p, out):
         f5_6 = b**2
         f5_7 = cos_phi*f5_5*f5_6*sin_phi
         f5_8 = (
-                b*cos_phi*delta_y*f5_2*sin_theta*theta_dot + b*cos_theta*delta_y*f5_2*phi_dot*
-                sin_phi + b*delta_x*f5_2*phi_dot*sin_phi*sin_theta + cos_phi*f5_2*f5_6*phi_dot*
-                sin_phi - cos_theta**2*f5_7 + delta_x*delta_x_dot*f5_2 - delta_x*f5_2*f5_4*theta_dot -
-                delta_x_dot*f5_1*f5_2 + delta_y*delta_y_dot*f5_2 - delta_y_dot*f5_2*f5_4 + delta_z*
-                delta_z_dot*f5_2 - delta_z*f5_0*f5_5 - delta_z_dot*f5_2*f5_3 - f5_7*sin_theta**2)
-        f5_9 = c1*f5_2*f5_8
+                max(-E1*(-1 + lambda1/l10), c1*(b*cos_phi*delta_y*f5_2*sin_theta*theta_dot + b*
+                cos_theta*delta_y*f5_2*phi_dot*sin_phi + b*delta_x*f5_2*phi_dot*sin_phi*sin_theta +
+                cos_phi*f5_2*f5_6*phi_dot*sin_phi - cos_theta**2*f5_7 + delta_x*delta_x_dot*f5_2 -
+                delta_x*f5_2*f5_4*theta_dot - delta_x_dot*f5_1*f5_2 + delta_y*delta_y_dot*f5_2 -
+                delta_y_dot*f5_2*f5_4 + delta_z*delta_z_dot*f5_2 - delta_z*f5_0*f5_5 - delta_z_dot*
+                f5_2*f5_3 - f5_7*sin_theta**2)))
+        f5_9 = f5_2*f5_8
         f5_10 = f5_9*(-delta_x + f5_1)
         f5_11 = -delta_y + f5_4
         f5_12 = f5_11*f5_9
@@ -757,7 +760,7 @@ def family_forces(y, p, out):
         out[5, 1] = f5_12
         out[5, 2] = f5_13
         out[5, 3] = cos_theta*f5_12*f5_3 - f5_0*f5_13 + f5_10*f5_3*sin_theta
-        out[5, 4] = b*c1*cos_phi*f5_11*f5_2*f5_8*sin_theta - f5_10*f5_4
+        out[5, 4] = b*cos_phi*f5_11*f5_2*f5_8*sin_theta - f5_10*f5_4
     # damper2: damping of tether 2 along its stretch rate (variant (issue 5))
     if lambda2 > l20:
         f6_0 = a*cos_phi
@@ -773,17 +776,18 @@ def family_forces(y, p, out):
         f6_10 = a**2*cos_phi*f6_8*sin_phi
         f6_11 = f6_6*f6_8
         f6_12 = (
-                -cos_theta**2*f6_10 - cos_theta*delta_y*f6_11 - delta_x*f6_11*sin_theta + delta_x*f6_3
-                + delta_x*f6_7*f6_9 - delta_y*f6_1*f6_9 + delta_y*f6_4 + delta_z*f6_0*f6_8 + delta_z*
-                f6_5 + f6_1*f6_3 - f6_10*sin_theta**2 + f6_10 + f6_4*f6_7 + f6_5*f6_6)
-        f6_13 = c2*f6_12*f6_2
+                max(-E2*(-1 + lambda2/l20), c2*(-cos_theta**2*f6_10 - cos_theta*delta_y*f6_11 - delta_x*
+                f6_11*sin_theta + delta_x*f6_3 + delta_x*f6_7*f6_9 - delta_y*f6_1*f6_9 + delta_y*f6_4
+                + delta_z*f6_0*f6_8 + delta_z*f6_5 + f6_1*f6_3 - f6_10*sin_theta**2 + f6_10 + f6_4*f6_7
+                + f6_5*f6_6)))
+        f6_13 = f6_12*f6_2
         f6_14 = f6_13*(-delta_x - f6_1)
         f6_15 = f6_13*(-delta_y - f6_7)
         f6_16 = -delta_z - f6_6
         out[6, 0] = f6_14
         out[6, 1] = f6_15
         out[6, 2] = f6_13*f6_16
-        out[6, 3] = a*c2*cos_phi*f6_12*f6_16*f6_2 - cos_theta*f6_15*f6_6 - f6_14*f6_6*sin_theta
+        out[6, 3] = a*cos_phi*f6_12*f6_16*f6_2 - cos_theta*f6_15*f6_6 - f6_14*f6_6*sin_theta
         out[6, 4] = -f6_1*f6_15 + f6_14*f6_7
 
 

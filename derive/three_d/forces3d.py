@@ -11,7 +11,7 @@ from __future__ import annotations
 import sympy as sp
 from sympy.physics.mechanics import partial_velocity
 
-from ..forces import ForceFamily
+from ..forces import ForceFamily, damper_pull
 from .kinematics3d import Kinematics3D
 from .symbols3d import TETHER_LENGTHS, TETHER_REST, P
 
@@ -104,12 +104,15 @@ def damper_families(kin: Kinematics3D) -> tuple:
 
 
 def objective_damper_families(kin: Kinematics3D) -> tuple:
-    """Kelvin-Voigt damper c_j λ̇_j τ_j on the balloon, λ̇_j = −τ_j·(ṙ3 − ṙ_end)."""
+    """Kelvin-Voigt damper c_j λ̇_j τ_j on the balloon, λ̇_j = −τ_j·(ṙ3 − ṙ_end), clamped
+    at the spring's pull (derive/forces.py damper_pull)."""
     fams = []
     for j, (c, end) in enumerate(((P["c1"], 0), (P["c2"], 1))):
         tau = _tether_unit(kin, j)
         rate = sp.expand(-tau.dot(relative_velocity(kin, end)))
-        Q = generalized_forces(kin, [(2, c * rate * tau), (end, -c * rate * tau)])
+        spring = (P["E1"], P["E2"])[j] * (TETHER_LENGTHS[j] / TETHER_REST[j] - 1)
+        F = damper_pull(c * rate, spring) * tau
+        Q = generalized_forces(kin, [(2, F), (end, -F)])
         fams.append(ForceFamily(f"damper{j + 1}", Q, j + 1, "variant (issue 5)",
                                 f"damping of tether {j + 1} along its stretch rate"))
     return tuple(fams)

@@ -211,7 +211,7 @@ def test_pipeline_generalized_forces_equal_independent_routes(derived_model, kin
 @pytest.mark.parametrize("j", (0, 1), ids=("damper1", "damper2"))
 def test_objective_damper_equals_stretch_rate_damper(derived_model, kin, j):
     """'objective-damper' families equal a Kelvin-Voigt force c_j λ̇_j τ_j on the
-    balloon (reaction on the end body), with λ̇_j the time derivative of the
+    balloon (reaction on the end body), clamped at −E_j(λ_j/l_j0 − 1), with λ̇_j the time derivative of the
     scalar length 3.41-3.42 - no frame kinematics involved, so the rigid
     rotation ω of the formation cannot enter."""
     L, pos = kin.L, kin.positions
@@ -219,9 +219,17 @@ def test_objective_damper_equals_stretch_rate_damper(derived_model, kin, j):
     length = sp.sqrt(vec.dot(L.x) ** 2 + vec.dot(L.y) ** 2)
     lam = TETHER_LENGTHS[j]
     rate = length.diff(t).subs(length, lam)
-    F = P[f"c{j + 1}"] * rate * vec / lam
+    c, spring = P[f"c{j + 1}"], P[f"E{j + 1}"] * (lam / TETHER_REST[j] - 1)
+    # clamped at minus the spring's pull, so that spring plus damper never push
+    F = sp.Max(c * rate, -spring) * vec / lam
     expected = _q_position_partials(kin, [(2, F), (j, -F)])
     fam = derived_model("objective-damper").families[5 + j]
     assert fam.name == f"damper{j + 1}"
+
+    def branch(e, damping):  # each side of the clamp: Max's argument with c_j, or without
+        return e.replace(lambda x: isinstance(x, sp.Max),
+                         lambda x: next(a for a in x.args if (c in a.free_symbols) == damping))
     for k in range(3):
-        assert sp.simplify(fam.Q[k] - expected[k]) == 0, k
+        for damping in (True, False):
+            assert sp.simplify(branch(fam.Q[k], damping) - branch(expected[k], damping)) == 0, k
+        assert fam.Q[k].has(sp.Max), k

@@ -166,37 +166,3 @@ def line_vectors(sat, y) -> tuple:
     s, c = np.sin(y[:, 2]), np.cos(y[:, 2])
     return tuple(np.stack([y[:, 0] - arm * s, y[:, 1] - arm * c], axis=1)
                  for arm in (sat.b, -sat.a))
-
-
-def line_push(res: SimResult) -> float:
-    """The largest force [N] with which a taut line pushes the balloon in a planar run,
-    0 if none does.
-
-    A line's force along itself is its spring's E_j (λ_j / l_j0 − 1) plus its damper's
-    c_j λ̇_j (Eqs 3.35-3.36; the damper's share along the line, for the thesis's damper
-    as for the Kelvin-Voigt one).  At the end of a fast rebound the damper can outweigh
-    the spring while λ_j > l_j0: the model's line then pushes, where a real one goes
-    slack (docs/real-tethers.md, "What this does not cover").  λ̇_j = u_j · (δ̇ − ṙ_end),
-    u_j from the line's end (the tip-mass at +b, the bus at −a along the boom) to the
-    balloon; the frame's turn moves both across the line only.
-
-    Raises
-    ------
-    ValueError
-        For a run of a model that is not planar (its state is not δx, δy, θ and rates).
-    """
-    if res.layout.geometry != "planar" or res.model_states.shape[1] != 6:
-        raise ValueError(f"line_push: model {res.model} ({res.layout.geometry}, state of "
-                         f"{res.model_states.shape[1]}): the "
-                         f"planar models' states (δx, δy, θ and rates) only")
-    sat, y = res.satellite, res.model_states
-    s, c, w = np.sin(y[:, 2]), np.cos(y[:, 2]), y[:, 5]
-    push = 0.0
-    for arm, d, l0, E, damp in zip((sat.b, -sat.a), line_vectors(sat, y), (sat.l10, sat.l20),
-                                   (sat.E1, sat.E2), (sat.c1, sat.c2)):
-        lam = np.linalg.norm(d, axis=1)
-        rate = (d[:, 0] * (y[:, 3] - arm * c * w) + d[:, 1] * (y[:, 4] + arm * s * w)) / lam
-        force = E * (lam / l0 - 1) + damp * rate
-        pushing = (lam > l0) & (force < 0)
-        push = max(push, float(-force[pushing].min()) if pushing.any() else 0.0)
-    return push

@@ -66,6 +66,15 @@ QUICK_RUN_S = 0.5
 # ~2500x a nominal run (steps of ~5 ms): a spinning-up run fails in about a minute, not an
 # hour; no tether of this model's scale (N/mm^2 x 1 mm^2) needs more
 MAX_STEPS_PER_PERIOD = 1_000_000
+# implicit runs: a real line that rings (a near-slack line bouncing twice a second for an
+# orbit: docs/real-tethers.md, deployment) resolves every ring; a runaway still stops
+IMPLICIT_STEPS_PER_PERIOD = 5_000_000
+
+
+def step_budget(scheme: str, periods: float) -> int:
+    """Steps a run of ``periods`` orbits of ``scheme`` may take ("too many steps" past it)."""
+    per = IMPLICIT_STEPS_PER_PERIOD if scheme == "implicit" else MAX_STEPS_PER_PERIOD
+    return int(per * periods)
 
 
 class RK4StepWarning(UserWarning):
@@ -327,7 +336,7 @@ def _run_adaptive(sat, periods, n_out, model, rtol, atol, locate, progress,
     out_y = np.full((out_t.size, y.size), np.nan)
     out_y[0] = y
     t, h, i_out, status, message, calls, stop = 0.0, 0.0, 1, "ok", "", 0, {}
-    max_steps = int(MAX_STEPS_PER_PERIOD * periods)
+    max_steps = step_budget(scheme, periods)
     # the scheme's loop and what it keeps between calls: DOP853 (explicit), or Radau IIA
     # (implicit, for stiff tethers: engine/integrators/radau.py) with its carry (Jacobian,
     # controller memory, last dense output) so that the pauses do not change its steps

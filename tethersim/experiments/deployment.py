@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from tethersim.analysis.tethers import line_push, line_vectors
+from tethersim.analysis.tethers import line_vectors
 from tethersim.engine.result import SimResult
 from tethersim.engine.simulate import simulate
 from tethersim.engine.start import equilibrium_satellite, upright_or_refused
@@ -50,7 +50,7 @@ COLUMNS = (("start", "start"), ("value", "arrival speed [m/s] or release distanc
            ("catch_duration", "first catch's duration [s]"),
            ("first_peak", "first catch's peak tension [N]"),
            ("spin", "pitch rate after the first catch [rad/s]"), ("peak", "largest tension [N]"),
-           ("safety_factor", "safety factor"), ("push", "largest push of a line [N]"),
+           ("safety_factor", "safety factor"),
            ("catches", "catches after the first"),
            ("excursion", "pitch excursion [rad]"), ("turned_over", "turned over"),
            ("inverted", "ends the other way up"), ("clearance", "clearance to the boom [m]"),
@@ -162,10 +162,6 @@ class Deployment:
     safety_factor : float
         The smaller of the lines' breaking load over their largest tension (NaN when
         they never break).
-    push : float
-        The largest force [N] with which a taut line pushes the balloon, on the grid
-        (tethersim.analysis.tethers.line_push; 0 when none does): a model artefact,
-        not a load.
     catches : int
         Times the bridle caught the balloon again after the first catch, seen on the
         grid: the rebounds, and the chatter of a balloon coming to rest on its lines (a
@@ -191,7 +187,6 @@ class Deployment:
     spin: float
     peak: float
     safety_factor: float
-    push: float
     catches: int
     excursion: float
     turned_over: bool
@@ -278,7 +273,6 @@ def deploy(start: Satellite, periods: float = 1.0, sample: float = SAMPLE,
         spin=float(abs(y[end, 5])) if caught else math.nan,
         peak=float(pull.max()),
         safety_factor=min(factors) if factors else math.nan,
-        push=line_push(res),
         catches=int(np.count_nonzero(taut[1:] & ~taut[:-1])) - (1 if first > 0 else 0)
         if caught else 0,
         excursion=float(np.abs(turn).max()),

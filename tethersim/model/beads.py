@@ -31,7 +31,8 @@ l_s = l_j0 / (N + 1)), each tension-only, slack when λ_s ≤ l_s, as Eqs 3.35-3
 * damper, while taut: the base model's law with c_s = (N + 1) c_j (dashpots in
   series): −c_s (ṙ_far − ṙ_near) on the far node for the thesis damper
   (Eqs 3.43-3.44, inertial relative velocity), c_s λ̇_s along the segment for
-  the Kelvin-Voigt damper of ``objective-damper``;
+  the Kelvin-Voigt damper of ``objective-damper``, clamped at minus the spring
+  (a segment never pushes);
 * drag (optional, ``CDt`` = 0 by default): a cylinder of diameter d_j and the
   segment's length, −½ ρ3 C_Dt d_j λ_s |v_n| v_n with v_n the air-relative
   velocity of the segment's midpoint normal to the segment (the cross-flow
@@ -154,10 +155,11 @@ def _segment(y, p, n, j, s, objective):
         ten = p[_E1 + j] * (lam / l_s - 1.0)
         fx -= ten * tx
         fy -= ten * ty
-        if objective:  # Kelvin-Voigt: c λ̇ along the segment
-            rate = tx * wx + ty * wy
-            fx -= c_s * rate * tx
-            fy -= c_s * rate * ty
+        if objective:  # Kelvin-Voigt: c λ̇ along the segment, clamped at minus the
+            # spring so the segment never pushes (derive/forces.py damper_pull)
+            pull = max(c_s * (tx * wx + ty * wy), -ten)
+            fx -= pull * tx
+            fy -= pull * ty
         else:  # thesis damper, Eqs 3.43-3.44
             fx -= c_s * wx
             fy -= c_s * wy

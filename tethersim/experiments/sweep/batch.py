@@ -27,9 +27,9 @@ from tethersim.engine.integrators.select import specialised
 from tethersim.engine.linearise import rk4_amplifications
 from tethersim.engine.simulate import (
     FAITHFUL_STEPS_PER_PERIOD,
-    MAX_STEPS_PER_PERIOD,
     METRIC_SAMPLES_PER_PERIOD,
     refined_grid,
+    step_budget,
 )
 from tethersim.engine.start import start_satellite
 from tethersim.experiments.sweep.kernel import (
@@ -172,7 +172,8 @@ def _compiled(sats: list, plan: Plan, model: str, air: np.ndarray) -> list:
     cols = np.array([lay.state.index(c) for c in COL_FIELDS], dtype=np.int64)
     rec_f = np.empty((n, len(F_FIELDS)))
     rec_i = np.empty((n, len(I_FIELDS)), dtype=np.int64)
-    tolerances = (plan.rtol, plan.rtol * ATOL_PER_RTOL, int(MAX_STEPS_PER_PERIOD * periods))
+    tolerances = (plan.rtol, plan.rtol * ATOL_PER_RTOL,
+                  step_budget(SCHEMES[plan.method], periods))
     measure = (EV, cols, float(plan.tol), SS_FRACTION, rec_f, rec_i)
     if plan.method == "implicit":  # its own entry: the explicit blocks do not carry Radau
         args = (air, T, Y0, P, span, *tolerances, *measure)
