@@ -9,6 +9,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+import tethersim.engine.guards as guards
 import tethersim.engine.simulate as sim
 from tethersim import load_preset, simulate
 
@@ -54,6 +55,6 @@ def test_an_rk4_run_pauses_by_steps_and_its_result_does_not_depend_on_the_bar(mo
 def test_the_step_budget_is_the_runs_not_each_calls(monkeypatch):
     monkeypatch.setattr(sim, "PAUSE_S", 1e-6)
     monkeypatch.setattr(sim, "QUICK_RUN_S", 0.0)
-    monkeypatch.setattr(sim, "MAX_STEPS_PER_PERIOD", 50)  # a 2-orbit run needs ~1500 steps
+    monkeypatch.setattr(guards, "MAX_STEPS_PER_PERIOD", 50)  # a 2-orbit run needs ~1500 steps
     res = simulate(SAT, periods=2, check=False, progress=False)
     assert res.status == "failed" and "too many steps" in res.message

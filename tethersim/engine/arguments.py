@@ -21,7 +21,7 @@ from tethersim.model.satellite import Satellite
 # 1 rad and 10 m that the thesis's runs have.
 RTOL_RANGE = (1e-14, 1e-3)
 ATOL_RANGE = (1e-20, 1e-3)
-# shortest run: below 1e-4 orbit (~0.5 s at 200 km) the step budget MAX_STEPS_PER_PERIOD x
+# shortest run: below 1e-4 orbit (~0.5 s at 200 km) the step budget (guards.step_budget) x
 # periods falls under 100 steps (0 for 1e-9 orbit: "too many steps at t = 0")
 MIN_PERIODS = 1e-4
 

@@ -12,6 +12,9 @@ stated in the messages and can be raised with environment variables:
     points are several runs each (``feasibility``: points x runs per point).
 ``TETHERSIM_MAX_STORE_BYTES``
     largest sweep store, in memory and on disk (default 2 GiB).
+
+And the step budget of one run (:func:`step_budget`): a run that needs more steps stops
+"too many steps" rather than run for hours.
 """
 from __future__ import annotations
 
@@ -30,6 +33,18 @@ SWEEP_POINT_BYTES = 9 * 8 + 4 + 8 + 1 + 8
 
 # what simulate()'s own guard blames: its arguments; a command names its options instead
 API_SUBJECT = "periods/steps/samples"
+# ~2500x a nominal run (steps of ~5 ms): a spinning-up run fails in about a minute, not an
+# hour; no tether of this model's scale (N/mm^2 x 1 mm^2) needs more
+MAX_STEPS_PER_PERIOD = 1_000_000
+# implicit runs: a real line that rings (a near-slack line bouncing twice a second for an
+# orbit: docs/real-tethers.md, deployment) resolves every ring; a runaway still stops
+IMPLICIT_STEPS_PER_PERIOD = 5_000_000
+
+
+def step_budget(scheme: str, periods: float) -> int:
+    """Steps a run of ``periods`` orbits of ``scheme`` may take ("too many steps" past it)."""
+    per = IMPLICIT_STEPS_PER_PERIOD if scheme == "implicit" else MAX_STEPS_PER_PERIOD
+    return int(per * periods)
 
 
 class SizeLimitError(ValueError):

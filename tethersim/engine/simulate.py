@@ -29,6 +29,7 @@ from tethersim.engine.arguments import (
 )
 from tethersim.engine.domain import event_message
 from tethersim.engine.events import EVENTS, STOPS, event_parameters
+from tethersim.engine.guards import step_budget
 from tethersim.engine.integrators.dop853 import STATUS_EVENT, STATUS_OK, dop853_run
 from tethersim.engine.integrators.radau import N_COUNTERS as RADAU_COUNTERS
 from tethersim.engine.integrators.radau import carry_size, radau_run
@@ -63,18 +64,6 @@ RK4_PAUSE_STEPS = 50_000
 # a DOP853 run whose first call projects a total under this finishes in one more call
 # (its bar, delayed by a second, would never show)
 QUICK_RUN_S = 0.5
-# ~2500x a nominal run (steps of ~5 ms): a spinning-up run fails in about a minute, not an
-# hour; no tether of this model's scale (N/mm^2 x 1 mm^2) needs more
-MAX_STEPS_PER_PERIOD = 1_000_000
-# implicit runs: a real line that rings (a near-slack line bouncing twice a second for an
-# orbit: docs/real-tethers.md, deployment) resolves every ring; a runaway still stops
-IMPLICIT_STEPS_PER_PERIOD = 5_000_000
-
-
-def step_budget(scheme: str, periods: float) -> int:
-    """Steps a run of ``periods`` orbits of ``scheme`` may take ("too many steps" past it)."""
-    per = IMPLICIT_STEPS_PER_PERIOD if scheme == "implicit" else MAX_STEPS_PER_PERIOD
-    return int(per * periods)
 
 
 class RK4StepWarning(UserWarning):

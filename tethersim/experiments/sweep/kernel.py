@@ -206,7 +206,7 @@ def sweep_block(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_s
     rtol, atol : float
         Adaptive tolerances.
     max_steps : int
-        Adaptive step limit (simulate's step_budget).
+        Adaptive step limit (engine/guards.py step_budget).
     EV : ndarray
         (points, N_EV): each point's event limits (engine/events.py event_parameters).
     cols : ndarray

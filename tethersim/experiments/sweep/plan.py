@@ -13,9 +13,9 @@ import math
 from dataclasses import asdict, dataclass
 
 from tethersim.analysis.metrics import SETTLING_TOL, check_tol
+from tethersim.engine.guards import MAX_STEPS_PER_PERIOD
 from tethersim.engine.simulate import (
     FAITHFUL_STEPS_PER_PERIOD,
-    MAX_STEPS_PER_PERIOD,
     METRIC_SAMPLES_PER_PERIOD,
     RTOL_RANGE,
 )
