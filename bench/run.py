@@ -188,7 +188,7 @@ def setup(rep: Report):
 
 def validate_rhs(rep: Report, S, lamb, pydy_f):
     """The kernels being compared compute the same numbers (incl. slack tethers)."""
-    from generated.derived import rhs
+    from tethersim.generated.derived import rhs
     rng = np.random.default_rng(1)
     p, y0 = S["p"], S["y0"]
     err_c, err_l, err_py, slack = 0.0, 0.0, 0.0, 0
@@ -226,7 +226,7 @@ def _tether_margins(y, p):
 def bench_rhs(rep: Report, S, q, lamb, pydy_f, pydy_gen):
     import nbloops
 
-    from generated.derived import rhs
+    from tethersim.generated.derived import rhs
     log("\n[1] one call of the generated 6-state RHS (generated.derived.rhs)")
     p, y6 = S["p"], S["y0"].copy()
     n, eps = q["rhs_calls"], 1e-6

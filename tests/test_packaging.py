@@ -29,3 +29,16 @@ def test_a_run_imports_neither_sympy_nor_dask():
                          timeout=600)
     assert out.returncode == 0, out.stderr[-2000:]
     assert out.stdout.split() == ["ok", "False", "False"]
+
+
+def test_no_code_imports_the_kernels_by_their_folder_name():
+    """The generated kernels are ``tethersim.generated``; imported as the top-level
+    ``generated`` (the repository on sys.path), numba caches their compiled code under that
+    module name in the same cache files, and a later ``tethersim`` command that loads the
+    cache fails with "No module named 'generated'" (it did after ``make bench``)."""
+    import re
+    pattern = re.compile(r"^\s*(from\s+generated[\s.]|import\s+generated\b)", re.M)
+    found = [str(p.relative_to(ROOT)) for folder in ("tethersim", "derive", "bench", "tools",
+                                                       "tests")
+             for p in (ROOT / folder).rglob("*.py") if pattern.search(p.read_text())]
+    assert not found, found

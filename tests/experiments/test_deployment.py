@@ -38,8 +38,8 @@ def test_the_lines_turn_the_boom_only_by_the_balloons_height_times_their_pull(br
     # generated families (springs and Kelvin-Voigt dampers) give Q_θ = δx Q_δy − δy Q_δx.
     # Hence the pay-out rule of docs/real-tethers.md: a balloon level with the COM pulls
     # the boom without a torque.
-    from generated import objective_damper
-    from generated.layout import FAMILIES
+    from tethersim.generated import objective_damper
+    from tethersim.generated.layout import FAMILIES
     from tethersim.model.inputs import parameter_vector
     lines = [FAMILIES.index(f) for f in ("spring1", "spring2", "damper1", "damper2")]
     p = parameter_vector(bridle, "objective-damper")
