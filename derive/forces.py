@@ -120,14 +120,16 @@ def damper_families(kin: Kinematics) -> tuple:
     return tuple(fams)
 
 
-def damper_pull(force, spring):
-    """A Kelvin-Voigt damper's force along taut tether j, max(c_j λ̇_j, −spring): clamped so
-    that spring plus damper never push (a line goes slack rather than push, the rule of
-    tether codes such as GTOSS). The clamp is a kink, not a switch: the line's force
-    reaches zero continuously, and the damper still only takes energy out, −D λ̇ <= 0
-    (when it holds, λ̇ < 0 and the stretch is positive), so the Jacobi integral's budget
-    keeps the damper's power as it is.
+def damper_pull(force, j: int):
+    """A Kelvin-Voigt damper's force ``force`` = c_j λ̇_j along taut tether j, clamped at minus
+    its spring's pull, max(c_j λ̇_j, −E_j (λ_j / l_j0 − 1)), so that spring plus damper
+    never push (a line goes slack rather than push, the rule of tether codes such as
+    GTOSS). The clamp is a kink, not a switch: the line's force reaches zero
+    continuously, and the damper still only takes energy out, −D λ̇ <= 0 (when it holds,
+    λ̇ < 0 and the stretch is positive), so the Jacobi integral's budget keeps the
+    damper's power as it is.
     """
+    spring = (P["E1"], P["E2"])[j] * (TETHER_LENGTHS[j] / TETHER_REST[j] - 1)
     return sp.Max(force, -spring)
 
 
@@ -142,8 +144,7 @@ def objective_damper_families(kin: Kinematics) -> tuple:
     for j, (c, end) in enumerate(((P["c1"], 0), (P["c2"], 1))):
         tau = _tether_unit(kin, j)
         rate = sp.expand(-tau.dot(relative_velocity(kin, end)))
-        spring = (P["E1"], P["E2"])[j] * (TETHER_LENGTHS[j] / TETHER_REST[j] - 1)
-        F = damper_pull(c * rate, spring) * tau
+        F = damper_pull(c * rate, j) * tau
         Q = generalized_forces(kin, [(2, F), (end, -F)])
         fams.append(ForceFamily(f"damper{j + 1}", Q, j + 1, "variant (issue 5)",
                                 f"damping of tether {j + 1} along its stretch rate"))

@@ -110,8 +110,7 @@ def objective_damper_families(kin: Kinematics3D) -> tuple:
     for j, (c, end) in enumerate(((P["c1"], 0), (P["c2"], 1))):
         tau = _tether_unit(kin, j)
         rate = sp.expand(-tau.dot(relative_velocity(kin, end)))
-        spring = (P["E1"], P["E2"])[j] * (TETHER_LENGTHS[j] / TETHER_REST[j] - 1)
-        F = damper_pull(c * rate, spring) * tau
+        F = damper_pull(c * rate, j) * tau
         Q = generalized_forces(kin, [(2, F), (end, -F)])
         fams.append(ForceFamily(f"damper{j + 1}", Q, j + 1, "variant (issue 5)",
                                 f"damping of tether {j + 1} along its stretch rate"))
