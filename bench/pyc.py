@@ -2,8 +2,8 @@
 
 The generated modules (generated/*.py) are straight-line code: assignments,
 ``+=``, ``if``/``else`` on the tether gates and the mass-matrix branch, calls to
-``sincos`` (generated/trig.py; printed as libm's ``sin``, ``cos``: a lean C port's
-choice, within 1 ulp of the kernels' polynomials), ``math.sqrt``, integer powers and
+``sincos`` (generated/trig.py; printed as ``ts_sincos``, :data:`TRIG`: its C twin, the
+same operations in the same order, so C and numba take the same steps), ``math.sqrt``, integer powers and
 the small ``_solve2``/``_solve3`` Cramer helpers.  :func:`function_to_c` turns one
 such function into C with the same operations in the same order (integer literals
 become doubles, since Python's ``9/2`` is 4.5; ``x**2``/``x**3`` become products, as
@@ -22,6 +22,51 @@ _ASSIGN = re.compile(r"^([A-Za-z_]\w*(?:\[\d+\])?) (=|\+=) (.+)$")
 _TUPLE = re.compile(r"^((?:dydt\[\d+\], )+dydt\[\d+\]) = (_solve[23])\((.+)\)$")
 _RETURN_TUPLE = re.compile(r"^return \((.+)\)$")
 _SINCOS = re.compile(r"^(\w+), (\w+) = sincos\((\w+)\)$")
+
+
+def _trig_c() -> str:
+    """generated/trig.py's ``sincos`` in C: its constants from derive/trig.py (C99 reads
+    their hex floats as written), its operations in its order (gcc without -march
+    fuses none), libm's sin and cos only where it calls them (|x| >= LIMIT, NaN)."""
+    from derive.trig import CONSTANTS
+    consts = "\n".join(f"#define TS_{name} {bits}" for name, bits, _ in CONSTANTS)
+    return consts + r"""
+/* musl __sin (with its tail) and __cos on |y0 + y1| <= pi/4: generated/trig.py _kernels */
+static inline void ts_kernels(double y0, double y1, double *sk, double *ck)
+{
+    const double z = y0 * y0, w = z * z;
+    const double rs = (TS_S2 + z * (TS_S3 + z * TS_S4)) + (z * w) * (TS_S5 + z * TS_S6);
+    const double v = z * y0;
+    *sk = y0 - (((z * (0.5 * y1 - v * rs)) - y1) - v * TS_S1);
+    const double rc = z * (TS_C1 + z * (TS_C2 + z * TS_C3))
+                      + (w * w) * (TS_C4 + z * (TS_C5 + z * TS_C6));
+    const double hz = 0.5 * z, wc = 1.0 - hz;
+    *ck = wc + (((1.0 - wc) - hz) + (z * rc - y0 * y1));
+}
+/* generated/trig.py sincos: the kernels alone below SMALL, the reduction below LIMIT */
+static inline void ts_sincos(double x, double *s, double *c)
+{
+    if (fabs(x) < TS_SMALL) { ts_kernels(x, 0.0, s, c); return; }
+    if (!(fabs(x) < TS_LIMIT)) { *s = sin(x); *c = cos(x); return; }
+    const double n = ((x * TS_INVPIO2) + TS_TOINT) - TS_TOINT;
+    const double t = x - n * TS_PIO2_1;
+    double w = n * TS_PIO2_2;
+    const double r = t - w;
+    w = n * TS_PIO2_2T - ((t - r) - w);
+    const double y0 = r - w, y1 = (r - y0) - w;
+    double sk, ck;
+    ts_kernels(y0, y1, &sk, &ck);
+    const double m = n - 4.0 * (((0.25 * n) + TS_TOINT) - TS_TOINT);
+    const int odd = m == 1.0 || m == -1.0;
+    double sv = odd ? ck : sk, cv = odd ? sk : ck;
+    *s = (m < 0.0 || m > 1.0) ? -sv : sv;
+    *c = (m > 0.0 || m < -1.0) ? -cv : cv;
+}
+"""
+
+
+#: the C twin of generated/trig.py's sincos (every C port's sin and cos)
+TRIG = _trig_c()
 
 HELPERS = r"""
 static inline double ipow2(double x) { return x * x; }
@@ -128,7 +173,8 @@ def function_to_c(fn, name: str, signature: str) -> str:
         elif m := _SINCOS.match(line):
             sin_name, cos_name, angle = m.groups()
             declared |= {sin_name, cos_name}
-            out.append(f"{pad}double {sin_name} = sin({angle}), {cos_name} = cos({angle});")
+            out.append(f"{pad}double {sin_name}, {cos_name};")
+            out.append(f"{pad}ts_sincos({angle}, &{sin_name}, &{cos_name});")
         elif m := _TUPLE.match(line):
             targets = [f"&{t.strip()}" for t in m.group(1).split(",")]
             args = expression(m.group(3))

@@ -15,7 +15,6 @@ of the sweep blocks (81 → 145-194 s for the adaptive lanes; numba re-infers th
 a function after each inline), and not inlined it made every scalar run 20 % slower.
 
 What they compute, from FreeBSD msun / musl (Sun's fdlibm):
-What they compute, from FreeBSD msun / musl (Sun's fdlibm):
 
 * reduction (musl ``__rem_pio2``, its medium path): x = n·π/2 + (y0 + y1), n the
   nearest integer to 2x/π, π/2 in three pieces pio2_1 (33 bits), pio2_2 (33 bits) and
