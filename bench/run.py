@@ -12,7 +12,8 @@ with gcc -O3.  Results go to stdout (table at the end) and bench/results.json.
      (2b: simulate() with default arguments vs C, bench/engine_bench.py)
   3. DOP853 rtol 1e-10 atol 1e-12, 50 periods: numba dop853_run vs C port vs
      scipy solve_ivp(DOP853) driving the compiled RHS through a Python wrapper
-     (3b: simulate() adaptive default per accepted step vs C, bench/engine_bench.py)
+     (3b: simulate() adaptive default per accepted step vs C, bench/engine_bench.py);
+     `--only core` runs 2, 2b, 3 and 3b alone
   4. sympy.lambdify + solve_ivp and PyDy + solve_ivp, same model and tolerance
   5. `python -m derive <tmpdir>` wall time
   6. second `tethersim run satI --periods 50` wall time (numba caches warm), and a
@@ -720,10 +721,11 @@ def main(argv=None) -> int:
     ap.add_argument("--json", default=str(HERE / "results.json"), help="where to write results")
     ap.add_argument("--skip-slow", action="store_true",
                     help="skip the subprocess figures (make derive, CLI, report)")
-    ap.add_argument("--only", choices=("sweep", "report", "3d", "cli", "peers", "lanes",
-                                       "stiff"),
+    ap.add_argument("--only", choices=("core", "sweep", "report", "3d", "cli", "peers",
+                                       "lanes", "stiff"),
                     default=None,
-                    help="run one section only (sweep throughput, the report's wall time, "
+                    help="run one section only (the planar loops and simulate() against the "
+                         "C port, sweep throughput, the report's wall time, "
                          "the 3-D model against its C port, the CLI's cold and warm runs, "
                          "heyoka, or the sweep's SIMD lanes against its scalar block)")
     args = ap.parse_args(argv)
@@ -747,7 +749,13 @@ def main(argv=None) -> int:
             "solve_ivp runs (scaled)")
     import sweep_bench
     if args.only:
-        if args.only == "sweep":
+        if args.only == "core":
+            import engine_bench
+            S = setup(rep)
+            bench_rk4(rep, S, q)
+            engine_bench.bench_simulate(rep, S, q, log)
+            bench_dop853(rep, S, q)
+        elif args.only == "sweep":
             import csweep
             sweep_bench.bench_sweep(rep, q)
             csweep.bench_csweep(rep, csweep.sweep_inputs(), q, log)
