@@ -9,8 +9,13 @@ one DOP853 step of all lanes, whose stages LLVM vectorises across the lanes; wha
 
 * its own step size, step count, error norm, acceptance or rejection and next step
   (a rejecting lane retries with its smaller step at the next pass, the others go on);
-* the interpolant's three extra stages for every lane when an output falls in any
-  lane's step, then each lane's outputs from its own coefficients;
+* the interpolant's three extra stages of a step in which an output falls: the step
+  (its start, end, stages, parameters, step and output rows) waits in a queue of
+  LANES slots, and a full queue takes the three stages on every slot at once, then
+  each slot's outputs from its own coefficients.  With 200 outputs an orbit and about
+  800 steps, a pass had 1-2 lanes needing them: the extra stages on all lanes at
+  once used a quarter of their work (the queue is emptied before a lane's point is
+  recorded, so a point's outputs are all written when it is measured);
 * its slack/taut switches and stopping limits: a lane whose accepted step changes the
   sign of an event slot redoes the step alone with the scalar code (``switching.locate``
   and ``steps.dop853_dense``, the scalar loop's calls on the same numbers);
@@ -163,33 +168,62 @@ def _located(model, air, k, T, P, EV, Y, Ks, TL, H, lane, out_y, g0, g1, y, f, y
 
 
 @njit(cache=True, nogil=True)
-def _dense_one(model, air, k, T, P, Y, Y_new, Ks, TL, H, lane, out_y, y, yn, pw, work, Fs):
-    """Lane k's outputs in its accepted (unlocated) step by the scalar ``dop853_dense`` on
-    the lane's numbers: cheaper than the lanes' extra stages when it alone needs them."""
-    ns = y.shape[0]
+def _flush(model, out_y, T, QY, QYn, QH, QP, QK, QHR, QT, QI, YS, Fd, S, queued):
+    """The interpolant of every queued step (one ``dop853_lanes_dense`` over the slots,
+    the scalar ``dop853_dense``'s numbers slot by slot) and their outputs; returns 0,
+    the queue's new length."""
+    if queued == 0:
+        return 0
+    ns = out_y.shape[2]
+    dop853_lanes_dense(model, QY, QYn, QH, QP, QK, YS, Fd, S, QHR)
+    for q in range(queued):
+        k, j, r0, r1 = QI[q, 0], QI[q, 1], QI[q, 2], QI[q, 3]
+        t, h = QT[q, 0], QT[q, 1]
+        for i_out in range(r0, r1):
+            dop853_lanes_interpolate(ns, q, Fd, QY, (T[j, i_out] - t) / h, out_y[k, i_out])
+    return 0
+
+
+# inlined, and unsigned indices (dop853_lanes.U2 says why): a call that passes twenty
+# arrays, 64,000 times in the bench's 64-point sweep, took 3-4 of its 104 ms
+@njit(cache=True, nogil=True, inline="always")
+def _enqueue(k, npar, T, Y, Y_new, PL, Ks, TL, H, lane, QY, QYn, QH, QP, QK, QHR, QT, QI,
+             queued):
+    """Lane k's accepted step, in which an output falls, into queue slot ``queued`` (its
+    outputs written at the next _flush); returns the queue's new length."""
+    ns = Y.shape[0] // LANES
     m = ns * LANES
-    j = lane[k, J]
-    for i in range(ns):
-        y[i] = Y[i * LANES + k]
-        yn[i] = Y_new[i * LANES + k]
-        for s in range(13):
-            work[s, i] = Ks[s * m + i * LANES + k]
-    for i in range(pw.shape[0]):
-        pw[i] = P[j, i]
+    q = queued
+    j, i_out, rows = lane[k, J], lane[k, IOUT], T.shape[1]
     t, h = TL[k], H[k]
-    dop853_dense(model, air, t, y, yn, h, P[j], pw, work[:N_K], work[N_K], Fs)
-    lane[k, NFEV] += 3
-    i_out, rows = lane[k, IOUT], T.shape[1]
+    uk, uq, ul = np.uint64(k), np.uint64(q), np.uint64(LANES)
+    for i in range(ns):
+        a, b = np.uint64(i) * ul + uk, np.uint64(i) * ul + uq
+        QY[b] = Y[a]
+        QYn[b] = Y_new[a]
+        QHR[b] = h
+    for s in range(N_K - 3):  # the step's stages 0..12 (the dense ones are computed)
+        for i in range(ns):
+            o = np.uint64(s * m + i * LANES)
+            QK[o + uq] = Ks[o + uk]
+    for i in range(npar):
+        QP[np.uint64(i) * ul + uq] = PL[np.uint64(i) * ul + uk]
+    QH[q] = h
+    QT[q, 0], QT[q, 1] = t, h
+    r0 = i_out
     while i_out < rows and T[j, i_out] <= t + h:
-        dop853_interpolate(ns, Fs, y, (T[j, i_out] - t) / h, out_y[k, i_out])
         i_out += 1
+    QI[q, 0], QI[q, 1], QI[q, 2], QI[q, 3] = k, j, r0, i_out
     lane[k, IOUT] = i_out
+    lane[k, NFEV] += 3
+    return queued + 1
 
 
 @njit(cache=True, nogil=True)
 def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, tol,
                    ss_fraction, rec_f, rec_i, Y, PL, Ks, YS, Y_new, HR, S, Fd, H, TL, HL, HN,
-                   TE, err, acc, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm):
+                   TE, err, acc, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm,
+                   QY, QYn, QH, QP, QK, QHR, QT, QI):
     air, T, Y0, P, span, EV, cols = (borrow(air), borrow(T), borrow(Y0), borrow(P),
                                      borrow(span), borrow(EV), borrow(cols))
     rec_f, rec_i, Y, PL, Ks, YS = (borrow(rec_f), borrow(rec_i), borrow(Y), borrow(PL),
@@ -201,13 +235,17 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
                                  borrow(y), borrow(f))
     yn, pw, work, Fs, g, buf, pm = (borrow(yn), borrow(pw), borrow(work), borrow(Fs),
                                     borrow(g), borrow(buf), borrow(pm))
+    QY, QYn, QH, QP, QK, QHR, QT, QI = (borrow(QY), borrow(QYn), borrow(QH), borrow(QP),
+                                        borrow(QK), borrow(QHR), borrow(QT), borrow(QI))
     ns = Y0.shape[1]
+    npar = P.shape[1]
     m = ns * LANES
     K = H.shape[0]
     rows = T.shape[1]
     n_points = P.shape[0]
     nxt = 0
     active = K
+    queued = 0  # steps waiting for their interpolant (_enqueue)
     while True:
         # each lane's step begins (a finished lane is recorded and takes the next point)
         for k in range(K):
@@ -215,6 +253,8 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
                 if lane[k, ST] == RUNNING and _ready(k, max_steps, TL, HL, TE, H, lane):
                     break
                 if lane[k, ST] != EMPTY:
+                    queued = _flush(model, out_y, T, QY, QYn, QH, QP, QK, QHR, QT, QI, YS,
+                                    Fd, S, queued)  # the point's last outputs
                     _finish(model, air, k, lane, TL, T, out_y, P, cols, tol, ss_fraction,
                             rec_f, rec_i, buf, pm)
                 if nxt >= n_points:
@@ -229,7 +269,6 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
             return
         dop853_lanes_step(model, Y, H, PL, Ks, YS, Y_new, S, HR)
         dop853_lanes_error(ns, Ks, H, Y, Y_new, rtol, atol, err, acc)
-        dense = 0
         for k in range(K):
             lane[k, DENSE] = 0
             if lane[k, ST] != RUNNING:
@@ -261,26 +300,16 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
                 i_out = lane[k, IOUT]
                 if i_out < rows and T[j, i_out] <= TL[k] + H[k]:
                     lane[k, DENSE] = 3
-                    dense += 1
-        # the interpolant's 3 extra stages, only when an output falls in a step: on every
-        # lane when more than one needs them, else the one lane's alone (the same numbers)
-        if dense > 1:
-            dop853_lanes_dense(model, Y, Y_new, H, PL, Ks, YS, Fd, S, HR)
         for k in range(K):
             d = lane[k, DENSE]
             if d == 0:
                 continue
-            if d == 3 and dense == 1:
-                _dense_one(model, air, k, T, P, Y, Y_new, Ks, TL, H, lane, out_y, y, yn, pw,
-                           work, Fs)
-            elif d == 3:
-                j, i_out, t, h = lane[k, J], lane[k, IOUT], TL[k], H[k]
-                lane[k, NFEV] += 3
-                while i_out < rows and T[j, i_out] <= t + h:
-                    dop853_lanes_interpolate(ns, k, Fd, Y, (T[j, i_out] - t) / h,
-                                             out_y[k, i_out])
-                    i_out += 1
-                lane[k, IOUT] = i_out
+            if d == 3:  # an output falls in the step: its interpolant waits in the queue
+                if queued == LANES:
+                    queued = _flush(model, out_y, T, QY, QYn, QH, QP, QK, QHR, QT, QI, YS,
+                                    Fd, S, queued)
+                queued = _enqueue(k, npar, T, Y, Y_new, PL, Ks, TL, H, lane, QY, QYn, QH, QP,
+                                  QK, QHR, QT, QI, queued)
             if d != 2:  # the step is taken: y, f (FSAL) and the time move on
                 for i in range(ns):
                     Y[i * LANES + k] = Y_new[i * LANES + k]
@@ -343,6 +372,13 @@ def sweep_block_lanes853(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, 
     g = np.empty(N_EVENTS)
     buf = np.empty(rows)
     pm = np.empty(N_PITCH)
+    # the queue of steps waiting for their interpolant: LANES slots in the lane layout (a
+    # slot never read holds zeros, not uninitialised data), each slot's lane, point and
+    # output rows (QI) and start time and step (QT)
+    QY, QYn, QHR = np.zeros(m), np.zeros(m), np.zeros(m)
+    QH, QP, QK = np.zeros(LANES), np.zeros(npar * LANES), np.zeros(N_K * m)
+    QT, QI = np.zeros((LANES, 2)), np.zeros((LANES, 4), dtype=np.int64)
     _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, tol,
                    ss_fraction, rec_f, rec_i, Y, PL, Ks, YS, Y_new, HR, S, Fd, H, TL, HL, HN,
-                   TE, err, acc, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm)
+                   TE, err, acc, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm,
+                   QY, QYn, QH, QP, QK, QHR, QT, QI)
