@@ -210,7 +210,9 @@ def module_source(model) -> str:
     rhs = st.solve.rhs(model, pr)
     forces = family_forces_source(pr, model.families)
     lines = header(model) + list(st.solve.preamble) + ["", ""] + rhs
-    lanes = [lanes_source(rhs), lanes_source(forces, "family_forces")] if st.solve.lanes else []
+    geometry = geometry_kernels(model)
+    lanes = ([lanes_source(rhs), lanes_source(forces, "family_forces"),
+              lanes_source(geometry, "tether_margins")] if st.solve.lanes else [])
     if lanes and lanes[0][0]:  # a lane rhs: the lanes' constants and every lane form
         lines += ["", ""] + lanes_constants(max(n for _, n in lanes))
         for src, _ in lanes:
@@ -220,7 +222,7 @@ def module_source(model) -> str:
                                       JACOBI_DOC[model.definition.orbit])
     for kernel_lines in st.solve.extra(model, pr):
         lines += ["", ""] + kernel_lines
-    lines += ["", ""] + geometry_kernels(model)
+    lines += ["", ""] + geometry
     return "\n".join(_trig_import(lines)) + "\n"
 
 

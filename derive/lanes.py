@@ -52,7 +52,20 @@ KERNELS = {
                       ("family_forces on K <= LANES lanes: row i of y, p and of the scratch",
                        "s (N_TRANSCENDENTAL rows) is [i*LANES, i*LANES + K), out[f, q] is",
                        "row f*n_q + q of out.")),
+    # not bit for bit: a filter (_APPROXIMATE)
+    "tether_margins": ("tether_margins_lanes(K, y, p, g, s)", "K",
+                       ("tether_margins on K <= LANES lanes: row i of y, p and of the scratch",
+                        "s (N_TRANSCENDENTAL rows) is [i*LANES, i*LANES + K), g[j] is row j",
+                        "of g.")),
 }
+# kernels whose lane form may differ from the scalar one in the last bits: the tether
+# margins take sqrt(x**2 + y**2) for the scalar kernel's math.hypot(x, y), which has no
+# vector version (within 2 ulp of the length against hypot's 1).  The adaptive lanes
+# (tethersim/experiments/sweep/lanes853.py) use them only to see that no event can have
+# fired in a step, with a margin far above that difference, and evaluate the scalar
+# kernel where one may have
+_APPROXIMATE = {"tether_margins": (re.compile(r"math\.hypot\(([^,()]*), ([^,()]*)\)"),
+                                   r"math.sqrt((\1)**2 + (\2)**2)")}
 _NAME = re.compile(r"[A-Za-z_]\w*")
 
 
@@ -71,7 +84,7 @@ def _index_names(line: str, n_q: int = 0, time: bool = True) -> str:
     t -> t[k] (``time``: the lane form takes the times t), in a line's code (not its
     comment)."""
     code, hash_, comment = line.partition("#")
-    code = re.sub(r"\b(y|p|dydt)\[(\d+)\]", r"\1[\2*LANES + k]", code)
+    code = re.sub(r"\b(y|p|dydt|g)\[(\d+)\]", r"\1[\2*LANES + k]", code)
     code = _OUT.sub(lambda m: f"out[{int(m[1]) * n_q + int(m[2])}*LANES + k]", code)
     if time:
         code = re.sub(r"\bt\b", "t[k]", code)
@@ -106,7 +119,9 @@ def lanes_source(lines: list, name: str = "rhs", indent: str = "    ") -> tuple:
     start = next(i for i, line in enumerate(lines) if line.startswith(f"def {name}("))
     doc_end = next(i for i in range(start + 1, len(lines))
                    if lines[i].rstrip().endswith('"""'))
-    body = lines[doc_end + 1:]
+    end = next((i for i in range(doc_end + 1, len(lines))
+                if lines[i].startswith(("@", "def "))), len(lines))  # the next kernel
+    body = [line for line in lines[doc_end + 1:end] if line.strip()]
     outs = [(int(f), int(q)) for f, q in _OUT.findall("\n".join(body))]
     n_q = 1 + max(q for _, q in outs) if outs else 0
     zero = [f"{indent}out[{f}, {q}] = 0.0" for f in range(1 + max(f for f, _ in outs))
@@ -117,6 +132,9 @@ def lanes_source(lines: list, name: str = "rhs", indent: str = "    ") -> tuple:
         if m := _UNPACK.match(line):
             unpack[m.group(1)] = line
     text = "\n".join(_logical_lines(body))
+    if name in _APPROXIMATE:
+        pattern, replacement = _APPROXIMATE[name]
+        text = pattern.sub(replacement, text)
     stored = {}  # (what the first loop stores, rows of s) -> its first row, in order of first use
     out, pos = [], 0
     for m in CALL.finditer(text):
@@ -142,8 +160,11 @@ def lanes_source(lines: list, name: str = "rhs", indent: str = "    ") -> tuple:
            f"def {signature}:",
            f'{i1}"""{doc[0]}', *(f"{i1}{d}" for d in doc[1:]),
            "",
-           f"{i1}Each lane equals {name} bit for bit (derive/lanes.py); libm's values",
-           f'{i1}come first, lane by lane, so that the second loop vectorises.',
+           *([f"{i1}Each lane is {name}'s value to a few ulps (sqrt for its hypot,",
+              f"{i1}derive/lanes.py); libm's values come first, lane by lane."]
+             if name in _APPROXIMATE else
+             [f"{i1}Each lane equals {name} bit for bit (derive/lanes.py); libm's values",
+              f"{i1}come first, lane by lane, so that the second loop vectorises."]),
            f'{i1}"""',
            f"{i1}for k in range({count}):"]
     time = "(t," in signature

@@ -406,6 +406,31 @@ def family_forces_lanes(K, y, p, out, s):
             out[20*LANES + k] = a*c2*f6_3*sin_theta - f6_0*f6_1
 
 
+@njit(cache=True, inline="always")
+def tether_margins_lanes(K, y, p, g, s):
+    """tether_margins on K <= LANES lanes: row i of y, p and of the scratch
+    s (N_TRANSCENDENTAL rows) is [i*LANES, i*LANES + K), g[j] is row j
+    of g.
+
+    Each lane is tether_margins's value to a few ulps (sqrt for its hypot,
+    derive/lanes.py); libm's values come first, lane by lane.
+    """
+    for k in range(K):
+        theta = y[2*LANES + k]
+        s[0*LANES + k], s[1*LANES + k] = sincos_beyond(theta)
+    for k in range(K):
+        delta_x = y[0*LANES + k]
+        delta_y = y[1*LANES + k]
+        theta = y[2*LANES + k]
+        a = p[6*LANES + k]
+        b = p[7*LANES + k]
+        l10 = p[8*LANES + k]
+        l20 = p[9*LANES + k]
+        sin_theta, cos_theta = sincos_lane(theta, s[0*LANES + k], s[1*LANES + k])
+        g[0*LANES + k] = math.sqrt((b*sin_theta - delta_x)**2 + (b*cos_theta - delta_y)**2) - l10
+        g[1*LANES + k] = math.sqrt((-a*sin_theta - delta_x)**2 + (-a*cos_theta - delta_y)**2) - l20
+
+
 @njit(cache=True)
 def family_forces(y, p, out):
     """out[f, k] = generalized force of family FAMILIES[f] on q_k (N, N, N m)."""

@@ -1,4 +1,5 @@
-"""SIMD lanes (engine/integrators/lanes.py): each lane is the scalar kernel, bit for bit.
+"""SIMD lanes (engine/integrators/lanes.py): each lane is the scalar kernel, bit for bit
+(the tether margins' lane form, a filter, to a few ulps).
 
 The truth is the scalar generated rhs and steps.rk4_step, evaluated point by point;
 the lanes get K different points (parameters and states, tethers taut and slack)
@@ -114,6 +115,33 @@ def test_lane_family_forces_equal_the_scalar_ones_bit_for_bit(model):
             want = np.full((nf, nq), np.nan)
             scalar(Y[j], P[j], want)
             assert _bits(got[j]) == _bits(want), (model, seed, j)
+
+
+def test_lane_tether_margins_are_the_scalar_ones_to_a_few_ulps_far_inside_the_clear_margin():
+    # the lane margins take sqrt(x**2 + y**2) where the scalar kernel takes hypot (no
+    # vector version): the adaptive lanes use them only to rule out a sign change, with a
+    # margin of CLEAR times the lengths (sweep/lanes853.py _clear); lines slack, taut and
+    # stretched far past their rest length (up to the stretch limit, 20x)
+    from tethersim.experiments.sweep.lanes853 import CLEAR
+    from tethersim.generated import layout
+    worst = 0.0
+    for model in LANE_MODELS:
+        kern = KERNELS[model_index(model)]
+        lanes = kern.tether_margins_lanes
+        margins = njit(lambda k, y, p, g, s, f=lanes: f(k, y, p, g, s))
+        for seed in range(6):
+            P, Y = _points(model, LANES, seed)
+            Y[:, :2] *= 1.0 + 4.0 * seed  # the balloon out to ~20 rest lengths
+            got = np.full(2 * LANES, np.nan)
+            margins(LANES, _flat(Y), _flat(P), got, np.empty(kern.N_TRANSCENDENTAL * LANES))
+            for j in range(LANES):
+                want = np.empty(2)
+                kern.tether_margins(Y[j], P[j], want)
+                l0 = P[j][[layout.P_L10, layout.P_L20]]
+                for i in range(2):
+                    worst = max(worst, abs(got[i * LANES + j] - want[i]) / (want[i] + l0[i]))
+    assert 0.0 < worst <= 8 * np.finfo(float).eps  # not bit for bit, but a few ulps
+    assert CLEAR >= 1000 * worst
 
 
 def test_force_peaks_on_lanes_equal_the_largest_force_of_the_series():

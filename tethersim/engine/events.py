@@ -162,6 +162,16 @@ def event_parameters(sat, model: str, stops=STOPS) -> np.ndarray:
 
 
 @njit(cache=True, inline="always")
+def line_limits(ev, g):
+    """g[5..8], the tethers' stretch and break limits, from their margins g[0], g[1]."""
+    l10, l20 = ev[EV_L10], ev[EV_L20]
+    g[5] = ev[EV_STRETCH] * l10 - (g[0] + l10)
+    g[6] = ev[EV_STRETCH2] * l20 - (g[1] + l20)
+    g[7] = ev[EV_BREAK1] - g[0]
+    g[8] = ev[EV_BREAK2] - g[1]
+
+
+@njit(cache=True, inline="always")
 def _no_segments(y, p, g, first):
     pass
 
@@ -204,11 +214,7 @@ def _model_events(model, y, p, ev, g, switches):
         g[4] = ev[EV_REACH2] - d2
         if switches or d2 > ev[EV_NEAR2]:
             model_tether_margins(model, y, p, g)  # writes g[0], g[1]
-            l10, l20 = ev[EV_L10], ev[EV_L20]
-            g[5] = ev[EV_STRETCH] * l10 - (g[0] + l10)
-            g[6] = ev[EV_STRETCH2] * l20 - (g[1] + l20)
-            g[7] = ev[EV_BREAK1] - g[0]
-            g[8] = ev[EV_BREAK2] - g[1]
+            line_limits(ev, g)
         else:
             g[0] = 1.0
             g[1] = 1.0

@@ -61,6 +61,12 @@ def model_has_force_lanes(model):
     raise NotImplementedError("model_has_force_lanes is only callable from compiled code")
 
 
+def model_tether_margins_lanes(model, K, y, p, g, s):
+    """Generated lane tether_margins of model ``model``: g[j*LANES + k] within a few ulps of
+    lane k's λ_j − l_j0 (derive/lanes.py; compiled code, literal model only)."""
+    raise NotImplementedError("model_tether_margins_lanes is only callable from compiled code")
+
+
 def model_transcendentals(model):
     """Rows of the lane rhs's scratch (libm values from its first loop), a compile-time constant."""
     raise NotImplementedError("model_transcendentals is only callable from compiled code")
@@ -94,6 +100,17 @@ def _model_family_forces_lanes(model, K, y, p, out, s):
     def absent(model, K, y, p, out, s):
         pass
     return impl if forces is not None else absent
+
+
+@overload(model_tether_margins_lanes, inline="always", prefer_literal=True)
+def _model_tether_margins_lanes(model, K, y, p, g, s):
+    if (k := literal_index(model)) is None:
+        return None
+    margins = KERNELS[k].tether_margins_lanes
+
+    def impl(model, K, y, p, g, s):
+        margins(K, y, p, g, s)
+    return impl
 
 
 @overload(model_has_force_lanes, inline="always", prefer_literal=True)

@@ -10,15 +10,17 @@ one DOP853 step of all lanes, whose stages LLVM vectorises across the lanes; wha
 * its own step size, step count, error norm, acceptance or rejection and next step
   (a rejecting lane retries with its smaller step at the next pass, the others go on);
 * the interpolant's three extra stages of a step in which an output falls: the step
-  (its start, end, stages, parameters, step and output rows) waits in a queue of
-  LANES slots, and a full queue takes the three stages on every slot at once, then
-  each slot's outputs from its own coefficients.  With 200 outputs an orbit and about
-  800 steps, a pass had 1-2 lanes needing them: the extra stages on all lanes at
-  once used a quarter of their work (the queue is emptied before a lane's point is
-  recorded, so a point's outputs are all written when it is measured);
+  waits in a queue of LANES slots that computes them on every slot at once
+  (sweep/lanes_dense.py), emptied before a lane's point is recorded;
 * its slack/taut switches and stopping limits: a lane whose accepted step changes the
   sign of an event slot redoes the step alone with the scalar code (``switching.locate``
-  and ``steps.dop853_dense``, the scalar loop's calls on the same numbers);
+  and ``steps.dop853_dense``, the scalar loop's calls on the same numbers).  Whether it
+  may have is seen first on all lanes at once (:func:`_clear`): the tether margins of
+  the generated lane kernel (sqrt where the scalar one takes hypot, a few ulps apart)
+  and the other slots from them; only a lane with a slot within ``CLEAR`` of zero, at
+  either end of its step, evaluates the scalar events (model_events), whose signs
+  decide, as in the scalar loop.  The scalar events on every lane took a tenth of a
+  sweep;
 * a finished lane (its end, a limit, a non-finite state, a step limit) is measured
   (``kernel._measure``) and takes the block's next point, its start (events, f, first
   step) computed by the scalar loop's own calls.
@@ -35,7 +37,15 @@ from numba import literally, njit
 
 from tethersim.analysis.metrics_kernel import N_PITCH
 from tethersim.engine.dynamics import derivative
-from tethersim.engine.events import N_EVENTS, N_SWITCH, model_events
+from tethersim.engine.events import (
+    EV_L10,
+    EV_L20,
+    EV_REACH2,
+    N_EVENTS,
+    N_SWITCH,
+    line_limits,
+    model_events,
+)
 from tethersim.engine.integrators import switching
 from tethersim.engine.integrators.borrow import borrow
 from tethersim.engine.integrators.dop853 import (
@@ -51,18 +61,26 @@ from tethersim.engine.integrators.dop853 import (
     STATUS_STEP_TOO_SMALL,
 )
 from tethersim.engine.integrators.dop853_lanes import (
-    dop853_lanes_dense,
     dop853_lanes_error,
-    dop853_lanes_interpolate,
     dop853_lanes_step,
 )
-from tethersim.engine.integrators.lanes import LANES, model_transcendentals
+from tethersim.engine.integrators.lanes import (
+    LANES,
+    model_tether_margins_lanes,
+    model_transcendentals,
+)
 from tethersim.engine.integrators.steps import N_K, dop853_dense, dop853_interpolate, initial_step
 from tethersim.experiments.sweep.kernel import _adaptive_status, _measure
+from tethersim.experiments.sweep.lanes_dense import enqueue, flush, queue
 
 # lane[k, :] columns, and the lane states of column ST (>= 0: a finished point's loop status)
 J, STEPS, IOUT, NFEV, REJ, FRESH, ST, SLOT, DENSE = range(9)
 RUNNING, IDLE, EMPTY = -1, -2, -3
+# how far from zero, relative to the tethers' lengths, every event slot of a lane's step
+# must be for the lane kernel's margins to rule out a sign change (_clear): they differ
+# from the scalar ones by a few ulps of the length (~1e-15 of it), and a slot near zero
+# subtracts numbers of about that length, so its rounding is of that size too
+CLEAR = 1e-11
 
 
 @njit(cache=True, nogil=True)
@@ -97,6 +115,25 @@ def _load(model, air, k, j, Y0, P, span, EV, rtol, atol, Y, PL, Ks, TL, HL, TE, 
     HL[k] = h
     if not math.isfinite(h):
         lane[k, ST] = STATUS_NONFINITE
+
+
+@njit(cache=True, inline="always")
+def _clear(ev, GM, k, x, y, g0, g1):
+    """Lane k's events at its step's end into g1, from the lane kernel's tether margins
+    (GM, row j the margin of tether j) and the balloon's δx, δy there (x, y); True when
+    no slot can have changed sign: every slot of g0 (the step's start) and g1 farther
+    than CLEAR from zero.  The lane models are planar, on a held circular orbit: no
+    re-entry or roll slot (+1, as model_events writes them)."""
+    a0, a1 = GM[k], GM[LANES + k]
+    g1[0], g1[1], g1[2], g1[3] = a0, a1, 1.0, 1.0
+    g1[4] = ev[EV_REACH2] - (x * x + y * y)
+    line_limits(ev, g1)
+    eps = CLEAR * (ev[EV_L10] + ev[EV_L20] + abs(a0) + abs(a1))
+    for s in range(N_EVENTS):
+        a, b = g0[s], g1[s]
+        if not (abs(a) > eps and abs(b) > eps and (a > 0.0) == (b > 0.0)):
+            return False  # also for a NaN
+    return True
 
 
 @njit(cache=True, nogil=True)
@@ -168,62 +205,10 @@ def _located(model, air, k, T, P, EV, Y, Ks, TL, H, lane, out_y, g0, g1, y, f, y
 
 
 @njit(cache=True, nogil=True)
-def _flush(model, out_y, T, QY, QYn, QH, QP, QK, QHR, QT, QI, YS, Fd, S, queued):
-    """The interpolant of every queued step (one ``dop853_lanes_dense`` over the slots,
-    the scalar ``dop853_dense``'s numbers slot by slot) and their outputs; returns 0,
-    the queue's new length."""
-    if queued == 0:
-        return 0
-    ns = out_y.shape[2]
-    dop853_lanes_dense(model, QY, QYn, QH, QP, QK, YS, Fd, S, QHR)
-    for q in range(queued):
-        k, j, r0, r1 = QI[q, 0], QI[q, 1], QI[q, 2], QI[q, 3]
-        t, h = QT[q, 0], QT[q, 1]
-        for i_out in range(r0, r1):
-            dop853_lanes_interpolate(ns, q, Fd, QY, (T[j, i_out] - t) / h, out_y[k, i_out])
-    return 0
-
-
-# inlined, and unsigned indices (dop853_lanes.U2 says why): a call that passes twenty
-# arrays, 64,000 times in the bench's 64-point sweep, took 3-4 of its 104 ms
-@njit(cache=True, nogil=True, inline="always")
-def _enqueue(k, npar, T, Y, Y_new, PL, Ks, TL, H, lane, QY, QYn, QH, QP, QK, QHR, QT, QI,
-             queued):
-    """Lane k's accepted step, in which an output falls, into queue slot ``queued`` (its
-    outputs written at the next _flush); returns the queue's new length."""
-    ns = Y.shape[0] // LANES
-    m = ns * LANES
-    q = queued
-    j, i_out, rows = lane[k, J], lane[k, IOUT], T.shape[1]
-    t, h = TL[k], H[k]
-    uk, uq, ul = np.uint64(k), np.uint64(q), np.uint64(LANES)
-    for i in range(ns):
-        a, b = np.uint64(i) * ul + uk, np.uint64(i) * ul + uq
-        QY[b] = Y[a]
-        QYn[b] = Y_new[a]
-        QHR[b] = h
-    for s in range(N_K - 3):  # the step's stages 0..12 (the dense ones are computed)
-        for i in range(ns):
-            o = np.uint64(s * m + i * LANES)
-            QK[o + uq] = Ks[o + uk]
-    for i in range(npar):
-        QP[np.uint64(i) * ul + uq] = PL[np.uint64(i) * ul + uk]
-    QH[q] = h
-    QT[q, 0], QT[q, 1] = t, h
-    r0 = i_out
-    while i_out < rows and T[j, i_out] <= t + h:
-        i_out += 1
-    QI[q, 0], QI[q, 1], QI[q, 2], QI[q, 3] = k, j, r0, i_out
-    lane[k, IOUT] = i_out
-    lane[k, NFEV] += 3
-    return queued + 1
-
-
-@njit(cache=True, nogil=True)
 def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, tol,
                    ss_fraction, rec_f, rec_i, Y, PL, Ks, YS, Y_new, HR, S, Fd, H, TL, HL, HN,
                    TE, err, acc, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm,
-                   QY, QYn, QH, QP, QK, QHR, QT, QI):
+                   QY, QYn, QH, QP, QK, QHR, QT, QI, GM):
     air, T, Y0, P, span, EV, cols = (borrow(air), borrow(T), borrow(Y0), borrow(P),
                                      borrow(span), borrow(EV), borrow(cols))
     rec_f, rec_i, Y, PL, Ks, YS = (borrow(rec_f), borrow(rec_i), borrow(Y), borrow(PL),
@@ -235,8 +220,13 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
                                  borrow(y), borrow(f))
     yn, pw, work, Fs, g, buf, pm = (borrow(yn), borrow(pw), borrow(work), borrow(Fs),
                                     borrow(g), borrow(buf), borrow(pm))
+    # the dense-output queue (sweep/lanes_dense.py)
+    # the dense output's queue (sweep/lanes_dense.py), each array passed by itself: in a
+    # tuple, the borrowed arrays lost the writes of the compiled call they were passed to
     QY, QYn, QH, QP, QK, QHR, QT, QI = (borrow(QY), borrow(QYn), borrow(QH), borrow(QP),
                                         borrow(QK), borrow(QHR), borrow(QT), borrow(QI))
+    GM = borrow(GM)
+    ix, iy = cols[0], cols[1]
     ns = Y0.shape[1]
     npar = P.shape[1]
     m = ns * LANES
@@ -253,8 +243,8 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
                 if lane[k, ST] == RUNNING and _ready(k, max_steps, TL, HL, TE, H, lane):
                     break
                 if lane[k, ST] != EMPTY:
-                    queued = _flush(model, out_y, T, QY, QYn, QH, QP, QK, QHR, QT, QI, YS,
-                                    Fd, S, queued)  # the point's last outputs
+                    queued = flush(model, out_y, T, QY, QYn, QH, QP, QK, QHR, QT, QI, YS, Fd,
+                          S, queued)  # its last rows
                     _finish(model, air, k, lane, TL, T, out_y, P, cols, tol, ss_fraction,
                             rec_f, rec_i, buf, pm)
                 if nxt >= n_points:
@@ -269,6 +259,7 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
             return
         dop853_lanes_step(model, Y, H, PL, Ks, YS, Y_new, S, HR)
         dop853_lanes_error(ns, Ks, H, Y, Y_new, rtol, atol, err, acc)
+        model_tether_margins_lanes(model, K, Y_new, PL, GM, S)
         for k in range(K):
             lane[k, DENSE] = 0
             if lane[k, ST] != RUNNING:
@@ -286,10 +277,17 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
                 factor = min(1.0, factor)
             HN[k] = H[k] * factor
             j = lane[k, J]
-            for i in range(ns):
-                yn[i] = Y_new[i * LANES + k]
-            model_events(model, yn, P[j], EV[j], g1[k], True)
-            if switching.fired(g0[k], g1[k], True):
+            fired = False
+            if not _clear(EV[j], GM, k, Y_new[ix * LANES + k], Y_new[iy * LANES + k], g0[k],
+                          g1[k]):
+                # the scalar loop's events at the step's start and end decide
+                for i in range(ns):
+                    y[i] = Y[i * LANES + k]
+                    yn[i] = Y_new[i * LANES + k]
+                model_events(model, y, P[j], EV[j], g0[k], True)
+                model_events(model, yn, P[j], EV[j], g1[k], True)
+                fired = switching.fired(g0[k], g1[k], True)
+            if fired:
                 hit = _located(model, air, k, T, P, EV, Y, Ks, TL, H, lane, out_y, g0, g1, y,
                                f, yn, pw, work, Fs, g)
                 lane[k, DENSE] = 2  # done
@@ -306,10 +304,13 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
                 continue
             if d == 3:  # an output falls in the step: its interpolant waits in the queue
                 if queued == LANES:
-                    queued = _flush(model, out_y, T, QY, QYn, QH, QP, QK, QHR, QT, QI, YS,
-                                    Fd, S, queued)
-                queued = _enqueue(k, npar, T, Y, Y_new, PL, Ks, TL, H, lane, QY, QYn, QH, QP,
-                                  QK, QHR, QT, QI, queued)
+                    queued = flush(model, out_y, T, QY, QYn, QH, QP, QK, QHR, QT, QI, YS, Fd,
+                          S, queued)
+                queued, i_next = enqueue(k, lane[k, J], lane[k, IOUT], TL[k], H[k], npar, T,
+                                         Y, Y_new, PL, Ks, QY, QYn, QH, QP, QK, QHR, QT, QI,
+                                         queued)
+                lane[k, IOUT] = i_next
+                lane[k, NFEV] += 3
             if d != 2:  # the step is taken: y, f (FSAL) and the time move on
                 for i in range(ns):
                     Y[i * LANES + k] = Y_new[i * LANES + k]
@@ -372,13 +373,8 @@ def sweep_block_lanes853(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, 
     g = np.empty(N_EVENTS)
     buf = np.empty(rows)
     pm = np.empty(N_PITCH)
-    # the queue of steps waiting for their interpolant: LANES slots in the lane layout (a
-    # slot never read holds zeros, not uninitialised data), each slot's lane, point and
-    # output rows (QI) and start time and step (QT)
-    QY, QYn, QHR = np.zeros(m), np.zeros(m), np.zeros(m)
-    QH, QP, QK = np.zeros(LANES), np.zeros(npar * LANES), np.zeros(N_K * m)
-    QT, QI = np.zeros((LANES, 2)), np.zeros((LANES, 4), dtype=np.int64)
+    QY, QYn, QH, QP, QK, QHR, QT, QI = queue(m, npar)  # steps awaiting their interpolant
     _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, tol,
                    ss_fraction, rec_f, rec_i, Y, PL, Ks, YS, Y_new, HR, S, Fd, H, TL, HL, HN,
                    TE, err, acc, lane, g0, g1, out_y, y, f, yn, pw, work, Fs, g, buf, pm,
-                   QY, QYn, QH, QP, QK, QHR, QT, QI)
+                   QY, QYn, QH, QP, QK, QHR, QT, QI, np.zeros(2 * LANES))
