@@ -151,3 +151,24 @@ def test_runs_from_one_utc_day_share_one_grid_and_read_it_at_their_own_epoch():
     for h, lon, t in ((150e3, 0.3, 1000.0), (420e3, -2.0, 30000.0), (95e3, 1.1, 52000.0)):
         assert msis_density_kernel(h, lon, t, tb, 0) == pytest.approx(
             msis_density_kernel(h, lon, t + lag, ta, 0), rel=1e-12)
+
+
+def test_a_later_shorter_run_reuses_the_days_of_an_earlier_grid_and_reads_the_same_density():
+    """Each UTC day's nodes are computed once (model._cached_day): a run that starts two
+    days into another's (a continuation after a release) calls pymsis for no day, and its
+    table reads the densities of the first one's at the same UTC instants."""
+    from tethersim.model.air import model as air_model
+    a = AirModel("nrlmsise00", "2016-09-02T05:17:00", 120.0, 110.0, 7.0)
+    b = a.replace(epoch="2016-09-04T11:00:00")
+    air_model._cached_values.cache_clear()
+    air_model._cached_day.cache_clear()
+    ta = msis_table(a, 5 * 86400.0)
+    days = air_model._cached_day.cache_info().misses
+    assert days >= 5
+    tb = msis_table(b, 2 * 86400.0)
+    assert air_model._cached_day.cache_info().misses == days
+    ut0 = AXES_FIELDS.index("ut0")
+    lag = (2 * 86400.0 + tb[ut0]) - ta[ut0]  # s: b's t = 0 is a's t = lag
+    for h, lon, t in ((150e3, 0.3, 1000.0), (420e3, -2.0, 90000.0), (95e3, 1.1, 150000.0)):
+        assert msis_density_kernel(h, lon, t, tb, 0) == pytest.approx(
+            msis_density_kernel(h, lon, t + lag, ta, 0), rel=1e-12)

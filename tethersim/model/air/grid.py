@@ -257,26 +257,29 @@ def grid_values(day0, indices, dx=DX, n_lst=N_LST, n_t=N_T, hc=HC) -> np.ndarray
     Returns
     -------
     numpy.ndarray
-        Shape (n_days, n_t, n_lst, n_h).
+        Shape (n_days, n_t, n_lst, n_h): each day's :func:`day_values`.
     """
-    import pymsis
-
     day0 = np.datetime64(day0, "D")
     ind = np.asarray(indices, float)
-    n_days = ind.shape[0]
+    return np.stack([day_values(day0 + np.timedelta64(d, "D"), *ind[d], dx, n_lst, n_t, hc)
+                     for d in range(ind.shape[0])])
+
+
+def day_values(day, f107, f107a, ap, dx=DX, n_lst=N_LST, n_t=N_T, hc=HC) -> np.ndarray:
+    """``log(rho)`` on the nodes of one UTC day with that day's indices, shape
+    (n_t, n_lst, n_h): a day's nodes depend on nothing else (module docstring)."""
+    import pymsis
+
     x0, n_h = _altitude_nodes(dx, hc)
     alts_km = (hc + np.exp(x0 + dx * np.arange(n_h))) / 1e3
     lst = 24.0 * np.arange(n_lst) / n_lst
-    grid = np.empty((n_days, n_t, n_lst, n_h))
-    for d in range(n_days):
-        aps = np.full((1, 7), ind[d, 2])
-        for k in range(n_t):
-            ut_h = 24.0 * k / n_t
-            when = (day0 + np.timedelta64(d, "D")).astype("datetime64[ms]") \
-                + np.timedelta64(int(round(ut_h * 3.6e6)), "ms")
-            lons = ((lst - ut_h) * 15.0) % 360.0
-            out = pymsis.calculate(when, lons, 0.0, alts_km, ind[d, 0], ind[d, 1], aps,
-                                   version=0)
-            rho = out[0, :, 0, :, 0].astype(float)  # (n_lst, n_h)
-            grid[d, k] = np.log(rho)
-    return grid
+    out = np.empty((n_t, n_lst, n_h))
+    aps = np.full((1, 7), ap)
+    for k in range(n_t):
+        ut_h = 24.0 * k / n_t
+        when = np.datetime64(day, "D").astype("datetime64[ms]") \
+            + np.timedelta64(int(round(ut_h * 3.6e6)), "ms")
+        lons = ((lst - ut_h) * 15.0) % 360.0
+        rho = pymsis.calculate(when, lons, 0.0, alts_km, f107, f107a, aps, version=0)
+        out[k] = np.log(rho[0, :, 0, :, 0].astype(float))  # (n_lst, n_h)
+    return out
