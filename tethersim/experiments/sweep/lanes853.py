@@ -220,7 +220,6 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
                                  borrow(y), borrow(f))
     yn, pw, work, Fs, g, buf, pm = (borrow(yn), borrow(pw), borrow(work), borrow(Fs),
                                     borrow(g), borrow(buf), borrow(pm))
-    # the dense-output queue (sweep/lanes_dense.py)
     # the dense output's queue (sweep/lanes_dense.py), each array passed by itself: in a
     # tuple, the borrowed arrays lost the writes of the compiled call they were passed to
     QY, QYn, QH, QP, QK, QHR, QT, QI = (borrow(QY), borrow(QYn), borrow(QH), borrow(QP),
@@ -235,7 +234,7 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
     n_points = P.shape[0]
     nxt = 0
     active = K
-    queued = 0  # steps waiting for their interpolant (_enqueue)
+    queued = 0  # steps waiting for their interpolant (lanes_dense.enqueue)
     while True:
         # each lane's step begins (a finished lane is recorded and takes the next point)
         for k in range(K):
@@ -243,8 +242,8 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
                 if lane[k, ST] == RUNNING and _ready(k, max_steps, TL, HL, TE, H, lane):
                     break
                 if lane[k, ST] != EMPTY:
-                    queued = flush(model, out_y, T, QY, QYn, QH, QP, QK, QHR, QT, QI, YS, Fd,
-                          S, queued)  # its last rows
+                    queued = flush(model, out_y, T, QY, QYn, QH, QP, QK, QHR, QT, QI, YS,
+                                   Fd, S, queued)  # its last rows
                     _finish(model, air, k, lane, TL, T, out_y, P, cols, tol, ss_fraction,
                             rec_f, rec_i, buf, pm)
                 if nxt >= n_points:
@@ -304,8 +303,8 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
                 continue
             if d == 3:  # an output falls in the step: its interpolant waits in the queue
                 if queued == LANES:
-                    queued = flush(model, out_y, T, QY, QYn, QH, QP, QK, QHR, QT, QI, YS, Fd,
-                          S, queued)
+                    queued = flush(model, out_y, T, QY, QYn, QH, QP, QK, QHR, QT, QI, YS,
+                                   Fd, S, queued)
                 queued, i_next = enqueue(k, lane[k, J], lane[k, IOUT], TL[k], H[k], npar, T,
                                          Y, Y_new, PL, Ks, QY, QYn, QH, QP, QK, QHR, QT, QI,
                                          queued)
