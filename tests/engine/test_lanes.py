@@ -70,6 +70,9 @@ def test_planar_lane_models_are_the_circular_ones_whose_libm_calls_read_the_stat
     assert {"derived", "objective-damper"} <= set(LANE_MODELS)
     assert "exact-gravity" not in LANE_MODELS
     assert all(MODELS[model_index(m)].orbit == "circular" for m in LANE_MODELS)
+    # the adaptive lanes' event filter writes no re-entry or roll slot (lanes853._clear)
+    from tethersim.model.registry import record
+    assert not any({"r", "phi"} & set(record(model_index(m)).state) for m in LANE_MODELS)
     assert lane_count() in (4, 8) and lane_count() <= LANES
 
 
