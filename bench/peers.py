@@ -15,11 +15,19 @@ tethersim's time there: above 1, tethersim is faster.  Times are thread CPU time
 interleaved repeats, in this one process; both sides write the same output grid (200
 samples per orbit: the metrics grid every simulate() run computes).
 
+The scheme's floor: the bench's C port of the same model and DOP853 driver
+(bench/cref.py, gcc -O3 -march=native; the same steps as tethersim's loop) timed on
+each single-run case beside them, heyoka's time at its error over its time: where
+this ratio is below 1 as well, no speed-up of tethersim's loop short of another
+scheme reaches heyoka on that case.
+
 Sweeps: 64 points (an 8 × 8 grid of E1 and E2 around SatI's band), 5 orbits:
 tethersim's plan of many (compiled blocks on 1 thread and every core, full records:
 metrics, class, force peaks) against heyoka's batch integrator (``taylor_adaptive_batch``,
 ``heyoka.recommended_simd_size()`` points per SIMD batch, per-lane events) writing each
-point's states on the same grid, at the tolerance whose error matches tethersim's.
+point's states on the same grid, at the tolerance whose error matches tethersim's;
+once at the sweeps' default tolerance (numbers that are reported) and once at
+``CLASS_RTOL`` (maps and searches that need a class or a verdict, docs/tolerances.md).
 """
 from __future__ import annotations
 
@@ -40,12 +48,12 @@ CASES = {  # name -> (preset, changes): the bench's three single-run cases
 PERIODS = 50
 TS_RTOLS = (1e-8, 1e-9, 1e-10, 1e-11, 1e-12)
 HY_TOLS = (1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13, 1e-14)
+HY_LOOSE = (1e-4, 1e-5, 1e-6, 1e-7)  # for the sweep at CLASS_RTOL
 DEFAULT_RTOL = 1e-10  # simulate()'s default
 SAMPLES = 200  # per orbit: the metrics grid
 SWEEP_E1 = np.linspace(0.002, 0.006, 8)  # N (E x 1 mm^2)
 SWEEP_E2 = np.linspace(0.03, 0.055, 8)
 SWEEP_PERIODS = 5
-SWEEP_RTOL = 1e-9  # the sweeps' default
 
 
 @cache
@@ -162,6 +170,42 @@ def _ts_run(sat, rtol):
     return dt, res.states[-1][:6]
 
 
+@cache
+def c_port(native: bool = True):
+    """The bench's C port of the derived model with its DOP853 driver (bench/cref.py):
+    gcc -O3 -march=native, the lean floor of tethersim's own scheme, or plain -O3 (no
+    fused multiply-adds: the same numbers as tethersim's loop)."""
+    import cref
+
+    from derive.kinematics import planar_kinematics
+    from derive.model import derive
+    from derive.models import BY_NAME
+    from derive.pipeline import to_state_symbols
+    length_defs = {lam: to_state_symbols(d)
+                   for lam, d in planar_kinematics().tether_length_defs.items()}
+    src, _ = cref.c_source(derive(BY_NAME["derived"]), length_defs)
+    if native:
+        return cref.CRef(cref.build(src, ("-O3", "-march=native"), "native"))
+    return cref.CRef(cref.build(src, ("-O3",), "O3"))
+
+
+def _c_run(sat, rtol, native=True):
+    """The C port over the single run's span and output grid, at ``rtol``."""
+    from tethersim.model.inputs import initial_model_state, parameter_vector
+    y = np.array(initial_model_state(sat, "derived"), dtype=float)
+    p = np.asarray(parameter_vector(sat, "derived"), dtype=float)
+    T = PERIODS * sat.period
+    out_t = np.linspace(0.0, T, SAMPLES * PERIODS + 1)[1:]
+    out_y = np.empty((out_t.size, y.size))
+    cnt = np.zeros(5, dtype=np.int64)
+    t0 = cpu_clock()
+    st = c_port(native).dop853_run(0.0, T, y, 0.0, p, rtol, rtol * 1e-2, True, out_t, out_y, 0,
+                             10**9, cnt)[3]
+    dt = cpu_clock() - t0
+    assert st == 0, st
+    return dt, y
+
+
 def _hy_run(sat, ta, y0, pars, grid):
     ta.time = 0.0
     ta.state[:] = y0
@@ -205,8 +249,13 @@ def _single(rep, case, preset, changes, repeats, log) -> None:
     fns = {f"ts {r:g}": (lambda r=r: _ts_run(sat, r)[0]) for r in TS_RTOLS}
     fns.update({f"hy {t:g}": (lambda t=t: _hy_run(sat, tas[t], y0, pars, grid)[0])
                 for t in HY_TOLS})
+    fns["c"] = lambda: _c_run(sat, DEFAULT_RTOL)[0]
     times = {k: min(v) for k, v in interleave(fns, repeats).items()}
     ts_err = {r: _error(_ts_run(sat, r)[1], ref) for r in TS_RTOLS}
+    c_err = _error(_c_run(sat, DEFAULT_RTOL)[1], ref)  # its own: -march=native fuses
+    same = _error(_c_run(sat, DEFAULT_RTOL, native=False)[1], _ts_run(sat, DEFAULT_RTOL)[1])
+    rep.check(f"the C port, -O3 ({case}), ends where tethersim does (the same steps)",
+              same <= 1e-13, f"difference {same:.2g}")
     hy_err = {t: _error(_hy_run(sat, tas[t], y0, pars, grid)[1], ref) for t in HY_TOLS}
     for r in TS_RTOLS:
         log(f"  {case}: tethersim rtol {r:g}: error {ts_err[r]:.2g}, "
@@ -218,9 +267,15 @@ def _single(rep, case, preset, changes, repeats, log) -> None:
     hy_t = _at_equal_error(list(hy_err.values()), [times[f"hy {t:g}"] for t in HY_TOLS],
                            target)
     key = "heyoka_single_" + case.split()[0].lower() + "_" + case.split()[-1]
-    rep.fig(key, f"heyoka / tethersim CPU time at equal accuracy, {case}, {PERIODS} "
-                 f"orbits (error {target:.1g})", hy_t / times[f"ts {DEFAULT_RTOL:g}"], "x",
-            note=">1: tethersim faster")
+    ratio = rep.fig(key, f"heyoka / tethersim CPU time at equal accuracy, {case}, {PERIODS} "
+                         f"orbits (error {target:.1g})", hy_t / times[f"ts {DEFAULT_RTOL:g}"],
+                    "x", note=">1: tethersim faster")
+    rep.target(key, f"issue 22: ahead of heyoka, single run, {case}", ratio, ">=", 1.0)
+    log(f"  {case}: C DOP853 port (-march=native) rtol {DEFAULT_RTOL:g}: error {c_err:.2g}, "
+        f"{times['c'] * 1e3:.2f} ms")
+    rep.fig(key + "_c", f"heyoka / C DOP853 port (gcc -O3 -march=native) CPU time at equal "
+                        f"accuracy, {case}: the scheme's floor", hy_t / times["c"], "x",
+            note=">1: the C port faster; <1: no faster DOP853 loop reaches heyoka here")
 
 
 def _sweep_sats():
@@ -230,27 +285,35 @@ def _sweep_sats():
 
 
 def bench_sweep(rep, q, log) -> None:
-    """Sweep throughput: tethersim run_plan vs heyoka's SIMD batches at equal accuracy."""
+    """Sweep throughput: tethersim run_plan vs heyoka's SIMD batches at equal accuracy, at
+    the sweeps' default tolerance and at the class tolerance of maps and searches."""
+    from tethersim.experiments.sweep.plan import CLASS_RTOL, DEFAULT_RTOL
+    _sweep(rep, q, log, DEFAULT_RTOL, HY_TOLS, "")
+    _sweep(rep, q, log, CLASS_RTOL, HY_LOOSE + HY_TOLS, "_class")
+
+
+def _sweep(rep, q, log, rtol, hy_tols, tag) -> None:
     import heyoka as hy
 
     import tethersim as ts
     from tethersim.experiments.sweep import Plan, run_plan
+    from tethersim.experiments.sweep.plan import ATOL_PER_RTOL
     from tethersim.model.inputs import initial_model_state
     sats = _sweep_sats()
     sat0 = sats[0]
     T = SWEEP_PERIODS * sat0.period
-    plan = Plan(periods=float(SWEEP_PERIODS), rtol=SWEEP_RTOL)
+    plan = Plan(periods=float(SWEEP_PERIODS), rtol=rtol)
     # the accuracy to match: tethersim's sweep tolerance at the first point
     ref = ts.simulate(sat0, SWEEP_PERIODS, rtol=1e-13, atol=1e-15, progress=False,
                       samples=2).states[-1][:6]
-    ts_err = _error(ts.simulate(sat0, SWEEP_PERIODS, rtol=SWEEP_RTOL,
-                                atol=SWEEP_RTOL * 1e-2, progress=False,
-                                samples=2).states[-1][:6], ref)
+    ts_err = _error(ts.simulate(sat0, SWEEP_PERIODS, rtol=rtol, atol=rtol * ATOL_PER_RTOL,
+                                progress=False, samples=2).states[-1][:6], ref)
     y0 = initial_model_state(sat0, "derived")
     pars = _taut(sat0, y0)
     grid1 = np.linspace(0.0, T, SAMPLES * SWEEP_PERIODS + 1)
-    tol = next((t for t in HY_TOLS if _error(_hy_run(
-        sat0, heyoka_integrator(sat0, t)[0], y0, pars, grid1)[1], ref) <= ts_err), HY_TOLS[-1])
+    # heyoka's loosest tolerance whose error is at most tethersim's
+    tol = next((t for t in hy_tols if _error(_hy_run(
+        sat0, heyoka_integrator(sat0, t)[0], y0, pars, grid1)[1], ref) <= ts_err), hy_tols[-1])
     bs = hy.recommended_simd_size()
     ta = heyoka_integrator(sat0, tol, batch=bs)[0]
     E = np.array([[s.E1 for s in sats], [s.E2 for s in sats]])
@@ -302,13 +365,18 @@ def bench_sweep(rep, q, log) -> None:
     times = {k: min(v) for k, v in interleave(fns, q.get("sweep_repeats", 3)).items()}
     n = len(sats)
     log(f"  sweep {n} points x {SWEEP_PERIODS} orbits: heyoka tol {tol:g} (tethersim rtol "
-        f"{SWEEP_RTOL:g}: error {ts_err:.2g}), SIMD batch {bs}")
+        f"{rtol:g}: error {ts_err:.2g}), SIMD batch {bs}")
     for k, v in times.items():
         log(f"  {k} thread(s): {n / v:.0f} trajectories/s")
     log(f"  (one thread: process CPU time; {cores} threads: wall time, load average "
         f"{os.getloadavg()[0]:.1f})")
     for w in (1, cores):
-        rep.fig(f"heyoka_sweep_{w}", f"tethersim / heyoka (batch {bs}) sweep trajectories/s, "
-                                     f"{w} thread(s), equal accuracy",
-                times[f"hy {w}"] / times[f"ts {w}"], "x", note=">1: tethersim faster; "
+        ratio = times[f"hy {w}"] / times[f"ts {w}"]
+        if not tag:
+            rep.target(f"heyoka_sweep_{w}", f"issue 22: sweeps >= 1.5x heyoka's batches, {w} "
+                       f"thread(s)", ratio, ">=", 1.5)
+        rep.fig(f"heyoka_sweep_{w}{tag}", f"tethersim / heyoka (batch {bs}) sweep "
+                                          f"trajectories/s, {w} thread(s), equal accuracy "
+                                          f"(rtol {rtol:g}, heyoka tol {tol:g})",
+                ratio, "x", note=">1: tethersim faster; "
                 "tethersim's records include metrics, class and force peaks")

@@ -53,6 +53,7 @@ for path in (str(HERE), str(REPO)):
         sys.path.insert(0, path)
 
 import numpy as np  # noqa: E402
+from speedpage import fmt as _fmt  # noqa: E402
 from timing import clock, cpu_clock, interleave, median, spread, wall  # noqa: E402
 
 from tethersim.engine.events import event_parameters  # noqa: E402
@@ -113,24 +114,6 @@ class Report:
     def check(self, label, ok, detail=""):
         self.checks.append({"label": label, "ok": bool(ok), "detail": detail})
         log(f"    check: {label}: {'ok' if ok else 'FAILED'}{'  ' + detail if detail else ''}")
-
-
-def _fmt(v, unit):
-    if v is None:
-        return "-"
-    if unit == "s":
-        if v < 1e-6:
-            return f"{v * 1e9:.1f} ns"
-        if v < 1e-3:
-            return f"{v * 1e6:.2f} µs"
-        if v < 1:
-            return f"{v * 1e3:.2f} ms"
-        return f"{v:.2f} s"
-    if unit == "x":
-        return f"{v:.2f}x" if v < 100 else f"{v:.0f}x"
-    if unit == "count":
-        return f"{int(v)}"
-    return f"{v:.4g} {unit}"
 
 
 # --------------------------------------------------------------------------- setup
@@ -829,7 +812,9 @@ def main(argv=None) -> int:
         "figures": rep.figures, "targets": rep.targets, "checks": rep.checks, "notes": rep.notes,
     }
     Path(args.json).write_text(json.dumps(doc, indent=2, default=_json_default) + "\n")
-    print_table(rep, total, args.json)
+    import speedpage
+    page = speedpage.write(Path(args.json))
+    print_table(rep, total, f"{args.json} and {page}")
     return 0 if all(c["ok"] for c in rep.checks) else 1
 
 

@@ -16,6 +16,8 @@ from pathlib import Path
 import numpy as np
 from timing import clock, interleave, median, wall
 
+COMPILE_NOTICE = "tethersim: compiling numerical kernels"  # engine/integrators/select.py
+
 GRID = (np.linspace(0.0036, 0.0044, 12), np.linspace(0.039, 0.047, 12))  # N/mm^2, 144 runs
 
 
@@ -53,13 +55,21 @@ def bench_sweep(rep, q):
 
 
 def bench_report(rep, q, repo):
-    out = Path(tempfile.mkdtemp(prefix="tethersim-bench-report-"))
-    try:
-        dt, rc, tail = wall([sys.executable, "-m", "tethersim", "report", "--out", str(out)],
-                            cwd=repo, timeout=3600)
-    finally:
-        shutil.rmtree(out, ignore_errors=True)
-    rep.check("tethersim report exits 0", rc == 0, tail[-300:])
-    rep.fig("report.wall", "tethersim report, whole chapter 5 (one run)", dt, "s", [dt])
-    rep.target("report.wall", "tethersim report wall time", dt, "<=", 600.0, unit="s",
-               note="issue 4")
+    def run():
+        out = Path(tempfile.mkdtemp(prefix="tethersim-bench-report-"))
+        try:
+            return wall([sys.executable, "-m", "tethersim", "report", "--out", str(out)],
+                        cwd=repo, timeout=3600, keep=10**7)
+        finally:
+            shutil.rmtree(out, ignore_errors=True)
+
+    dt, rc, text = run()
+    if rc == 0 and COMPILE_NOTICE in text:  # kernels compiled: time a warm run too
+        rep.fig("report.cold", "tethersim report, compiling its kernels first (one run)",
+                dt, "s", [dt])
+        dt, rc, text = run()
+    rep.check("tethersim report exits 0", rc == 0, text[-300:])
+    rep.fig("report.wall", "tethersim report, whole chapter 5, kernels cached (one run)", dt,
+            "s", [dt])
+    rep.target("report.wall", "issue 22: tethersim report wall time", dt, "<=", 70.0, unit="s",
+               note=f"{os.cpu_count()} cores")

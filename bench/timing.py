@@ -50,13 +50,14 @@ def spread(xs) -> float:
     return (q[2] - q[0]) / 2 / m if m else float("nan")
 
 
-def wall(cmd, cwd=None, env=None, timeout=600):
-    """Wall time [s] of a subprocess, its return code and the tail of its output."""
+def wall(cmd, cwd=None, env=None, timeout=600, keep=2000):
+    """Wall time [s] of a subprocess, its return code and the last ``keep`` characters of
+    its output."""
     e = dict(os.environ)
     if env:
         e.update(env)
     t0 = clock()
     proc = subprocess.run(cmd, cwd=cwd, env=e, capture_output=True, text=True, timeout=timeout)
     dt = clock() - t0
-    tail = (proc.stdout + proc.stderr)[-2000:]
+    tail = (proc.stdout + proc.stderr)[-keep:]
     return dt, proc.returncode, tail

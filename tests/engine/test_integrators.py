@@ -168,7 +168,7 @@ def test_nonfinite_start_returns_at_once_instead_of_hanging(sat):
     ev = event_parameters(sat, "derived")
     t, h, i_out, status, _ = dop853_run(0, uniform_air(), 0.0, 100.0, y, 0.0, p, p.copy(), ev,
                                         1e-10, 1e-12, True, out_t, out_y, 0, 1000,
-                                        np.zeros(5, np.int64))
+                                        np.zeros(5, np.int64), math.inf)
     assert status == STATUS_NONFINITE and t == 0.0
 
 

@@ -19,7 +19,7 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from tethersim.analysis.metrics_kernel import N_PITCH, pitch_metrics_into, window_mean
+from tethersim.analysis.metrics_kernel import N_PITCH, pitch_metrics_of, window_mean_of
 
 SETTLING_TOL = 0.05  # rad, thesis stability criterion (p. 5-18)
 SS_FRACTION = 0.2  # last fifth of the run defines the steady state
@@ -108,7 +108,7 @@ def steady_state_mean(t, values, ss_fraction: float = SS_FRACTION) -> float:
     t = np.ascontiguousarray(t, dtype=float)
     v = np.ascontiguousarray(values, dtype=float).reshape(-1, 1)
     n = t.size
-    return float(window_mean(t, v, n, 0, t[-1] - ss_fraction * (t[-1] - t[0]), np.empty(n)))
+    return float(window_mean_of(t, v, n, 0, t[-1] - ss_fraction * (t[-1] - t[0]), np.empty(n)))
 
 
 def steady_metrics(t, Y, col: int, trail: tuple = (), tol: float = SETTLING_TOL,
@@ -145,8 +145,8 @@ def steady_metrics(t, Y, col: int, trail: tuple = (), tol: float = SETTLING_TOL,
         raise ValueError(f"ss_fraction = {ss_fraction}: allowed range (0, 1]")
     n = t.size
     buf, out = np.empty(n), np.empty(N_PITCH)
-    threshold = pitch_metrics_into(t, Y, n, col, tol, float(ss_fraction), buf, out)
-    means = tuple(float(window_mean(t, Y, n, c, threshold, buf)) for c in trail)
+    threshold = pitch_metrics_of(t, Y, n, col, tol, float(ss_fraction), buf, out)
+    means = tuple(float(window_mean_of(t, Y, n, c, threshold, buf)) for c in trail)
     return PitchMetrics(mean_pitch=float(out[0]), steady_state_pitch=float(out[1]),
                         settling_time=float(out[2]), tumbled=bool(out[3]),
                         upside_down=bool(out[4])), means

@@ -22,6 +22,8 @@ import math
 import numpy as np
 from numba import njit
 
+from tethersim.engine.integrators.borrow import borrow
+
 N_PITCH = 5  # mean, steady-state, settling, tumbled (0/1), upside down (0/1)
 
 
@@ -69,7 +71,7 @@ def window_start(t, n, ss_fraction):
 @njit(cache=True)
 def window_mean(t, Y, n, col, threshold, buf):
     """Mean of Y[i, col] over the samples i < n with t[i] >= threshold; buf: scratch (>= n)."""
-    m = 0
+    m = np.int64(0)  # not a literal 0: that would compile compensated_sum once more
     for i in range(n):
         if t[i] >= threshold:
             buf[m] = Y[i, col]
@@ -114,3 +116,19 @@ def pitch_metrics_into(t, Y, n, col, tol, ss_fraction, buf, out):
     out[3] = 1.0 if tumbled else 0.0
     out[4] = 1.0 if abs(wrapped) > 3 * math.pi / 4 else 0.0
     return threshold
+
+
+# From Python, the kernels above run on borrowed views of the caller's arrays: the types
+# the sweeps' compiled blocks pass them (experiments/sweep/kernel.py _measure), so one
+# compiled copy of each serves both (a plain array would compile a second).
+@njit(cache=True)
+def pitch_metrics_of(t, Y, n, col, tol, ss_fraction, buf, out):
+    """:func:`pitch_metrics_into` called from Python (C-contiguous float arrays)."""
+    return pitch_metrics_into(borrow(t), borrow(Y), n, col, tol, ss_fraction, borrow(buf),
+                              borrow(out))
+
+
+@njit(cache=True)
+def window_mean_of(t, Y, n, col, threshold, buf):
+    """:func:`window_mean` called from Python (C-contiguous float arrays)."""
+    return window_mean(borrow(t), borrow(Y), n, col, threshold, borrow(buf))

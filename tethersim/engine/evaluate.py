@@ -247,10 +247,18 @@ def chain_power_series(model: int, air, T, Y, p) -> np.ndarray:
     return call(_chain_power_series, model, air, T, Y, p)
 
 
+@njit(cache=True, nogil=True)
+def _family_force_peaks_of(model, air, T, Y, p):
+    # on borrowed views: the types a sweep's compiled blocks pass _family_force_peaks
+    # (experiments/sweep/kernel.py _measure), so one compiled loop serves both
+    literally(model)
+    return _family_force_peaks(model, borrow(air), borrow(T), borrow(Y), borrow(p))
+
+
 def family_force_peaks(model: int, air, T, Y, p) -> np.ndarray:
     """Largest |Q| of any single family on each coordinate over the samples (model index
-    ``model``, air vector ``air``); the loop releases the GIL."""
-    return call(_family_force_peaks, model, air, T, Y, p)
+    ``model``, air vector ``air``; C-contiguous float arrays); the loop releases the GIL."""
+    return call(_family_force_peaks_of, model, air, T, Y, p)
 
 
 def tether_margin_series(model: int, Y, p) -> np.ndarray:

@@ -87,16 +87,18 @@ def _rk4_loop(model, air, k0, y, h, n_steps, stride, p, pw, ev, locate, out_t, o
         # call or resumed in chunks (t0 + (k - 1) h would round differently per chunk)
         t = (k0 + k - 1) * h
         hit, t_hit = -1, t
+        # ``locate`` itself (True here, False below) rather than a constant: a literal
+        # compiles rk4_advance, and the location under it, once more for each value
         if locate:
             sw, hit, t_hit = rk4_advance(model, air, t, y, h, p, pw, ev, work, y_new, g0, g1,
-                                         g[2], True)
+                                         g[2], locate)
             switches += sw
         else:
             rk4_step(model, air, t, y, h, p, pw, work, y_new)
             model_events(model, y_new, p, ev, g1, False)
-            if switching.fired(g0, g1, False):  # a stopping limit: redo the step, located
+            if switching.fired(g0, g1, locate):  # a stopping limit: redo the step, located
                 _, hit, t_hit = rk4_advance(model, air, t, y, h, p, pw, ev, work, y_new, g0,
-                                            g1, g[2], False)
+                                            g1, g[2], locate)
             else:
                 for i in range(n):
                     y[i] = y_new[i]

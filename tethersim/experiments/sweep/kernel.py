@@ -108,75 +108,78 @@ def _adaptive_status(st, slot):
 @njit(cache=True, nogil=True)
 def _block_loop(model, air, faithful, T, Y0, P, span, n_steps, rtol, atol, max_steps, EV,
                 cols, tol, ss_fraction, rec_f, rec_i, out_t, out_y, pw, counters, buf, pm):
-    # every array is borrowed here, once (integrators/borrow.py)
-    air, T, Y0, P, span, EV, cols = (borrow(air), borrow(T), borrow(Y0), borrow(P),
-                                     borrow(span), borrow(EV), borrow(cols))
-    rec_f, rec_i, out_t, out_y = borrow(rec_f), borrow(rec_i), borrow(out_t), borrow(out_y)
-    pw, counters = borrow(pw), borrow(counters)
-    buf, pm = borrow(buf), borrow(pm)
+    # The run loops are called with plain arrays, the types simulate() calls them with,
+    # so that a sweep loads the loops simulate() compiled rather than compiling a second
+    # copy for borrowed arrays (each loop borrows its arrays itself, once per call: no
+    # reference count per step).  The rest is borrowed here, once (integrators/borrow.py).
+    T_, P_, span, cols = borrow(T), borrow(P), borrow(span), borrow(cols)
+    rec_f, rec_i, buf, pm = borrow(rec_f), borrow(rec_i), borrow(buf), borrow(pm)
+    air_, out_t_, out_y_ = borrow(air), borrow(out_t), borrow(out_y)
     ns = Y0.shape[1]
-    # the loops' flags and first row as run-time values: a constant would be typed as a
+    # the loops' flags and first rows as run-time values: a constant would be typed as a
     # literal and compile a second copy of each loop (same arithmetic, twice the compile)
     locate = not faithful  # DOP853 locates the switches, the thesis's RK4 does not
-    one = np.int64(1)
-    for j in range(P.shape[0]):
+    zero, one = np.int64(0), np.int64(1)
+    for j in range(P_.shape[0]):
         y, p, ev = Y0[j], P[j], EV[j]
         for i in range(p.shape[0]):
             pw[i] = p[i]
         for i in range(ns):
-            out_y[0, i] = y[i]
+            out_y_[0, i] = y[i]
         if faithful:  # simulate._run_rk4, progress=False: one call for every step
-            out_t[0] = 0.0
-            rows, _, st, slot, _ = rk4_run(model, air, 0, y, span[j], n_steps, one, p, pw,
+            out_t_[0] = 0.0
+            rows, _, st, slot, _ = rk4_run(model, air, zero, y, span[j], n_steps, one, p, pw,
                                            ev, locate, out_t, out_y, one)
             n = 1 + rows
             # a run stopped at a limit took the steps up to it (simulate._run_rk4)
             nfev = 4 * (rows if st == RK4_EVENT else n_steps)
             status = (STATUS_OK if st == 0 else EVENT_STATUS[slot] if st == RK4_EVENT
                       else STATUS_NONFINITE)
-            t = out_t
+            t = out_t_
             end_time = t[n - 1]  # a located stop is the last row (rk4_run)
         else:  # simulate._run_adaptive, progress=False, circular orbit: one call
-            t = T[j]
+            t = T_[j]
             for i in range(counters.shape[0]):
                 counters[i] = 0
             t_stop, _, n, st, slot = dop853_run(model, air, 0.0, span[j], y, 0.0, p, pw, ev,
-                                                rtol, atol, locate, t, out_y, one, max_steps,
-                                                counters, math.inf)
+                                                rtol, atol, locate, T[j], out_y, one,
+                                                max_steps, counters, math.inf)
             nfev = counters[0]
             status = _adaptive_status(st, slot)
             # a located stop is not a row of the grid (simulate appends it)
             end_time = t_stop if st == DOP853_EVENT else t[n - 1]
-        _measure(j, model, air, p, t, out_y, n, status, nfev, end_time, cols, tol,
+        _measure(j, model, air_, P_[j], t, out_y_, n, status, nfev, end_time, cols, tol,
                  ss_fraction, rec_f, rec_i, buf, pm)
 
 
 @njit(cache=True, nogil=True)
 def _implicit_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, tol,
                    ss_fraction, rec_f, rec_i, out_y, pw, counters, carry, buf, pm):
-    air, T, Y0, P, span, EV, cols = (borrow(air), borrow(T), borrow(Y0), borrow(P),
-                                     borrow(span), borrow(EV), borrow(cols))
-    rec_f, rec_i, out_y, pw = borrow(rec_f), borrow(rec_i), borrow(out_y), borrow(pw)
-    counters, carry, buf, pm = borrow(counters), borrow(carry), borrow(buf), borrow(pm)
+    # the run loop takes plain arrays, as simulate() calls it (_block_loop)
+    T_, P_, span, cols = borrow(T), borrow(P), borrow(span), borrow(cols)
+    rec_f, rec_i, buf, pm = borrow(rec_f), borrow(rec_i), borrow(buf), borrow(pm)
+    air_, out_y_ = borrow(air), borrow(out_y)
     ns = Y0.shape[1]
     one = np.int64(1)
-    for j in range(P.shape[0]):
-        y, p, ev, t = Y0[j], P[j], EV[j], T[j]
+    locate = one == 1  # True, typed as a run-time bool: a literal compiles a second loop
+    for j in range(P_.shape[0]):
+        y, p, ev = Y0[j], P[j], EV[j]
         for i in range(p.shape[0]):
             pw[i] = p[i]
         for i in range(ns):
-            out_y[0, i] = y[i]
+            out_y_[0, i] = y[i]
         for i in range(counters.shape[0]):
             counters[i] = 0
         for i in range(carry.shape[0]):
             carry[i] = 0.0
         # simulate._run_adaptive(scheme="implicit"): the switches located, one call
         t_stop, _, n, st, slot = radau_run(model, air, 0.0, span[j], y, 0.0, p, pw, ev, rtol,
-                                           atol, True, t, out_y, one, max_steps, counters,
-                                           carry, math.inf)
+                                           atol, locate, T[j], out_y, one, max_steps,
+                                           counters, carry, math.inf)
+        t = T_[j]
         end_time = t_stop if st == DOP853_EVENT else t[n - 1]
-        _measure(j, model, air, p, t, out_y, n, _adaptive_status(st, slot), counters[0],
-                 end_time, cols, tol, ss_fraction, rec_f, rec_i, buf, pm)
+        _measure(j, model, air_, P_[j], t, out_y_, n, _adaptive_status(st, slot),
+                 counters[0], end_time, cols, tol, ss_fraction, rec_f, rec_i, buf, pm)
 
 
 # nogil: the sweep's threads run blocks side by side

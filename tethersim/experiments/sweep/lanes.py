@@ -99,7 +99,10 @@ def _lanes_loop(model, air, Y0, P, span, n_steps, EV, cols, tol, ss_fraction, re
     ns = Y0.shape[1]
     K = T.shape[0]
     n_points = P.shape[0]
-    nxt = 0
+    # run-time values, not literals: a literal argument compiles a second copy of the
+    # function it is passed to (the scalar loops pass these as run-time values)
+    nxt = np.int64(0)
+    off = np.bool_(False)  # the faithful scheme locates no switch
     active = 0
     for k in range(K):  # fill the lanes; a point that starts outside is recorded at once
         state = IDLE
@@ -127,11 +130,11 @@ def _lanes_loop(model, air, Y0, P, span, n_steps, EV, cols, tol, ss_fraction, re
                 y_new[i] = Y_new[i * LANES + k]
             model_events(model, y_new, P[j], EV[j], g1, False)
             state = RUNNING
-            if switching.fired(g0[k], g1, False):  # a stopping limit: redo the step, located
+            if switching.fired(g0[k], g1, off):  # a stopping limit: redo the step, located
                 for i in range(ns):
                     y[i] = Y[i * LANES + k]
                 _, hit, t_hit = rk4_advance(model, air, T[k], y, H[k], P[j], pw, EV[j],
-                                            work1, y_new, g0[k], g1, g, False)
+                                            work1, y_new, g0[k], g1, g, off)
                 for i in range(ns):
                     Y[i * LANES + k] = y[i]
                 if hit >= 0:  # the located state is the last row, at the event's time

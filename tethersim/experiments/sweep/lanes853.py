@@ -183,8 +183,9 @@ def _located(model, air, k, T, P, EV, Y, Ks, TL, H, lane, out_y, g0, g1, y, f, y
     for i in range(pw.shape[0]):
         pw[i] = P[j, i]
     t = TL[k]
+    # switches watched, as a run-time value: the scalar DOP853 loop's compiled location
     h_try, hit = switching.locate(1, model, air, t, y, f, H[k], P[j], pw, EV[j], work, yn,
-                                  g0[k], g1[k], g, True)
+                                  g0[k], g1[k], g, np.bool_(True))
     if hit < N_SWITCH:
         hit = -1
     t_new = t + h_try
@@ -232,9 +233,12 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
     K = H.shape[0]
     rows = T.shape[1]
     n_points = P.shape[0]
-    nxt = 0
+    # counters as run-time values from the start: a literal 0 would compile _load and
+    # flush once more for it
+    nxt = np.int64(0)
     active = K
-    queued = 0  # steps waiting for their interpolant (lanes_dense.enqueue)
+    queued = np.int64(0)  # steps waiting for their interpolant (lanes_dense.enqueue)
+    on = np.bool_(True)  # switches watched (the scalar loop's run-time flag)
     while True:
         # each lane's step begins (a finished lane is recorded and takes the next point)
         for k in range(K):
@@ -285,7 +289,7 @@ def _lanes853_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
                     yn[i] = Y_new[i * LANES + k]
                 model_events(model, y, P[j], EV[j], g0[k], True)
                 model_events(model, yn, P[j], EV[j], g1[k], True)
-                fired = switching.fired(g0[k], g1[k], True)
+                fired = switching.fired(g0[k], g1[k], on)
             if fired:
                 hit = _located(model, air, k, T, P, EV, Y, Ks, TL, H, lane, out_y, g0, g1, y,
                                f, yn, pw, work, Fs, g)
