@@ -58,8 +58,13 @@ def _section(key: str) -> str:
     return "heyoka" if key.startswith("heyoka") else key.split(".")[0]
 
 
-def _cell(text) -> str:
-    return str(text).replace("|", "\\|").replace("\n", " ")
+def _cell(text, width: int = 0) -> str:
+    """Text for a table cell or list item: one line, "|" escaped, at most ``width``
+    characters (0: all)."""
+    text = " ".join(str(text).split())
+    if width and len(text) > width:
+        text = text[:width - 1] + "…"
+    return text.replace("|", "\\|")
 
 
 def render(doc: dict) -> str:
@@ -107,7 +112,8 @@ def render(doc: dict) -> str:
     ok = sum(c["ok"] for c in doc["checks"])
     lines += ["", f"## Sanity checks: {ok} of {len(doc['checks'])} hold", ""]
     lines += [f"- {'ok' if c['ok'] else '**FAILED**'}: {_cell(c['label'])}"
-              f"{': ' + _cell(c['detail']) if c['detail'] else ''}" for c in doc["checks"]]
+              f"{': ' + _cell(c['detail'], 160) if c['detail'] else ''}"
+              for c in doc["checks"]]
     if doc["notes"]:
         lines += ["", "## Notes", ""] + [f"- {_cell(n)}" for n in doc["notes"]]
     return "\n".join(lines) + "\n"
