@@ -161,7 +161,8 @@ def _implicit_loop(model, air, T, Y0, P, span, rtol, atol, max_steps, EV, cols, 
     air_, out_y_ = borrow(air), borrow(out_y)
     ns = Y0.shape[1]
     one = np.int64(1)
-    locate = one == 1  # True, typed as a run-time bool: a literal compiles a second loop
+    # True as a run-time bool, as simulate() passes it: a literal compiles a second loop
+    locate = np.bool_(True)
     for j in range(P_.shape[0]):
         y, p, ev = Y0[j], P[j], EV[j]
         for i in range(p.shape[0]):
