@@ -22,12 +22,14 @@ from __future__ import annotations
 import ctypes
 import hashlib
 import subprocess
+from functools import cache
 from pathlib import Path
 
 import numpy as np
 import sympy as sp
 from sympy.printing.c import C99CodePrinter
 from sympy.printing.precedence import precedence
+from timing import cpu_clock
 
 from derive import codegen
 from derive.pipeline import Q_SYMBOLS
@@ -35,6 +37,9 @@ from derive.printer import NumbaPrinter
 from derive.symbols import PARAMETERS, STATE_NAMES, TETHER_LENGTHS
 
 BUILD = Path(__file__).resolve().parent / "_build"
+#: gcc flags of each build of the port: plain -O3 (no fused multiply-adds, the same
+#: numbers as numba's loops) and -O3 -march=native (the lean floor)
+FLAGS = {"O3": ("-O3",), "native": ("-O3", "-march=native")}
 IND = "    "
 
 
@@ -492,6 +497,50 @@ def c_source(model, length_defs) -> tuple[str, dict]:
                      ("@P_L20@", layout.P_L20)):
         margins = margins.replace(key, str(val))
     return _fill(rhs, margins, 6), {"cse_temporaries": n_tmp, "same_cse_as_codegen": True}
+
+
+@cache
+def derived_model() -> tuple:
+    """(model, tether length definitions) of the 'derived' model, derived once a process
+    (derive/, as make derive does)."""
+    from derive.kinematics import planar_kinematics
+    from derive.model import derive
+    from derive.models import BY_NAME
+    from derive.pipeline import to_state_symbols
+
+    length_defs = {lam: to_state_symbols(d)
+                   for lam, d in planar_kinematics().tether_length_defs.items()}
+    return derive(BY_NAME["derived"]), length_defs
+
+
+@cache
+def derived_source() -> tuple[str, dict]:
+    """c_source of the 'derived' model, once a process."""
+    return c_source(*derived_model())
+
+
+@cache
+def port(tag: str = "O3") -> CRef:
+    """The C port of the 'derived' model built with FLAGS[tag], once a process (the
+    library itself is cached on disk by build)."""
+    return CRef(build(derived_source()[0], FLAGS[tag], tag))
+
+
+def timed_dop853(lib: CRef, y0, p, t_end: float, n_out: int, rtol: float, atol: float,
+                 locate: bool = True) -> tuple:
+    """One C dop853_run from t = 0 to ``t_end`` on n_out equal output steps, as the
+    bench's numba runs; (thread CPU seconds, counters, final state, output rows)."""
+    out_t = np.linspace(0.0, t_end, n_out + 1)[1:]
+    out_y = np.empty((n_out, len(y0)))
+    y = np.array(y0, dtype=float)
+    cnt = np.zeros(5, dtype=np.int64)
+    p = np.asarray(p, dtype=float)
+    t0 = cpu_clock()
+    st = lib.dop853_run(0.0, t_end, y, 0.0, p, rtol, atol, locate, out_t, out_y, 0, 10**9,
+                        cnt)[3]
+    dt = cpu_clock() - t0
+    assert st == 0, st
+    return dt, cnt, y, out_y
 
 
 def c_source_of_generated(name: str) -> str:

@@ -170,39 +170,17 @@ def _ts_run(sat, rtol):
     return dt, res.states[-1][:6]
 
 
-@cache
-def c_port(native: bool = True):
-    """The bench's C port of the derived model with its DOP853 driver (bench/cref.py):
-    gcc -O3 -march=native, the lean floor of tethersim's own scheme, or plain -O3 (no
-    fused multiply-adds: the same numbers as tethersim's loop)."""
+def _c_run(sat, rtol, native=True):
+    """The C port (bench/cref.py: gcc -O3 -march=native, the lean floor of tethersim's own
+    scheme, or plain -O3, the same numbers as tethersim's loop) over the single run's span
+    and output grid, at ``rtol``; (thread CPU seconds, final state)."""
     import cref
 
-    from derive.kinematics import planar_kinematics
-    from derive.model import derive
-    from derive.models import BY_NAME
-    from derive.pipeline import to_state_symbols
-    length_defs = {lam: to_state_symbols(d)
-                   for lam, d in planar_kinematics().tether_length_defs.items()}
-    src, _ = cref.c_source(derive(BY_NAME["derived"]), length_defs)
-    if native:
-        return cref.CRef(cref.build(src, ("-O3", "-march=native"), "native"))
-    return cref.CRef(cref.build(src, ("-O3",), "O3"))
-
-
-def _c_run(sat, rtol, native=True):
-    """The C port over the single run's span and output grid, at ``rtol``."""
     from tethersim.model.inputs import initial_model_state, parameter_vector
-    y = np.array(initial_model_state(sat, "derived"), dtype=float)
-    p = np.asarray(parameter_vector(sat, "derived"), dtype=float)
-    T = PERIODS * sat.period
-    out_t = np.linspace(0.0, T, SAMPLES * PERIODS + 1)[1:]
-    out_y = np.empty((out_t.size, y.size))
-    cnt = np.zeros(5, dtype=np.int64)
-    t0 = cpu_clock()
-    st = c_port(native).dop853_run(0.0, T, y, 0.0, p, rtol, rtol * 1e-2, True, out_t, out_y, 0,
-                             10**9, cnt)[3]
-    dt = cpu_clock() - t0
-    assert st == 0, st
+    dt, _, y, _ = cref.timed_dop853(cref.port("native" if native else "O3"),
+                                    initial_model_state(sat, "derived"),
+                                    parameter_vector(sat, "derived"), PERIODS * sat.period,
+                                    SAMPLES * PERIODS, rtol, rtol * 1e-2)
     return dt, y
 
 

@@ -31,6 +31,9 @@ with gcc -O3.  Results go to stdout (table at the end) and bench/results.json.
  11. real tethers (bench/stiff.py): SatI on 1 mm Dyneema lines, tethersim's Radau IIA
      against the explicit C DOP853 port at equal accuracy, and against the
      thesis-tether run of the same length; `--only stiff` runs this section alone
+ 12. plans of many of the 3-D, free-orbit and NRLMSISE-00-air models against bare
+     compiled runs of the same points, and their 1 -> 2 thread scaling
+     (bench/models_sweep.py, issue 20); `--only models` runs this section alone
 """
 from __future__ import annotations
 
@@ -133,26 +136,19 @@ def load_satellite():
 def setup(rep: Report):
     import cref
 
-    from derive.kinematics import planar_kinematics
-    from derive.model import derive
-    from derive.models import BY_NAME
-    from derive.pipeline import to_state_symbols
     from tethersim.model.inputs import initial_model_state, parameter_vector
 
     sat, what = load_satellite()
     log(f"satellite: {sat.name} ({what}); period {sat.period:.1f} s")
     t0 = clock()
-    model = derive(BY_NAME["derived"])
-    length_defs = {lam: to_state_symbols(d)
-                   for lam, d in planar_kinematics().tether_length_defs.items()}
+    model, length_defs = cref.derived_model()
     t_derive = clock() - t0
     t0 = clock()
-    src, info = cref.c_source(model, length_defs)
+    _, info = cref.derived_source()
     t_src = clock() - t0
     current = cref.generated_is_current(model, length_defs, REPO / "generated" / "derived.py")
     t0 = clock()
-    lib_o3 = cref.CRef(cref.build(src, ("-O3",), "O3"))
-    lib_nat = cref.CRef(cref.build(src, ("-O3", "-march=native"), "native"))
+    lib_o3, lib_nat = cref.port("O3"), cref.port("native")
     t_gcc = clock() - t0
     log(f"derivation of 'derived' {t_derive:.1f} s, C source {t_src:.1f} s "
         f"({info['cse_temporaries']} cse temporaries, same cse as derive.codegen), "
@@ -359,18 +355,10 @@ def dop853_numba(S, periods, locate=True):
 
 
 def dop853_c(S, lib, periods, locate=True):
-    sat, p, y0 = S["sat"], S["p"], S["y0"]
-    T = periods * sat.period
-    n_out = max(2, round(SAMPLES_PER_PERIOD * periods))
-    out_t = np.linspace(0.0, T, n_out + 1)[1:]
-    out_y = np.empty((n_out, y0.size))
-    y = y0.copy()
-    cnt = np.zeros(5, dtype=np.int64)
-    t0 = cpu_clock()
-    r = lib.dop853_run(0.0, T, y, 0.0, p, RTOL, ATOL, locate, out_t, out_y, 0, 10**9, cnt)
-    dt = cpu_clock() - t0
-    assert r[3] == 0, r
-    return dt, cnt, y, out_y
+    """The C port's dop853_run over the span and grid of dop853_numba."""
+    import cref
+    return cref.timed_dop853(lib, S["y0"], S["p"], periods * S["sat"].period,
+                             max(2, round(SAMPLES_PER_PERIOD * periods)), RTOL, ATOL, locate)
 
 
 def solve_ivp_run(S, fun, periods):
@@ -705,12 +693,13 @@ def main(argv=None) -> int:
     ap.add_argument("--skip-slow", action="store_true",
                     help="skip the subprocess figures (make derive, CLI, report)")
     ap.add_argument("--only", choices=("core", "sweep", "report", "3d", "cli", "peers",
-                                       "lanes", "stiff"),
+                                       "lanes", "stiff", "models"),
                     default=None,
                     help="run one section only (the planar loops and simulate() against the "
                          "C port, sweep throughput, the report's wall time, "
                          "the 3-D model against its C port, the CLI's cold and warm runs, "
-                         "heyoka, or the sweep's SIMD lanes against its scalar block)")
+                         "heyoka, the sweep's SIMD lanes against its scalar block, or "
+                         "plans of 3-D, free-orbit and MSIS-air models against bare runs)")
     args = ap.parse_args(argv)
     q = dict(fast_repeats=15, dop_repeats=9, slow_repeats=5, rhs_calls=200_000,
              lambdify_calls=1000, pydy_calls=4000, pycall_calls=20_000,
@@ -756,6 +745,9 @@ def main(argv=None) -> int:
             import lanes_bench
             lanes_bench.bench_lanes(rep, q, log)
             lanes_bench.bench_lanes_adaptive(rep, q, log)
+        elif args.only == "models":
+            import models_sweep
+            models_sweep.bench_models_sweep(rep, q, log)
         else:
             sweep_bench.bench_report(rep, q, REPO)
         print_table(rep, clock() - t_start, "(not written with --only)")
@@ -793,6 +785,8 @@ def main(argv=None) -> int:
     import lanes_bench
     lanes_bench.bench_lanes(rep, q, log)
     lanes_bench.bench_lanes_adaptive(rep, q, log)
+    import models_sweep
+    models_sweep.bench_models_sweep(rep, q, log)
     if not args.skip_slow:
         bench_derive(rep, q)
         bench_cli(rep, q)

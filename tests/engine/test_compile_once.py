@@ -9,7 +9,9 @@ cache before they were removed (cold fast tier 174 -> 164 s):
   and compiles the callee for it too;
 * plain arrays from Python against borrowed views (integrators/borrow.py) from a compiled
   block: the sweeps' blocks called the DOP853 and RK4 loops, the metrics and the force
-  peaks with borrowed arrays, simulate() and outcome() with plain ones.
+  peaks with borrowed arrays, simulate() and outcome() with plain ones; the force series
+  (SimResult.forces) called the forces loop with plain arrays, the force peaks with
+  borrowed ones.
 
 One process runs what a user runs (simulate, outcome, a one-point and a 16-point sweep of
 each scheme) and counts the signatures of each loop per leading literal (the model, and
@@ -38,7 +40,9 @@ from tethersim.experiments.sweep import lanes853, lanes_dense
 
 sat = ts.load_preset("satI")
 for method in ("adaptive", "rk4"):
-    ts.outcome(ts.simulate(sat, 0.2, method=method, progress=False))
+    res = ts.simulate(sat, 0.2, method=method, progress=False)
+    ts.outcome(res)
+    res.forces  # the force series of the CLI's plots, beside outcome()'s force peaks
 many = [sat.replace(E2=sat.E2 * (1 + 0.01 * i)) for i in range(16)]
 for method in ("adaptive", "faithful"):
     for sats in ([sat], many):  # the scalar block, then the lanes
@@ -48,7 +52,8 @@ loops = {"dop853_run": dop853.dop853_run, "_dop853_loop": dop853._dop853_loop,
          "rk4_advance": rk4.rk4_advance, "locate": switching.locate,
          "_load": lanes853._load, "flush": lanes_dense.flush,
          "pitch_metrics_into": mk.pitch_metrics_into, "window_mean": mk.window_mean,
-         "_family_force_peaks": evaluate._family_force_peaks}
+         "_family_force_peaks": evaluate._family_force_peaks,
+         "_forces_loop": evaluate._forces_loop}
 
 
 def leading_literals(sig):

@@ -126,7 +126,11 @@ def _family_forces_series(model, air, T, Y, p):
     literally(model)
     nf, nq = model_shape(model)
     out = np.zeros((Y.shape[0], nf, nq))
-    _forces_loop(model, air, T, Y, p, p.copy(), out, np.empty((nf, nq)), np.empty(0))
+    # the arguments borrowed, the scratch plain: the types _family_force_peaks passes
+    # (a sweep's blocks and outcome() call it on borrowed views), so one compiled
+    # _forces_loop serves both; the scratch arrays live as arguments of the call
+    _forces_loop(model, borrow(air), borrow(T), borrow(Y), borrow(p), p.copy(), out,
+                 np.empty((nf, nq)), np.empty(0))
     return out
 
 
