@@ -27,6 +27,7 @@ SECTIONS = {
     "lanes": "SIMD lanes against the scalar block",
     "heyoka": "heyoka.py at equal accuracy",
     "stiff": "Real (stiff) tethers: Radau IIA",
+    "models": "Plans of the 3-D, free-orbit and MSIS-air models against bare runs",
     "derive": "`make derive`",
     "cli": "Command line: cold and warm runs",
     "report": "`tethersim report`",
