@@ -19,9 +19,9 @@ with gcc -O3.  Results go to stdout (table at the end) and bench/results.json.
   6. second `tethersim run satI --periods 50` wall time (numba caches warm), and a
      cold first `tethersim run satI --periods 1 --no-plots` with an empty cache folder
      (TETHERSIM_CACHE_DIR); `--only cli` runs this section alone
-  7. sweep throughput, 1 thread vs every core (bench/sweep_bench.py); C+OpenMP sweep
-     driver vs run_sweep at 5 and 50 orbits, 1 and 2 threads, and run_sweep through
-     the per-point path (bench/csweep.py); `--only sweep` runs this section alone
+  7. sweeps: a C+OpenMP sweep driver vs run_sweep at 5 and 50 orbits, 1 and 2 threads
+     (the thread scaling, with the store and without it), and run_sweep through the
+     per-point path (bench/csweep.py); `--only sweep` runs this section alone
   8. `tethersim report` wall time (not with --quick)
   9. against heyoka.py (bench/peers.py, when heyoka is installed: the [bench] extra):
      single runs at equal accuracy (work-precision, three cases) and sweep throughput
@@ -729,7 +729,6 @@ def main(argv=None) -> int:
             bench_dop853(rep, S, q)
         elif args.only == "sweep":
             import csweep
-            sweep_bench.bench_sweep(rep, q)
             csweep.bench_csweep(rep, csweep.sweep_inputs(), q, log)
         elif args.only == "3d":
             import bench3d
@@ -776,7 +775,6 @@ def main(argv=None) -> int:
     import bench3d
     bench3d.bench_3d(rep, q, log)
     bench_tools(rep, S, q, lamb, pydy_f, pydy_gen)
-    sweep_bench.bench_sweep(rep, q)
     import csweep
     csweep.bench_csweep(rep, S, q, log)
     bench_peers(rep, q)
