@@ -11,7 +11,10 @@ cache before they were removed (cold fast tier 174 -> 164 s):
   block: the sweeps' blocks called the DOP853 and RK4 loops, the metrics and the force
   peaks with borrowed arrays, simulate() and outcome() with plain ones; the force series
   (SimResult.forces) called the forces loop with plain arrays, the force peaks with
-  borrowed ones.
+  borrowed ones;
+* an array's length where the other caller passes the model's constant state size (the
+  lanes' dense output), and a writable table from Python where compiled code sees the
+  module's global as read-only (Vallado's density).
 
 One process runs what a user runs (simulate, outcome, a one-point and a 16-point sweep of
 each scheme) and counts the signatures of each loop per leading literal (the model, and
@@ -35,7 +38,8 @@ import tethersim as ts
 from tethersim.experiments.sweep import Plan, run_plan
 from tethersim.analysis import metrics_kernel as mk
 from tethersim.engine import evaluate
-from tethersim.engine.integrators import dop853, rk4, switching
+from tethersim.engine.integrators import dop853, rk4, steps, switching
+from tethersim.model import atmosphere
 from tethersim.experiments.sweep import lanes853, lanes_dense
 
 sat = ts.load_preset("satI")
@@ -53,7 +57,9 @@ loops = {"dop853_run": dop853.dop853_run, "_dop853_loop": dop853._dop853_loop,
          "_load": lanes853._load, "flush": lanes_dense.flush,
          "pitch_metrics_into": mk.pitch_metrics_into, "window_mean": mk.window_mean,
          "_family_force_peaks": evaluate._family_force_peaks,
-         "_forces_loop": evaluate._forces_loop}
+         "_forces_loop": evaluate._forces_loop,
+         "dop853_interpolate": steps.dop853_interpolate, "copy_into": steps.copy_into,
+         "density_kernel": atmosphere.density_kernel}
 
 
 def leading_literals(sig):
@@ -70,6 +76,9 @@ print(json.dumps({name: [leading_literals(s) for s in f.signatures]
 '''
 
 
+ONE_SIGNATURE = ("dop853_interpolate", "copy_into", "density_kernel")
+
+
 @pytest.mark.slow
 def test_each_loop_is_compiled_once_per_model_whoever_calls_it(tmp_path):
     env = {**os.environ, "TETHERSIM_CACHE_DIR": str(tmp_path / "cache")}
@@ -80,3 +89,7 @@ def test_each_loop_is_compiled_once_per_model_whoever_calls_it(tmp_path):
     assert all(sigs.values()), sigs  # every loop was run
     twice = {name: keys for name, keys in sigs.items() if len(keys) != len(set(keys))}
     assert twice == {}
+    # one model (SatI's 6 states) and one density table: one signature each, whether the
+    # state size comes as the loop's constant or an array's length, the table from
+    # Python or as compiled code's read-only global
+    assert {name: sigs[name] for name in ONE_SIGNATURE if len(sigs[name]) != 1} == {}

@@ -161,7 +161,7 @@ def _family_force_peaks(model, air, T, Y, p):
         _peaks_lanes(model, Y, p, peaks)
         return peaks
     pw = np.empty(p.shape[0])  # not p.copy(): p may be borrowed (borrow.py)
-    copy_into(pw, p)
+    copy_into(borrow(pw), p)  # borrowed as every other caller's: one compiled copy_into
     _forces_loop(model, air, T, Y, p, pw, np.empty((0, nf, nq)), np.empty((nf, nq)), peaks)
     return peaks
 

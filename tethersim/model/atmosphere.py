@@ -43,6 +43,9 @@ TABLE = np.array([
     [900.0, 5.245e-15, 181.05],
     [1000.0, 3.019e-15, 268.00],
 ])
+# read-only: a constant of the model, and the type compiled code gives a global array,
+# so density() from Python and the air vector's compiled code share one density_kernel
+TABLE.flags.writeable = False
 H_MIN = 0.0  # m
 H_MAX = 1000e3  # m
 

@@ -36,7 +36,7 @@ import numpy as np
 from numba import literally, njit
 
 from tethersim.analysis.metrics_kernel import N_PITCH
-from tethersim.engine.dynamics import derivative
+from tethersim.engine.dynamics import derivative, model_size
 from tethersim.engine.events import (
     EV_L10,
     EV_L20,
@@ -175,7 +175,9 @@ def _located(model, air, k, T, P, EV, Y, Ks, TL, H, lane, out_y, g0, g1, y, f, y
              Fs, g):
     """Lane k's accepted step crosses an event slot: the scalar loop's location, dense output
     and update on the lane's numbers; returns the event slot that stops it (-1: a switch)."""
-    ns = y.shape[0]
+    # the state size as the scalar DOP853 loop has it (a compile-time constant), so the
+    # dense output below is the loop's own compiled interpolation, not a second copy
+    ns = model_size(model, y)
     j = lane[k, J]
     for i in range(ns):
         y[i] = Y[i * LANES + k]
