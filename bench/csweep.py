@@ -61,9 +61,10 @@ _D = ctypes.POINTER(ctypes.c_double)
 _L = ctypes.POINTER(ctypes.c_long)
 
 
-def build(S):
-    """The OpenMP library (gcc -O3 -fopenmp), or None when gcc cannot build it."""
-    src, _ = cref.c_source(S["model"], S["length_defs"])
+def build():
+    """The OpenMP library (gcc -O3 -fopenmp) of the derived model's C port, or None when
+    gcc cannot build it."""
+    src, _ = cref.derived_source()
     try:
         path = cref.build(src + DRIVER, ("-O3", "-fopenmp"), "omp")
     except Exception as exc:  # noqa: BLE001 - no OpenMP toolchain: the figure is skipped
@@ -84,17 +85,6 @@ def _cpu() -> str:
     except OSError:
         pass
     return "an unnamed CPU"
-
-
-def sweep_inputs():
-    """What bench_csweep needs of run.setup() (the derived model for the C port), alone."""
-    from derive.kinematics import planar_kinematics
-    from derive.model import derive
-    from derive.models import BY_NAME
-    from derive.pipeline import to_state_symbols
-    length_defs = {lam: to_state_symbols(d)
-                   for lam, d in planar_kinematics().tether_length_defs.items()}
-    return {"model": derive(BY_NAME["derived"]), "length_defs": length_defs}
 
 
 @contextmanager
@@ -118,7 +108,7 @@ def _points(spec):
     return P, Y0, sats[0].period
 
 
-def bench_csweep(rep, S, q, log):
+def bench_csweep(rep, q, log):
     """Trajectories/s of the C+OpenMP driver and of run_sweep, 5 and 50 orbits, 1 and 2 threads."""
     from sweep_bench import GRID
 
@@ -127,7 +117,7 @@ def bench_csweep(rep, S, q, log):
     from tethersim.experiments.sweep.plan import ATOL_PER_RTOL
     from tethersim.experiments.sweep.runner import map_points
 
-    lib, why = build(S)
+    lib, why = build()
     if lib is None:
         rep.notes.append(f"C+OpenMP sweep skipped: {why[:200]}")
         return

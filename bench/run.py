@@ -729,7 +729,7 @@ def main(argv=None) -> int:
             bench_dop853(rep, S, q)
         elif args.only == "sweep":
             import csweep
-            csweep.bench_csweep(rep, csweep.sweep_inputs(), q, log)
+            csweep.bench_csweep(rep, q, log)
         elif args.only == "3d":
             import bench3d
             bench3d.bench_3d(rep, q, log)
@@ -776,7 +776,7 @@ def main(argv=None) -> int:
     bench3d.bench_3d(rep, q, log)
     bench_tools(rep, S, q, lamb, pydy_f, pydy_gen)
     import csweep
-    csweep.bench_csweep(rep, S, q, log)
+    csweep.bench_csweep(rep, q, log)
     bench_peers(rep, q)
     import stiff
     stiff.bench_stiff(rep, q, log)
