@@ -199,9 +199,10 @@ def bench_csweep(rep, q, log):
                 sc = tp[f"{who}{cores}"] / tp[f"{who}1"]
                 rep.fig(f"csweep.{tag}.scale_{who}", f"{periods:g} orbits: {name} scaling 1 -> "
                         f"{cores} threads", sc, "x")
-            rep.target(f"csweep.{tag}.scale", f"issues 4 and 20: sweep {periods:g} orbits, "
-                       f"run_sweep 1 -> {cores} threads", tp[f"ts{cores}"] / tp["ts1"], ">=",
-                       1.8 if cores >= 2 else 1.0,
+            # issue 4's target is the 50-orbit sweep's; the 5-orbit one is held to the same
+            rep.target(f"csweep.{tag}.scale", f"{'issue 4: ' if periods >= 50 else ''}sweep "
+                       f"{periods:g} orbits, run_sweep 1 -> {cores} threads",
+                       tp[f"ts{cores}"] / tp["ts1"], ">=", 1.8 if cores >= 2 else 1.0,
                        note=f"C itself {tp[f'c{cores}'] / tp['c1']:.2f}x, tethersim without its "
                             f"store {tp[f'mp{cores}'] / tp['mp1']:.2f}x; load average "
                             f"{load:.1f} on {os.cpu_count()} cores")
