@@ -33,14 +33,14 @@ def _cases():
     sat = load_preset("satI")
     free = sat.replace(orbit="free", density_mode="per-body", atmosphere="vallado")
     f107, f107a, ap = SOLAR_CYCLE["mean"]
-    return {
-        "3-D (circular, uniform air)": (sat.replace(initial_3d={"phi": math.radians(5.0),
-                                                                "psi": math.radians(3.0)}),
-                                        "3d"),
-        "free orbit (per-body Vallado air)": (free, "derived"),
-        "free orbit (NRLMSISE-00 air)": (free.replace(atmosphere="nrlmsise00",
-                                                      epoch=SOLAR_CYCLE_EPOCH, f107=f107,
-                                                      f107a=f107a, ap=ap), "derived"),
+    return {  # figure key -> (label, satellite, plan model)
+        "3d": ("3-D (circular, uniform air)",
+               sat.replace(initial_3d={"phi": math.radians(5.0), "psi": math.radians(3.0)}),
+               "3d"),
+        "free": ("free orbit (per-body Vallado air)", free, "derived"),
+        "free_msis": ("free orbit (NRLMSISE-00 air)",
+                      free.replace(atmosphere="nrlmsise00", epoch=SOLAR_CYCLE_EPOCH, f107=f107,
+                                   f107a=f107a, ap=ap), "derived"),
     }
 
 
@@ -53,11 +53,12 @@ def _bare_runs(plan, sats):
     from tethersim.engine.integrators.select import specialised
     from tethersim.engine.simulate import METRIC_SAMPLES_PER_PERIOD, refined_grid
     from tethersim.engine.start import start_satellite
+    from tethersim.experiments.sweep.batch import _sizes
     from tethersim.experiments.sweep.plan import ATOL_PER_RTOL
     from tethersim.model.inputs import air_vector, initial_model_state, parameter_vector
     from tethersim.model.registry import model_for_orbit, model_index
 
-    n_out = max(2, round(plan.samples_per_period * plan.periods))
+    n_out = _sizes(plan)[1]  # the block's output samples and metrics grid (batch._compiled)
     refine = max(1, math.ceil(METRIC_SAMPLES_PER_PERIOD * plan.periods / n_out))
     runs = []
     for s in sats:
@@ -85,7 +86,7 @@ def bench_models_sweep(rep, q, log) -> None:
     cores = os.cpu_count() or 1
     log(f"\n[models] plans of many beyond the planar circular model: {N} SatI points x "
         f"{PERIODS:g} orbits, DOP853 at the plan's default rtol; wall time")
-    for label, (sat, model) in _cases().items():
+    for key, (label, sat, model) in _cases().items():
         sats = [sat.replace(E2=sat.E2 * (1 + 0.01 * i)) for i in range(N)]
         plan = Plan(periods=PERIODS, model=model)
         bare = _bare_runs(plan, sats)
@@ -103,9 +104,7 @@ def bench_models_sweep(rep, q, log) -> None:
         res = interleave({"bare": timer(bare), "plan1": timer(planned(1)),
                           f"plan{cores}": timer(planned(cores))}, q["slow_repeats"], warmup=1)
         b, p1, pn = (min(res[k]) for k in ("bare", "plan1", f"plan{cores}"))
-        key = "models." + label.split()[0].lower().replace("-", "")
-        if "NRLMSISE" in label:
-            key += "_msis"
+        key = f"models.{key}"
         log(f"  {label}: bare {1e3 * b / N:.2f} ms a point, plan {1e3 * p1 / N:.2f} ms "
             f"(1 thread), {1e3 * pn / N:.2f} ms ({cores} threads)")
         rep.fig(f"{key}.bare", f"{label}: bare DOP853 loop, per point (best)", b / N, "s",
