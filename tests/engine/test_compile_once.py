@@ -16,6 +16,9 @@ cache before they were removed (cold fast tier 174 -> 164 s):
   lanes' dense output), and a writable table from Python where compiled code sees the
   module's global as read-only (Vallado's density).
 
+The drag make-up (outcome() from Python, a plan's records from its block) is held to the
+same rule.
+
 One process runs what a user runs (simulate, outcome, a one-point and a 16-point sweep of
 each scheme) and counts the signatures of each loop per leading literal (the model, and
 the method of the event location): one each.  Slow tier: it compiles in a subprocess.
@@ -36,7 +39,7 @@ import json
 from numba import types
 import tethersim as ts
 from tethersim.experiments.sweep import Plan, run_plan
-from tethersim.analysis import metrics_kernel as mk
+from tethersim.analysis import makeup_kernel, metrics_kernel as mk
 from tethersim.engine import evaluate
 from tethersim.engine.integrators import dop853, rk4, steps, switching
 from tethersim.model import atmosphere
@@ -58,6 +61,7 @@ loops = {"dop853_run": dop853.dop853_run, "_dop853_loop": dop853._dop853_loop,
          "pitch_metrics_into": mk.pitch_metrics_into, "window_mean": mk.window_mean,
          "_family_force_peaks": evaluate._family_force_peaks,
          "_forces_loop": evaluate._forces_loop,
+         "drag_makeup_kernel": makeup_kernel.drag_makeup_kernel,
          "dop853_interpolate": steps.dop853_interpolate, "copy_into": steps.copy_into,
          "density_kernel": atmosphere.density_kernel}
 

@@ -56,7 +56,7 @@ def test_malformed_requests_are_left_to_simulates_own_checks():
 
 def test_sweep_grid_over_the_point_limit_is_refused_with_its_size():
     with pytest.raises(SizeLimitError, match=r"1000000 E1 x 1000000 E2 = 1e\+12 points "
-                                             r"\(store about 84.6 TiB\)"):
+                                             r"\(store about 91.9 TiB\)"):
         check_sweep([10**6, 10**6], ["E1", "E2"])
     check_sweep([1000, 1000], ["E1", "E2"])  # exactly the default limit
 

@@ -169,3 +169,33 @@ def test_real_lines_atlas_runs_implicit_and_keeps_its_balloon(tmp_path):
     assert math.isnan(row["balloon_lost_h"]) and row["free_end"] == "capped"
     assert row["reentry_capped"] and row["nominal_status"] == "ok"
     assert abs(row["theta_ss_rad"]) < 0.05 and row["verdict"] in VERDICTS
+
+
+@pytest.mark.parametrize("method", ["adaptive", "implicit"])
+def test_a_points_circular_runs_are_one_plan_whose_outcomes_are_simulates(monkeypatch, method):
+    """_decide runs the nominal and trim runs as one plan of many (run_satellites, one
+    call, no simulate() per run); each outcome it judges equals outcome(simulate()) with
+    the atlas's run options, bit for bit, drag make-up included."""
+    from tethersim.experiments import feasibility as fe
+    from tethersim.experiments.sweep import batch
+    spec = fe.FeasibilitySpec(ts.load_preset("satI"), (250.0,), solar=("min", "max"),
+                              periods=1.0, max_lifetime_h=0.5, method=method, rtol=1e-8)
+    calls, real_run, real_sim = [], batch.run_satellites, fe.simulate
+
+    def circular_not_simulated(sat, *a, **k):
+        assert sat.orbit == "free", "a circular run went through simulate()"
+        return real_sim(sat, *a, **k)
+
+    monkeypatch.setattr(fe, "run_satellites", lambda plan, sats: calls.append(len(sats))
+                        or real_run(plan, sats))
+    monkeypatch.setattr(fe, "simulate", circular_not_simulated)
+    got = fe._decide(spec, 250.0, spec.satellite.A3, spec.rtol)
+    assert calls == [3]
+    monkeypatch.undo()
+    for out, scale in [(got["nominal"], 1.0), *((got["trims"][c], k) for c, k in
+                                                  got["scales"].items())]:
+        res = ts.simulate(spec.circular(250.0, spec.satellite.A3, scale), periods=1.0,
+                          model=spec.model, progress=False, **spec.run_options(spec.rtol))
+        want = ts.outcome(res, forces=False)
+        assert (out.status, out.stability_class, repr(out.metrics), repr(out.drag_makeup)) == (
+            want.status, want.stability_class, repr(want.metrics), repr(want.drag_makeup))

@@ -11,7 +11,10 @@ velocity relative to air that co-rotates with the Earth.  In the local frame L (
 at Earth's centre, rotating at ω ẑ, docs/conventions.md) a body at r = (x, y) moving
 at ṙ has V = (ẋ − (ω − ω_E) y, ẏ + (ω − ω_E) x); ρ_i is the run's density (uniform,
 or, for ``density = "per-body"``, Vallado or NRLMSISE-00 at the body's own position,
-from the run's air vector: tethersim.model.air.vector).
+from the run's air vector: tethersim.model.air.vector).  :func:`drag_makeup` is the
+compiled kernel that a plan's records use too (tethersim.analysis.makeup_kernel);
+:func:`along_track_drag` is this module's own numpy series of the same law, each body
+at its own longitude, which the tests hold it to.
 """
 from __future__ import annotations
 
@@ -22,8 +25,6 @@ import numpy as np
 from tethersim.engine.result import SimResult
 from tethersim.model.air.vector import body_densities
 from tethersim.model.constants import OMEGA_EARTH, R_EARTH
-
-DAY = 86400.0  # s
 
 
 def body_states(res: SimResult) -> dict:
@@ -86,19 +87,15 @@ def drag_makeup(res: SimResult) -> float:
     """Velocity per day [m/s/day] that holds a circular orbit against the drag of the run.
 
     The along-track drag of the three bodies, averaged over the run's samples in
-    time (trapezoid), divided by the total mass, times one day.  NaN for a
-    free-orbit run or fewer than two finite samples.
+    time (trapezoid), divided by the total mass, times one day: the compiled kernel
+    that a plan's records use too (tethersim.analysis.makeup_kernel; per-body air at
+    the point the dynamics take it).  NaN for a free-orbit run or fewer than two
+    finite samples.
     """
     if res.layout.orbit != "circular" or res.t.size < 2:
         return math.nan
-    f = along_track_drag(res)
-    ok = np.isfinite(f)
-    if ok.sum() < 2:
-        return math.nan
-    t, f = res.t[ok], f[ok]
-    mean = float(np.trapezoid(f, t) / (t[-1] - t[0])) if t[-1] > t[0] else float(f[0])
-    s = res.satellite
-    return mean / (s.m1 + s.m2 + s.m3) * DAY
+    from tethersim.analysis.makeup_kernel import drag_makeup_of
+    return drag_makeup_of(res.layout.index, res.air, res.t, res.states, res.parameters)
 
 
 def lifetime(res: SimResult) -> float | None:

@@ -26,9 +26,9 @@ DEFAULT_OUTPUT_BYTES = 2 * GIB
 DEFAULT_SWEEP_POINTS = 1_000_000
 DEFAULT_STORE_BYTES = 2 * GIB
 STATE_COLUMNS = 10  # the widest planar state: a free orbit's δx δy θ r ν and rates
-# bytes per sweep point: 9 float64 + 4 int8 + 1 int64 record fields (sweep.point.VARIABLES),
+# bytes per sweep point: 10 float64 + 4 int8 + 1 int64 record fields (sweep.point.VARIABLES),
 # the done mask and the int64 checksum (sweep.verify)
-SWEEP_POINT_BYTES = 9 * 8 + 4 + 8 + 1 + 8
+SWEEP_POINT_BYTES = 10 * 8 + 4 + 8 + 1 + 8
 
 
 # what simulate()'s own guard blames: its arguments; a command names its options instead

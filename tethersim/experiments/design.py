@@ -25,13 +25,12 @@ import math
 from dataclasses import asdict, dataclass
 from functools import lru_cache
 
-from tethersim.analysis.classify import FAILED
 from tethersim.analysis.feasibility import FEASIBLE, verdict
-from tethersim.analysis.metrics import SETTLING_TOL, PitchMetrics
-from tethersim.analysis.outcome import Outcome
+from tethersim.analysis.metrics import SETTLING_TOL
 from tethersim.engine.result import STATUSES
 from tethersim.experiments.feasibility import ATLAS_FIELDS, SOLAR_CASES, FeasibilitySpec, solar_scales
 from tethersim.experiments.sweep.plan import CLASS_RTOL, SCHEMES, Plan
+from tethersim.experiments.sweep.point import outcome_of_record
 from tethersim.model import params
 from tethersim.model.constants import MU_EARTH, R_EARTH
 from tethersim.model.registry import model_for_orbit
@@ -219,20 +218,6 @@ def _check_value(name: str, v, what: str) -> None:
     shown = f"{v:g}" if isinstance(v, (int, float)) else repr(v)
     raise ValueError(f"{what}: {shown} {p.unit} is outside {name}'s plausible range "
                      f"{zero}{p.low:g}..{p.high:g} {p.unit} ({p.why})")
-
-
-def outcome_of_record(rec: dict) -> Outcome:
-    """The Outcome a plan's record stands for: what the verdict reads (status, class,
-    settling time, steady-state pitch)."""
-    status = STATUSES[int(rec["status"])]
-    cls = int(rec["stability_class"])
-    counts = status == "ok" and cls != FAILED
-    m = None
-    if math.isfinite(rec["mean_pitch"]):
-        m = PitchMetrics(rec["mean_pitch"], rec["steady_state_pitch"], rec["settling_time"],
-                         bool(rec["tumbled"]), bool(rec["upside_down"]))
-    return Outcome(status, "" if counts else status, cls, m, rec["trail_delta_x"],
-                   rec["trail_delta_y"], (math.nan,) * 3, None, None)
 
 
 @lru_cache(maxsize=256)

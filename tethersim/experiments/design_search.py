@@ -30,9 +30,9 @@ from tethersim.experiments.design import (
     DesignSpec,
     evaluate,
     objectives,
-    outcome_of_record,
 )
 from tethersim.experiments.sweep.lines import LineStore
+from tethersim.experiments.sweep.point import outcome_of_record
 
 EVALUATIONS_FILE = "evaluations.jsonl"
 

@@ -27,13 +27,19 @@ differs between the two is ``sensitive`` (tethersim.analysis.feasibility.combine
 The runs of a point and the points of a grid are capped as a sweep's grid is
 (:func:`tethersim.engine.guards.check_runs`, ``TETHERSIM_MAX_SWEEP_POINTS``).
 
-Why not the sweep store: a point here is up to eighteen runs of four kinds (free,
-released, nominal, scaled; two tolerances), not one run of one kind, and its row
-mixes their results.  A small resumable store of its own (one JSON line per finished point, a lock as
-the sweep stores take, the spec beside it) keeps finished points across an
-interruption; every point's runs (its verdict runs at the two tolerances, its solar
-cases' free orbits: point_tasks) go to one pool of threads (the compiled loops release
-the GIL), so a long point's runs spread over the threads too.
+How the runs go: a point's circular runs at one tolerance (nominal and trims) are one
+plan of many (:func:`tethersim.experiments.sweep.batch.run_satellites`: one compiled
+call, on SIMD lanes for the explicit scheme in uniform air; each record is what
+simulate() then outcome() give, bit for bit, drag make-up included), turned back into
+outcomes by :func:`~tethersim.experiments.sweep.point.outcome_of_record`.  Each free
+orbit is a plan of one (simulate): its length is the cap in its own orbits, its end
+altitude and, when the balloon is lost, its final state (the release continuation,
+tethersim.engine.release) are what a record does not carry.
+
+Why not the sweep store: a point is up to eighteen runs of four kinds, and its row mixes
+their results.  A resumable store of its own (one JSON line per finished point, a lock,
+the spec beside it) keeps finished points across an interruption; every point's tasks
+(point_tasks) go to one pool of threads (the compiled loops release the GIL).
 """
 from __future__ import annotations
 
@@ -51,13 +57,14 @@ from tethersim.analysis.feasibility import (
     settling_time,
     verdict,
 )
-from tethersim.analysis.outcome import outcome
 from tethersim.engine.arguments import check_scheme
 from tethersim.engine.release import continue_released
-from tethersim.engine.simulate import RTOL_RANGE, simulate
+from tethersim.engine.simulate import RTOL_RANGE, SAMPLES_PER_PERIOD, simulate
 from tethersim.engine.start import atol_floor
+from tethersim.experiments.sweep.batch import run_satellites
 from tethersim.experiments.sweep.lines import LineStore
-from tethersim.experiments.sweep.plan import ATOL_PER_RTOL
+from tethersim.experiments.sweep.plan import ATOL_PER_RTOL, Plan
+from tethersim.experiments.sweep.point import outcome_of_record
 from tethersim.model import atmosphere
 from tethersim.model.air import solar_cycle_densities
 from tethersim.model.air.model import SOLAR_CYCLE, SOLAR_CYCLE_EPOCH
@@ -191,6 +198,14 @@ class FeasibilitySpec:
         return dict(method=self.method, rtol=rtol,
                     atol=max(rtol * ATOL_PER_RTOL, atol_floor(self.satellite)))
 
+    def plan(self, rtol: float) -> Plan:
+        """The plan of the circular runs at ``rtol``: :meth:`run_options` and simulate()'s
+        default output (``SAMPLES_PER_PERIOD`` an orbit), so that each record is the
+        outcome of simulate() with those options."""
+        opts = self.run_options(rtol)
+        return Plan(periods=self.periods, method=opts["method"], model=self.model,
+                    rtol=rtol, atol=opts["atol"], samples_per_period=SAMPLES_PER_PERIOD)
+
     def to_json(self) -> str:
         d = asdict(self)
         if d["method"] == "adaptive":  # a store written before the method existed resumes
@@ -268,18 +283,19 @@ def _finished(res):
 
 
 def _decide(spec: FeasibilitySpec, h_km: float, a3: float, rtol: float) -> dict:
-    """The verdict runs of a point at one tolerance: free, nominal and trims."""
-    kw = dict(model=spec.model, progress=False, **spec.run_options(rtol))
+    """The verdict runs of a point at one tolerance: the free orbit, and the nominal and
+    trim runs as one plan of many (their records are simulate() then outcome() bit for
+    bit: tethersim.experiments.sweep.batch; on SIMD lanes where the scheme has them)."""
     ends = free_ends(spec, spec.free(h_km, a3), rtol)
     sat = spec.circular(h_km, a3)
-    nominal = outcome(_finished(simulate(sat, periods=spec.periods, **kw)), forces=False)
     scales = solar_scales(h_km, spec.solar)
-    trims = {c: outcome(_finished(simulate(spec.circular(h_km, a3, k), periods=spec.periods,
-                                           **kw)), forces=False) for c, k in scales.items()}
-    v = verdict(ends["life"], nominal, trims.values(), run_s=spec.periods * sat.period,
+    sats = [sat] + [spec.circular(h_km, a3, k) for k in scales.values()]
+    records = run_satellites(spec.plan(rtol), sats)
+    nominal, *trims = (outcome_of_record(r) for r in records)
+    v = verdict(ends["life"], nominal, trims, run_s=spec.periods * sat.period,
                 cap_s=spec.max_lifetime_h * 3600, lost=math.isfinite(ends["lost"]))
-    return {"ends": ends, "nominal": nominal, "trims": trims, "scales": scales,
-            "verdict": v, "period": sat.period}
+    return {"ends": ends, "nominal": nominal, "trims": dict(zip(scales, trims)),
+            "scales": scales, "verdict": v, "period": sat.period}
 
 
 def _hours(t_s: float, cap_s: float) -> float:

@@ -41,7 +41,7 @@ from tethersim.experiments.sweep.kernel import (
 )
 from tethersim.experiments.sweep.lanes import sweep_block_lanes
 from tethersim.experiments.sweep.lanes853 import sweep_block_lanes853
-from tethersim.experiments.sweep.plan import ATOL_PER_RTOL, SCHEMES, Plan
+from tethersim.experiments.sweep.plan import SCHEMES, Plan
 from tethersim.experiments.sweep.point import record
 from tethersim.experiments.sweep.spec import SweepSpec
 from tethersim.model.air.vector import UNIFORM
@@ -172,7 +172,7 @@ def _compiled(sats: list, plan: Plan, model: str, air: np.ndarray) -> list:
     cols = np.array([lay.state.index(c) for c in COL_FIELDS], dtype=np.int64)
     rec_f = np.empty((n, len(F_FIELDS)))
     rec_i = np.empty((n, len(I_FIELDS)), dtype=np.int64)
-    tolerances = (plan.rtol, plan.rtol * ATOL_PER_RTOL,
+    tolerances = (plan.rtol, plan.absolute_tolerance,
                   step_budget(SCHEMES[plan.method], periods))
     measure = (EV, cols, float(plan.tol), SS_FRACTION, rec_f, rec_i)
     if plan.method == "implicit":  # its own entry: the explicit blocks do not carry Radau

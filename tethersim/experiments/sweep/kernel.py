@@ -21,7 +21,8 @@ Layout of the outputs, per point j:
 
 ``rec_f[j]``  mean pitch, steady-state pitch, settling time, trail δx, trail δy,
               largest family force on δx, δy, θ (NaN where not computed), end time
-              (every point: its last sample)
+              (every point: its last sample), drag make-up of a held circular orbit
+              (analysis.makeup_kernel, the one implementation outcome() uses)
 ``rec_i[j]``  status code (the index of the engine's status in
               tethersim.engine.result.STATUSES: ok, diverged, failed, or the stopping
               event's status, left-domain for a circular orbit),
@@ -34,6 +35,7 @@ import math
 import numpy as np
 from numba import literally, njit
 
+from tethersim.analysis.makeup_kernel import drag_makeup_kernel
 from tethersim.analysis.metrics_kernel import N_PITCH, pitch_metrics_into, window_mean
 from tethersim.engine.evaluate import _family_force_peaks
 from tethersim.engine.events import EVENTS
@@ -48,7 +50,7 @@ from tethersim.engine.result import STATUSES
 
 F_FIELDS = ("mean_pitch", "steady_state_pitch", "settling_time", "trail_delta_x",
             "trail_delta_y", "max_force_delta_x", "max_force_delta_y", "max_force_theta",
-            "end_time")
+            "end_time", "drag_makeup")
 I_FIELDS = ("status", "counts", "tumbled", "upside_down", "nfev")
 # the state columns the block measures (cols)
 COL_FIELDS = ("delta_x", "delta_y", "theta")
@@ -96,6 +98,7 @@ def _measure(j, model, air, p, t, out_y, n, status, nfev, end_time, cols, tol, s
     rec_f[j, 4] = window_mean(t, out_y, n, iy, threshold, buf)
     peaks = _family_force_peaks(model, air, t, out_y[:n], p)  # uniform air: p's densities
     rec_f[j, 5], rec_f[j, 6], rec_f[j, 7] = peaks[ix], peaks[iy], peaks[ith]
+    rec_f[j, 9] = drag_makeup_kernel(model, air, t, out_y, n, p)  # NaN on a free orbit
 
 
 @njit(cache=True, nogil=True)

@@ -15,6 +15,7 @@ from dataclasses import asdict, dataclass
 from tethersim.analysis.metrics import SETTLING_TOL, check_tol
 from tethersim.engine.guards import MAX_STEPS_PER_PERIOD
 from tethersim.engine.simulate import (
+    ATOL_RANGE,
     FAITHFUL_STEPS_PER_PERIOD,
     METRIC_SAMPLES_PER_PERIOD,
     RTOL_RANGE,
@@ -55,7 +56,10 @@ class Plan:
     model : str
         Model name (a satellite on a free orbit runs the model's free twin).
     rtol : float
-        Adaptive tolerance (atol = rtol x ``ATOL_PER_RTOL``).
+        Adaptive tolerance.
+    atol : float or None
+        Adaptive absolute tolerance (None: rtol x ``ATOL_PER_RTOL``; a feasibility
+        atlas gives real lines their floor, tethersim.engine.start.atol_floor).
     steps_per_period, samples_per_period : int
         RK4 steps and adaptive output samples per orbit.
     tol : float
@@ -71,6 +75,7 @@ class Plan:
     method: str = "adaptive"
     model: str = DEFAULT_MODEL
     rtol: float = DEFAULT_RTOL
+    atol: float | None = None
     steps_per_period: int = FAITHFUL_STEPS_PER_PERIOD
     samples_per_period: int = SAMPLES_PER_PERIOD
     tol: float = SETTLING_TOL
@@ -89,10 +94,19 @@ class Plan:
         if not RTOL_RANGE[0] <= self.rtol <= RTOL_RANGE[1]:
             raise ValueError(f"rtol = {self.rtol:g}: allowed range {RTOL_RANGE[0]:g} <= rtol "
                              f"<= {RTOL_RANGE[1]:g}")
+        if self.atol is not None and not (isinstance(self.atol, (int, float))
+                                          and ATOL_RANGE[0] <= self.atol <= ATOL_RANGE[1]):
+            raise ValueError(f"atol = {self.atol!r}: allowed range {ATOL_RANGE[0]:g} <= atol "
+                             f"<= {ATOL_RANGE[1]:g}")
         for key, hi in (("steps_per_period", MAX_STEPS), ("samples_per_period", MAX_SAMPLES)):
             v = getattr(self, key)
             if isinstance(v, bool) or not isinstance(v, int) or not 1 <= v <= hi:
                 raise ValueError(f"{key} = {v!r}: must be an integer in 1..{hi}")
+
+    @property
+    def absolute_tolerance(self) -> float:
+        """The runs' atol: :attr:`atol`, or rtol x ``ATOL_PER_RTOL``."""
+        return self.rtol * ATOL_PER_RTOL if self.atol is None else float(self.atol)
 
     def to_dict(self) -> dict:
         """The fields as plain data (JSON, store attributes)."""

@@ -9,7 +9,9 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
-from tethersim.analysis.outcome import outcome
+from tethersim.analysis.classify import FAILED
+from tethersim.analysis.metrics import PitchMetrics
+from tethersim.analysis.outcome import Outcome, outcome
 from tethersim.engine.linearise import rk4_amplification
 from tethersim.engine.result import STATUSES
 from tethersim.engine.simulate import FAITHFUL_STEPS_PER_PERIOD, simulate
@@ -29,6 +31,8 @@ VARIABLES = (
     ("max_force_delta_x", "float64", "N", "largest |Q| of one force family on delta_x"),
     ("max_force_delta_y", "float64", "N", "largest |Q| of one force family on delta_y"),
     ("max_force_theta", "float64", "N m", "largest |Q| of one force family on theta"),
+    ("drag_makeup", "float64", "m/s/day",
+     "velocity per day that holds the circular orbit against drag (NaN: a free orbit)"),
     ("rk4_amplification", "float64", "1",
      "largest RK4 growth per thesis step (26.55 s at 200 km) over the initial linear modes; > 1: unstable"),
     ("status", "int8", "1", "run status: " + ", ".join(f"{i} {s}" for i, s in enumerate(STATUSES))),
@@ -70,7 +74,8 @@ def run_point(spec: SweepSpec, k: int) -> dict:
                       settling_time=m.settling_time, tumbled=int(m.tumbled),
                       upside_down=int(m.upside_down), trail_delta_x=out.trail_delta_x,
                       trail_delta_y=out.trail_delta_y, max_force_delta_x=out.max_force[0],
-                      max_force_delta_y=out.max_force[1], max_force_theta=out.max_force[2]),
+                      max_force_delta_y=out.max_force[1], max_force_theta=out.max_force[2],
+                      drag_makeup=out.drag_makeup),
                   # the last sample of the metrics grid: a located stop's time (simulate)
                   float((res.fine_t if res.fine_t is not None else res.t)[-1]))
 
@@ -86,6 +91,22 @@ def record(status: int, nfev: int, amplification: float, stability_class: int,
     if measured is not None:
         rec.update(measured)
     return rec
+
+
+def outcome_of_record(rec: dict) -> Outcome:
+    """The Outcome a record stands for (the inverse of :func:`record`): status, class,
+    pitch metrics, trail and drag make-up; a run that does not count keeps no metrics
+    (its record has none), and the force peaks are not carried."""
+    status = STATUSES[int(rec["status"])]
+    cls = int(rec["stability_class"])
+    counts = status == "ok" and cls != FAILED
+    m = None
+    if math.isfinite(rec["mean_pitch"]):
+        m = PitchMetrics(rec["mean_pitch"], rec["steady_state_pitch"], rec["settling_time"],
+                         bool(rec["tumbled"]), bool(rec["upside_down"]))
+    return Outcome(status, "" if counts else status, cls, m, rec["trail_delta_x"],
+                   rec["trail_delta_y"], (math.nan,) * 3, None, None,
+                   drag_makeup=rec["drag_makeup"])
 
 
 @lru_cache(maxsize=8)
