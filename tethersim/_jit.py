@@ -15,6 +15,16 @@ must be set before any kernel module is imported.
 
 Folder: ``$TETHERSIM_CACHE_DIR`` if set, else ``$NUMBA_CACHE_DIR``, else
 ``~/.cache/tethersim/numba`` (``$XDG_CACHE_HOME`` honoured), then ``/<hash>``.
+
+It also sets the vector width, before any kernel is compiled: on a CPU with AVX-512,
+LLVM's tuning for Intel's server cores (Skylake-X to Emerald Rapids) prefers 256-bit
+vectors (its ``prefer-256-bit`` feature), so the SIMD lanes of a sweep
+(engine/integrators/lanes.py, 8 points) ran as two 4-wide halves.  :func:`vector_features`
+turns that preference off: the same IEEE operations in the same order, so the same bits
+(the lanes' and the reference runs' tests), in 512-bit registers.  Measured on an Intel
+Xeon (Emerald Rapids, 2 cores), the bench's 64-point 5-orbit sweep on one thread: 95.5 ms
+with 256-bit vectors, 82.3 ms with 512.  A ``NUMBA_CPU_FEATURES`` of the user's own is
+kept as it is (numba's cache keys on the features, so each setting has its own kernels).
 """
 from __future__ import annotations
 
@@ -66,6 +76,25 @@ def cache_base() -> str:
     home = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
     return os.path.join(home, "tethersim", "numba")
 
+
+def vector_features() -> str | None:
+    """numba's CPU features with 512-bit vectors preferred, where the host has AVX-512 and
+    the user set neither ``NUMBA_CPU_FEATURES`` nor ``NUMBA_ENABLE_AVX=0``; else None
+    (numba's own choice stands)."""
+    if numba.config.CPU_FEATURES is not None or not numba.config.ENABLE_AVX:
+        return None
+    import llvmlite.binding as ll
+    try:
+        features = ll.get_host_cpu_features()
+    except RuntimeError:  # a host LLVM cannot describe: numba's default
+        return None
+    if not features.get("avx512f"):
+        return None
+    return features.flatten() + ",-prefer-256-bit"
+
+
+if (_features := vector_features()) is not None:
+    numba.config.CPU_FEATURES = _features
 
 CACHE_KEY = cache_key()  # of the sources this process loaded (read once: ~6 ms)
 CACHE_DIR = os.path.join(cache_base(), CACHE_KEY)
