@@ -23,8 +23,9 @@ vectors (its ``prefer-256-bit`` feature), so the SIMD lanes of a sweep
 turns that preference off: the same IEEE operations in the same order, so the same bits
 (the lanes' and the reference runs' tests), in 512-bit registers.  Measured on an Intel
 Xeon (Emerald Rapids, 2 cores), the bench's 64-point 5-orbit sweep on one thread: 95.5 ms
-with 256-bit vectors, 82.3 ms with 512.  A ``NUMBA_CPU_FEATURES`` of the user's own is
-kept as it is (numba's cache keys on the features, so each setting has its own kernels).
+with 256-bit vectors, 82.3 ms with 512.  A ``NUMBA_CPU_FEATURES`` or ``NUMBA_CPU_NAME``
+of the user's own is kept as it is (numba's cache keys on the CPU and its features, so
+each setting has its own kernels).
 """
 from __future__ import annotations
 
@@ -79,9 +80,10 @@ def cache_base() -> str:
 
 def vector_features() -> str | None:
     """numba's CPU features with 512-bit vectors preferred, where the host has AVX-512 and
-    the user set neither ``NUMBA_CPU_FEATURES`` nor ``NUMBA_ENABLE_AVX=0``; else None
-    (numba's own choice stands)."""
-    if numba.config.CPU_FEATURES is not None or not numba.config.ENABLE_AVX:
+    the user set none of ``NUMBA_CPU_FEATURES``, ``NUMBA_CPU_NAME`` (``make test-generic``)
+    and ``NUMBA_ENABLE_AVX=0``; else None (numba's own choice stands)."""
+    config = numba.config
+    if config.CPU_FEATURES is not None or config.CPU_NAME is not None or not config.ENABLE_AVX:
         return None
     import llvmlite.binding as ll
     try:

@@ -181,3 +181,20 @@ def test_a_warm_run_and_its_analysis_never_go_through_numba_type_inference(sat, 
     monkeypatch.setattr(Dispatcher, "_compile_for_args", spy)
     work()
     assert slow == []
+
+
+def test_avx512_hosts_prefer_512_bit_vectors_unless_the_user_chose_the_target(tmp_path):
+    """_jit.vector_features: on an AVX-512 host numba compiles with LLVM's 256-bit
+    preference off (the 8 SIMD lanes in one register); a CPU or features the user set
+    (make test-generic's NUMBA_CPU_NAME=generic) are left alone."""
+    import llvmlite.binding as ll
+    code = ("import numba, tethersim; "
+            "from numba.core.registry import cpu_target as c; "
+            "print(c.target_context.codegen().magic_tuple()[2].split(',')[-1])")
+    r = _python(code, {"TETHERSIM_CACHE_DIR": str(tmp_path)})
+    assert r.returncode == 0, r.stderr
+    avx512 = bool(ll.get_host_cpu_features().get("avx512f"))
+    assert (r.stdout.strip() == "-prefer-256-bit") == avx512
+    for env in ({"NUMBA_CPU_NAME": "generic"}, {"NUMBA_CPU_FEATURES": "+sse2"}):
+        r = _python(code, {"TETHERSIM_CACHE_DIR": str(tmp_path), **env})
+        assert r.returncode == 0 and "prefer-256-bit" not in r.stdout, (env, r.stderr)
