@@ -171,7 +171,8 @@ def test_real_lines_atlas_runs_implicit_and_keeps_its_balloon(tmp_path):
     assert abs(row["theta_ss_rad"]) < 0.05 and row["verdict"] in VERDICTS
 
 
-@pytest.mark.parametrize("method", ["adaptive", "implicit"])
+# the implicit block compiles its own Radau loop (~40 s cold): that case in the slow tier
+@pytest.mark.parametrize("method", ["adaptive", pytest.param("implicit", marks=pytest.mark.slow)])
 def test_a_points_circular_runs_are_one_plan_whose_outcomes_are_simulates(monkeypatch, method):
     """_decide runs the nominal and trim runs as one plan of many (run_satellites, one
     call, no simulate() per run); each outcome it judges equals outcome(simulate()) with
