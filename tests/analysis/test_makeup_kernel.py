@@ -49,12 +49,12 @@ def test_non_finite_samples_are_skipped_as_numpy_masks_them():
     assert math.isnan(drag_makeup(replace(res, states=states)))
 
 
-def test_a_plans_record_carries_outcomes_drag_makeup_and_nan_on_a_free_orbit():
+def test_a_plans_record_carries_outcomes_drag_makeup():
     sats = [SAT, SAT.replace(A3=SAT.A3 * 2)]
     recs = run_plan(Plan(periods=0.3), sats, workers=1, progress=False)
     outs = [ts.outcome(ts.simulate(s, periods=0.3, rtol=1e-9, atol=1e-11, samples=30,
                                    progress=False)) for s in sats]
     assert [r["drag_makeup"] for r in recs] == [o.drag_makeup for o in outs]
     assert 1.9 < recs[1]["drag_makeup"] / recs[0]["drag_makeup"] < 2.0  # the balloon dominates
-    (free,) = run_plan(Plan(periods=0.05), [SAT.replace(orbit="free")], workers=1, progress=False)
-    assert math.isnan(free["drag_makeup"]) and free["status"] == 0
+    # a free orbit's record is NaN, as its outcome: tests/experiments/test_sweep_batch.py's
+    # free-orbit block (slow tier: it compiles that block)
