@@ -54,9 +54,23 @@ def test_malformed_requests_are_left_to_simulates_own_checks():
         simulate(SAT, periods="many")
 
 
+def test_a_sweep_points_bytes_are_its_records_and_the_docs_say_so():
+    """SWEEP_POINT_BYTES (engine/guards.py, below the sweep package) is the record's
+    fields (sweep.point.VARIABLES) plus the done flag and the checksum, and docs/limits.md
+    prints it and the 10^12-point grid's size from it."""
+    import numpy as np
+
+    from tethersim.engine.guards import SWEEP_POINT_BYTES
+    from tethersim.experiments.sweep.point import VARIABLES
+    assert SWEEP_POINT_BYTES == sum(np.dtype(d).itemsize for _, d, *_ in VARIABLES) + 1 + 8
+    doc = (Path(__file__).parents[2] / "docs" / "limits.md").read_text()
+    assert f"sweep store (~{SWEEP_POINT_BYTES} bytes per point)" in doc
+    assert f"(10¹² points, ~{10**12 * SWEEP_POINT_BYTES / 1024**4:.0f} TiB)" in doc
+
+
 def test_sweep_grid_over_the_point_limit_is_refused_with_its_size():
     with pytest.raises(SizeLimitError, match=r"1000000 E1 x 1000000 E2 = 1e\+12 points "
-                                             r"\(store about 91.9 TiB\)"):
+                                             r"\(store about 99.1 TiB\)"):
         check_sweep([10**6, 10**6], ["E1", "E2"])
     check_sweep([1000, 1000], ["E1", "E2"])  # exactly the default limit
 

@@ -26,9 +26,10 @@ DEFAULT_OUTPUT_BYTES = 2 * GIB
 DEFAULT_SWEEP_POINTS = 1_000_000
 DEFAULT_STORE_BYTES = 2 * GIB
 STATE_COLUMNS = 10  # the widest planar state: a free orbit's δx δy θ r ν and rates
-# bytes per sweep point: 10 float64 + 4 int8 + 1 int64 record fields (sweep.point.VARIABLES),
-# the done mask and the int64 checksum (sweep.verify)
-SWEEP_POINT_BYTES = 10 * 8 + 4 + 8 + 1 + 8
+# bytes per sweep point: 11 float64 + 4 int8 + 1 int64 record fields (sweep.point.VARIABLES),
+# the done mask and the int64 checksum (sweep.verify); tests/engine/test_guards.py holds
+# it to VARIABLES (which sits above this layer)
+SWEEP_POINT_BYTES = 11 * 8 + 4 + 8 + 1 + 8
 
 
 # what simulate()'s own guard blames: its arguments; a command names its options instead
