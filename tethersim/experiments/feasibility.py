@@ -27,14 +27,11 @@ differs between the two is ``sensitive`` (tethersim.analysis.feasibility.combine
 The runs of a point and the points of a grid are capped as a sweep's grid is
 (:func:`tethersim.engine.guards.check_runs`, ``TETHERSIM_MAX_SWEEP_POINTS``).
 
-How the runs go: a point's circular runs at one tolerance (nominal and trims) are one
-plan of many (:func:`tethersim.experiments.sweep.batch.run_satellites`: one compiled
-call, on SIMD lanes for the explicit scheme in uniform air; each record is what
-simulate() then outcome() give, bit for bit, drag make-up included), turned back into
-outcomes by :func:`~tethersim.experiments.sweep.point.outcome_of_record`.  Each free
-orbit is a plan of one (simulate): its length is the cap in its own orbits, its end
-altitude and, when the balloon is lost, its final state (the release continuation,
-tethersim.engine.release) are what a record does not carry.
+A point's nominal and trim runs at one tolerance are one plan of many (sweep.batch
+``run_satellites``: one compiled call, SIMD lanes where the scheme has them; each record
+is simulate() then outcome() bit for bit; sweep.point ``outcome_of_record``).  Each free
+orbit is a plan of one (simulate): a record carries neither its end altitude nor, for
+the release continuation after a lost balloon, its final state.
 
 Why not the sweep store: a point is up to eighteen runs of four kinds, and its row mixes
 their results.  A resumable store of its own (one JSON line per finished point, a lock,
@@ -284,8 +281,7 @@ def _finished(res):
 
 def _decide(spec: FeasibilitySpec, h_km: float, a3: float, rtol: float) -> dict:
     """The verdict runs of a point at one tolerance: the free orbit, and the nominal and
-    trim runs as one plan of many (their records are simulate() then outcome() bit for
-    bit: tethersim.experiments.sweep.batch; on SIMD lanes where the scheme has them)."""
+    trim runs as one plan of many (records: simulate() then outcome(), bit for bit)."""
     ends = free_ends(spec, spec.free(h_km, a3), rtol)
     sat = spec.circular(h_km, a3)
     scales = solar_scales(h_km, spec.solar)
