@@ -47,6 +47,8 @@ def test_the_end_time_is_the_run_s_last_sample():
     ("method", "euler", "method = 'euler': allowed values adaptive, faithful"),
     ("periods", -1.0, "periods = -1.0: must be a finite number > 0"),
     ("rtol", 1.0, "rtol = 1: allowed range"),
+    ("atol", 1.0, "atol = 1.0: allowed range 1e-20 <= atol <= 0.001"),
+    ("atol", 0.0, "atol = 0.0: must be a finite number > 0"),
     ("samples_per_period", 0, "samples_per_period = 0: must be an integer in 1.."),
     ("model", "nosuch", "nosuch"),
 ])

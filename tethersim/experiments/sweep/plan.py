@@ -13,6 +13,7 @@ import math
 from dataclasses import asdict, dataclass
 
 from tethersim.analysis.metrics import SETTLING_TOL, check_tol
+from tethersim.engine.arguments import check_range
 from tethersim.engine.guards import MAX_STEPS_PER_PERIOD
 from tethersim.engine.simulate import (
     ATOL_RANGE,
@@ -94,10 +95,8 @@ class Plan:
         if not RTOL_RANGE[0] <= self.rtol <= RTOL_RANGE[1]:
             raise ValueError(f"rtol = {self.rtol:g}: allowed range {RTOL_RANGE[0]:g} <= rtol "
                              f"<= {RTOL_RANGE[1]:g}")
-        if self.atol is not None and not (isinstance(self.atol, (int, float))
-                                          and ATOL_RANGE[0] <= self.atol <= ATOL_RANGE[1]):
-            raise ValueError(f"atol = {self.atol!r}: allowed range {ATOL_RANGE[0]:g} <= atol "
-                             f"<= {ATOL_RANGE[1]:g}")
+        if self.atol is not None:
+            check_range("atol", self.atol, ATOL_RANGE)  # simulate()'s own check
         for key, hi in (("steps_per_period", MAX_STEPS), ("samples_per_period", MAX_SAMPLES)):
             v = getattr(self, key)
             if isinstance(v, bool) or not isinstance(v, int) or not 1 <= v <= hi:
