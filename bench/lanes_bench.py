@@ -134,12 +134,11 @@ def bench_lanes_heyoka(rep, q, log) -> None:
     final-state error (first point, against tethersim DOP853 at rtol 1e-13), one thread.
 
     heyoka's loosest tolerance whose error is at most the faithful RK4 run's; its batch
-    size is its recommended SIMD width; CPU time of the process (heyoka) and of the
-    thread (tethersim).  tethersim's trajectories include the records (metrics, class,
+    size is its fastest on this CPU (peers.fastest_batch); CPU time of the process
+    (heyoka) and of the thread (tethersim).  tethersim's trajectories include the records (metrics, class,
     force peaks), heyoka's only the states on the same 200-per-orbit grid.
     """
-    import heyoka as hy
-    from peers import _error, _taut, heyoka_integrator
+    from peers import _error, _taut, fastest_batch, heyoka_batches, heyoka_integrator
 
     import tethersim as ts
     from tethersim.experiments.sweep import Plan, batch
@@ -169,19 +168,13 @@ def bench_lanes_heyoka(rep, q, log) -> None:
     if tol is None:
         rep.check("lanes vs heyoka: a heyoka tolerance reaches the faithful run's error", False)
         return
-    bs = hy.recommended_simd_size()
-    ta = heyoka_integrator(sat0, tol, batch=bs)[0]
     E = np.array([[s.E1 for s in sats], [s.E2 for s in sats]])
-    grid = np.repeat(grid1[:, None], bs, axis=1)
+    bs = fastest_batch(sat0, tol, y0, pars, E, grid1, log)
+    ta = heyoka_integrator(sat0, tol, batch=bs)[0]
 
     def heyoka_all():
         t0 = time.process_time()
-        for i in range(0, len(sats), bs):
-            ta.set_time(0.0)
-            ta.state[:] = np.repeat(np.asarray(y0, float)[:, None], bs, axis=1)
-            ta.pars[:2] = np.array(pars)[:, None]
-            ta.pars[2:] = E[:, i:i + bs]
-            ta.propagate_grid(grid)
+        heyoka_batches(ta, bs, range(0, len(sats), bs), y0, pars, E, grid1)
         return time.process_time() - t0
 
     def lanes():
