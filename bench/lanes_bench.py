@@ -135,8 +135,9 @@ def bench_lanes_heyoka(rep, q, log) -> None:
 
     heyoka's loosest tolerance whose error is at most the faithful RK4 run's; its batch
     size is its fastest on this CPU (peers.fastest_batch); CPU time of the process
-    (heyoka) and of the thread (tethersim).  tethersim's trajectories include the records (metrics, class,
-    force peaks), heyoka's only the states on the same 200-per-orbit grid.
+    (heyoka) and of the thread (tethersim).  tethersim's trajectories include the records
+    (metrics, class, force peaks), heyoka's only the states on the same 200-per-orbit
+    grid.
     """
     from peers import _error, _taut, fastest_batch, heyoka_batches, heyoka_integrator
 
@@ -169,8 +170,7 @@ def bench_lanes_heyoka(rep, q, log) -> None:
         rep.check("lanes vs heyoka: a heyoka tolerance reaches the faithful run's error", False)
         return
     E = np.array([[s.E1 for s in sats], [s.E2 for s in sats]])
-    bs = fastest_batch(sat0, tol, y0, pars, E, grid1, log)
-    ta = heyoka_integrator(sat0, tol, batch=bs)[0]
+    bs, ta = fastest_batch(sat0, tol, y0, pars, E, grid1, log)
 
     def heyoka_all():
         t0 = time.process_time()

@@ -26,8 +26,8 @@ tethersim's plan of many (compiled blocks on 1 thread and every core, full recor
 metrics, class, force peaks) against heyoka's batch integrator (``taylor_adaptive_batch``,
 per-lane events) writing each point's states on the same grid, at the tolerance whose
 error matches tethersim's, in its fastest batch size on this CPU (:func:`fastest_batch`:
-``heyoka.recommended_simd_size()`` or twice it, timed; on an AVX-512 Xeon the
-recommended 4 took 83 ms and 8 took 61 ms for the 64 points, 2026-12-05);
+``heyoka.recommended_simd_size()`` or twice it, timed; on an AVX-512 Xeon twice the
+recommendation ran faster, docs/speed-log.md);
 once at the sweeps' default tolerance (numbers that are reported) and once at
 ``CLASS_RTOL`` (maps and searches that need a class or a verdict, docs/tolerances.md).
 """
@@ -157,29 +157,27 @@ def heyoka_batches(ta, bs, starts, y0, pars, E, grid1) -> None:
         ta.propagate_grid(grid)
 
 
-def fastest_batch(sat, tol, y0, pars, E, grid1, log, repeats: int = 3) -> int:
-    """heyoka's fastest batch size for these points on this CPU: its recommended SIMD
-    size or twice it (the recommendation follows the vector width LLVM prefers, 256 bits
-    on Intel's AVX-512 servers, where 8 lanes ran faster), each timed over all the points
-    (process CPU time, best of interleaved repeats)."""
+def fastest_batch(sat, tol, y0, pars, E, grid1, log, repeats: int = 3) -> tuple:
+    """(heyoka's fastest batch size for these points on this CPU, its integrator): its
+    recommended SIMD size or twice it (the recommendation follows the vector width LLVM
+    prefers, 256 bits on Intel's AVX-512 servers, where 8 lanes ran faster), each timed
+    over all the points (process CPU time, best of interleaved repeats)."""
     import heyoka as hy
     rec = hy.recommended_simd_size()
     n = E.shape[1]
+    tas = {bs: heyoka_integrator(sat, tol, batch=bs)[0] for bs in (rec, 2 * rec)}
 
     def timer(bs):
-        ta = heyoka_integrator(sat, tol, batch=bs)[0]
-
         def t():
             t0 = time.process_time()
-            heyoka_batches(ta, bs, range(0, n - n % bs, bs), y0, pars, E, grid1)
+            heyoka_batches(tas[bs], bs, range(0, n - n % bs, bs), y0, pars, E, grid1)
             return time.process_time() - t0
         return t
-    times = {bs: min(v) for bs, v in interleave({b: timer(b) for b in (rec, 2 * rec)},
-                                                    repeats).items()}
+    times = {bs: min(v) for bs, v in interleave({b: timer(b) for b in tas}, repeats).items()}
     best = min(times, key=times.get)
-    log("  heyoka batch sizes (recommended " + str(rec) + "): " + ", ".join(
-        f"{b}: {t * 1e3:.1f} ms" for b, t in times.items()) + f"; using {best}")
-    return best
+    shown = ", ".join(f"{b}: {t * 1e3:.1f} ms" for b, t in times.items())
+    log(f"  heyoka batch sizes (recommended {rec}): {shown}; using {best}")
+    return best, tas[best]
 
 
 def _taut(sat, y0, model="derived"):
@@ -331,8 +329,7 @@ def _sweep(rep, q, log, rtol, hy_tols, tag) -> None:
     tol = next((t for t in hy_tols if _error(_hy_run(
         sat0, heyoka_integrator(sat0, t)[0], y0, pars, grid1)[1], ref) <= ts_err), hy_tols[-1])
     E = np.array([[s.E1 for s in sats], [s.E2 for s in sats]])
-    bs = fastest_batch(sat0, tol, y0, pars, E, grid1, log)
-    ta = heyoka_integrator(sat0, tol, batch=bs)[0]
+    bs, ta = fastest_batch(sat0, tol, y0, pars, E, grid1, log)
 
     # one thread: process CPU time (the plan runs in a worker thread); every core: wall time
     def heyoka_all():
